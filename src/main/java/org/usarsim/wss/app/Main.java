@@ -1,0 +1,90 @@
+package org.usarsim.wss.app;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.CountDownLatch;
+import org.usarsim.wss.hub.Hub;
+import org.usarsim.wss.model.ModelCatalog;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.PropagationModel;
+import sun.misc.Signal;
+
+/**
+ * Starts the WSS. {@code --headless [--config FILE]} runs without a window, from built-in
+ * defaults and the file. Exit codes: 0 after SIGTERM or Ctrl-C, 1 when the server cannot start
+ * (control port in use, model will not start), 2 for a bad command line or configuration.
+ */
+public final class Main {
+
+    static final String USAGE = "usage: java -jar wss.jar [--headless] [--config FILE]";
+
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        Path config = null;
+        for (int i = 0; i < args.length; i++) {
+            switch (args[i]) {
+                case "--headless":
+                    break;
+                case "--config":
+                    if (i + 1 == args.length) {
+                        fail(2, "--config needs a file\n" + USAGE);
+                    }
+                    config = Path.of(args[++i]);
+                    break;
+                case "--help":
+                case "-h":
+                    System.out.println(USAGE);
+                    return;
+                default:
+                    fail(2, "unknown argument " + args[i] + "\n" + USAGE);
+            }
+        }
+        runHeadless(config);
+    }
+
+    private static void runHeadless(Path config) {
+        Settings settings;
+        try {
+            settings = config == null ? Settings.defaults() : Settings.load(config);
+        } catch (SettingsException e) {
+            fail(2, e.getMessage());
+            return;
+        }
+        LogSetup.toStandardOutput(settings.logLevel());
+        ModelCatalog catalog = ModelCatalog.load(Main.class.getClassLoader());
+        PropagationModel model = catalog.find(settings.modelName());
+        if (model == null) {
+            fail(2, "wss.model = '" + settings.modelName() + "' is not a known model; known: " + String.join(", ", catalog.names()));
+        }
+        model.configure(settings.modelSettings());
+        Hub hub = new Hub(settings.hubConfig(), model);
+        try {
+            hub.start();
+        } catch (IOException e) {
+            fail(1, "cannot listen for robots on " + settings.get("wss.bindAddress") + ":" + settings.get("wss.port")
+                    + ": " + e.getMessage());
+        } catch (ModelStartException e) {
+            fail(1, model.name() + " did not start: " + e.getMessage());
+        }
+        CountDownLatch stopped = new CountDownLatch(1);
+        Signal.handle(new Signal("TERM"), signal -> stop(hub));
+        Signal.handle(new Signal("INT"), signal -> stop(hub));
+        try {
+            stopped.await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private static void stop(Hub hub) {
+        hub.close();
+        System.exit(0);
+    }
+
+    private static void fail(int status, String message) {
+        System.err.println("wss: " + message);
+        System.exit(status);
+    }
+}

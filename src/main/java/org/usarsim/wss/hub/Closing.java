@@ -1,0 +1,22 @@
+package org.usarsim.wss.hub;
+
+import java.io.Closeable;
+import java.io.IOException;
+
+/** Closing what may already be closed, where a failure to close changes nothing. */
+final class Closing {
+
+    private Closing() {
+    }
+
+    static void quietly(Closeable closeable) {
+        if (closeable == null) {
+            return;
+        }
+        try {
+            closeable.close();
+        } catch (IOException ignored) {
+            // Already closed or reset: nothing left to release.
+        }
+    }
+}

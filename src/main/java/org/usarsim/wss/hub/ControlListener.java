@@ -1,0 +1,75 @@
+package org.usarsim.wss.hub;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+
+/** Accepts control connections and runs a {@link ControlSession} thread for each. */
+final class ControlListener implements Runnable {
+
+    private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
+
+    private final Hub hub;
+    private final ServerSocketChannel server;
+    private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
+    private final Thread thread;
+
+    /** Binds at once, so that a port in use is known before anything else starts. */
+    ControlListener(Hub hub, InetSocketAddress address) throws IOException {
+        this.hub = hub;
+        this.server = ServerSocketChannel.open();
+        try {
+            server.setOption(StandardSocketOptions.SO_REUSEADDR, true);
+            server.bind(address, 128);
+        } catch (IOException e) {
+            server.close();
+            throw e;
+        }
+        this.thread = new Thread(this, "wss-control-listener");
+        thread.setDaemon(true);
+    }
+
+    int port() {
+        return server.socket().getLocalPort();
+    }
+
+    void start() {
+        thread.start();
+    }
+
+    void close() {
+        Closing.quietly(server);
+        sessions.forEach(ControlSession::close);
+    }
+
+    void ended(ControlSession session) {
+        sessions.remove(session);
+    }
+
+    @Override
+    public void run() {
+        while (server.isOpen()) {
+            SocketChannel channel;
+            try {
+                channel = server.accept();
+            } catch (IOException e) {
+                if (server.isOpen()) {
+                    LOG.log(Level.SEVERE, "accepting control connections failed: " + e, e);
+                }
+                return;
+            }
+            ControlSession session = new ControlSession(hub, this, channel);
+            sessions.add(session);
+            if (!server.isOpen()) {
+                session.close();
+            }
+            session.start();
+        }
+    }
+}

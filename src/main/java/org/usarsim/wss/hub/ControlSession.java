@@ -1,0 +1,168 @@
+package org.usarsim.wss.hub;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.SocketChannel;
+import java.util.List;
+import java.util.OptionalDouble;
+import java.util.logging.Logger;
+import org.usarsim.wss.protocol.Arguments;
+import org.usarsim.wss.protocol.Command;
+import org.usarsim.wss.protocol.CommandParser;
+import org.usarsim.wss.protocol.LineSplitter;
+import org.usarsim.wss.protocol.ProtocolException;
+import org.usarsim.wss.protocol.Replies;
+
+/**
+ * One robot's control connection, on its own thread: reads lines, answers each with exactly one
+ * reply written in one write, in order. Never sends anything unasked and never closes the
+ * connection over a bad command. When the connection closes, the robot is deregistered.
+ */
+final class ControlSession implements Runnable, LineSplitter.Sink {
+
+    private static final Logger LOG = Logger.getLogger(ControlSession.class.getName());
+
+    private final Hub hub;
+    private final ControlListener listener;
+    private final SocketChannel channel;
+    private final InetAddress address;
+    private final String peer;
+    private final LineSplitter splitter = new LineSplitter();
+    /** The name this connection registered, once INIT succeeded. Only the session's thread touches it. */
+    private String robot;
+
+    ControlSession(Hub hub, ControlListener listener, SocketChannel channel) {
+        this.hub = hub;
+        this.listener = listener;
+        this.channel = channel;
+        this.address = channel.socket().getInetAddress();
+        this.peer = address.getHostAddress() + ":" + channel.socket().getPort();
+    }
+
+    void start() {
+        Thread thread = new Thread(this, "control " + peer);
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    void close() {
+        Closing.quietly(channel);
+    }
+
+    @Override
+    public void run() {
+        LOG.fine(() -> "control connection from " + peer);
+        try {
+            channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
+            ByteBuffer buffer = ByteBuffer.allocate(16 * 1024);
+            int read;
+            while ((read = channel.read(buffer)) >= 0) {
+                splitter.feed(buffer.array(), 0, read, this);
+                buffer.clear();
+            }
+        } catch (IOException e) {
+            LOG.fine(() -> "control connection from " + peer + " ended: " + e);
+        } finally {
+            close();
+            listener.ended(this);
+            if (robot != null) {
+                hub.deregister(robot, this);
+            }
+            LOG.fine(() -> "control connection from " + peer + " closed");
+        }
+    }
+
+    @Override
+    public void line(String line) {
+        String reply;
+        try {
+            Command command = CommandParser.parse(line);
+            if (command == null) {
+                return;
+            }
+            reply = answer(command);
+        } catch (ProtocolException e) {
+            reply = e.reply();
+        }
+        String answered = reply;
+        LOG.fine(() -> peer + " " + line + " => " + answered);
+        send(reply);
+    }
+
+    @Override
+    public void lineTooLong() {
+        LOG.warning(peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error");
+        send(Replies.error(Replies.LINE_TOO_LONG));
+    }
+
+    private String answer(Command command) throws ProtocolException {
+        if (robot == null) {
+            return command.type().equals("INIT") ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
+        }
+        switch (command.type()) {
+            case "GETSS":
+                return signalStrength(command);
+            case "DNS":
+                return dns(command);
+            case "REVERSEDNS":
+                return reverseDns(command);
+            default:
+                return Replies.error(Replies.UNKNOWN_OR_SECOND_INIT);
+        }
+    }
+
+    private String init(Command command) throws ProtocolException {
+        String name = Arguments.robot(command);
+        List<Integer> ports = Arguments.portList(command);
+        if (!hub.register(name, address, ports, this)) {
+            return Replies.error(Replies.ALREADY_EXISTS);
+        }
+        robot = name;
+        return Replies.initOk();
+    }
+
+    private String signalStrength(Command command) throws ProtocolException {
+        String other = Arguments.robot(command);
+        if (other.equals(robot)) {
+            return Replies.signalToSelf(other);
+        }
+        OptionalDouble strength = hub.signalStrength(robot, other);
+        return strength.isPresent() ? Replies.signal(other, strength.getAsDouble()) : Replies.signalUnknownRobot(other);
+    }
+
+    private String dns(Command command) throws ProtocolException {
+        String other = Arguments.robot(command);
+        int targetPort = Arguments.targetPort(command);
+        Hub.DnsResult result = hub.dns(robot, other, targetPort);
+        switch (result.outcome()) {
+            case OK:
+                return Replies.dns(other, result.port());
+            case NO_SUCH_ROBOT:
+                return Replies.dnsNoSuchRobot(other);
+            case NOT_LISTENING:
+                return Replies.dnsNotListening(other);
+            default:
+                return Replies.error(Replies.COULD_NOT_ALLOCATE_PORT);
+        }
+    }
+
+    private String reverseDns(Command command) throws ProtocolException {
+        String asked = Arguments.askedPort(command);
+        String source = hub.reverseDns(robot, Integer.parseInt(asked));
+        return source == null ? Replies.reverseDnsUnknown(asked) : Replies.reverseDns(asked, source);
+    }
+
+    private void send(String reply) {
+        ByteBuffer bytes = ByteBuffer.wrap(Replies.wire(reply));
+        try {
+            while (bytes.hasRemaining()) {
+                channel.write(bytes);
+            }
+        } catch (IOException e) {
+            LOG.fine(() -> peer + ": could not send a reply: " + e);
+            close();
+        }
+    }
+}

@@ -1,0 +1,80 @@
+package org.usarsim.wss.hub;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import java.util.function.Consumer;
+import org.usarsim.wss.model.WssEventListener;
+
+/** Hands every event to every listener; a listener that throws is logged, never fatal. */
+final class EventFanOut implements WssEventListener {
+
+    private static final Logger LOG = Logger.getLogger(EventFanOut.class.getName());
+
+    private final List<WssEventListener> listeners = new CopyOnWriteArrayList<>();
+
+    void add(WssEventListener listener) {
+        listeners.add(listener);
+    }
+
+    void remove(WssEventListener listener) {
+        listeners.remove(listener);
+    }
+
+    private void each(Consumer<WssEventListener> call) {
+        for (WssEventListener listener : listeners) {
+            try {
+                call.accept(listener);
+            } catch (RuntimeException e) {
+                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+            }
+        }
+    }
+
+    @Override
+    public void robotRegistered(String robot, String address, List<Integer> ports) {
+        each(l -> l.robotRegistered(robot, address, ports));
+    }
+
+    @Override
+    public void robotDeregistered(String robot) {
+        each(l -> l.robotDeregistered(robot));
+    }
+
+    @Override
+    public void robotOutOfBattery(String robot) {
+        each(l -> l.robotOutOfBattery(robot));
+    }
+
+    @Override
+    public void connectionOutOfRange(String from, String to, double strength, double distance) {
+        each(l -> l.connectionOutOfRange(from, to, strength, distance));
+    }
+
+    @Override
+    public void connectionInRange(String from, String to) {
+        each(l -> l.connectionInRange(from, to));
+    }
+
+    @Override
+    public void connectionEstablished(String from, String to, int targetPort) {
+        each(l -> l.connectionEstablished(from, to, targetPort));
+    }
+
+    @Override
+    public void connectionTerminated(String from, String to, int targetPort) {
+        each(l -> l.connectionTerminated(from, to, targetPort));
+    }
+
+    @Override
+    public void dataSent(String from, String to, int bytes) {
+        for (WssEventListener listener : listeners) {
+            try {
+                listener.dataSent(from, to, bytes);
+            } catch (RuntimeException e) {
+                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+            }
+        }
+    }
+}

@@ -1,0 +1,53 @@
+package org.usarsim.wss.hub;
+
+import java.util.List;
+import java.util.logging.Logger;
+import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.protocol.Strengths;
+
+/** Writes each event to the log as one line (data sent only at FINEST: it happens per chunk). */
+final class EventLogger implements WssEventListener {
+
+    private static final Logger LOG = Logger.getLogger("org.usarsim.wss.events");
+
+    @Override
+    public void robotRegistered(String robot, String address, List<Integer> ports) {
+        LOG.info(() -> "registered " + robot + " from " + address + " accepting on " + ports);
+    }
+
+    @Override
+    public void robotDeregistered(String robot) {
+        LOG.info(() -> "deregistered " + robot);
+    }
+
+    @Override
+    public void robotOutOfBattery(String robot) {
+        LOG.info(() -> "out of battery: " + robot);
+    }
+
+    @Override
+    public void connectionOutOfRange(String from, String to, double strength, double distance) {
+        LOG.info(() -> "out of range: " + from + " - " + to + " at " + Strengths.format(strength)
+                + " dBm, " + Strengths.format(distance) + " m");
+    }
+
+    @Override
+    public void connectionInRange(String from, String to) {
+        LOG.info(() -> "in range: " + from + " - " + to);
+    }
+
+    @Override
+    public void connectionEstablished(String from, String to, int targetPort) {
+        LOG.info(() -> "connection established " + from + " -> " + to + ":" + targetPort);
+    }
+
+    @Override
+    public void connectionTerminated(String from, String to, int targetPort) {
+        LOG.info(() -> "connection terminated " + from + " -> " + to + ":" + targetPort);
+    }
+
+    @Override
+    public void dataSent(String from, String to, int bytes) {
+        LOG.finest(() -> bytes + " bytes " + from + " -> " + to);
+    }
+}

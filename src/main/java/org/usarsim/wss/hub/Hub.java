@@ -1,0 +1,379 @@
+package org.usarsim.wss.hub;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.nio.channels.SocketChannel;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.OptionalDouble;
+import java.util.Set;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * The server: the registry of robots, their WSS ports and the links through them. Control
+ * sessions and the port acceptor call in; the propagation model calls in as a {@link RobotLinkModel}.
+ *
+ * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
+ * while it is held (a model may call back in from its own thread), and no I/O but binding and
+ * closing sockets happens under it.
+ */
+public final class Hub implements RobotLinkModel, AutoCloseable {
+
+    private static final Logger LOG = Logger.getLogger(Hub.class.getName());
+
+    /** The outcome of a DNS. */
+    enum DnsOutcome { OK, NO_SUCH_ROBOT, NOT_LISTENING, NO_PORT }
+
+    record DnsResult(DnsOutcome outcome, int port) {
+    }
+
+    private final HubConfig config;
+    private final PropagationModel model;
+    private final EventFanOut events = new EventFanOut();
+    private final Object lock = new Object();
+    private final Map<String, Robot> robots = new HashMap<>();
+    private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
+    /** Pairs the model broke and has not resumed. */
+    private final Set<Pair> broken = new HashSet<>();
+    private ControlListener controlListener;
+    private PortAcceptor portAcceptor;
+
+    public Hub(HubConfig config, PropagationModel model) {
+        this.config = config;
+        this.model = model;
+        events.add(new EventLogger());
+    }
+
+    public void addListener(WssEventListener listener) {
+        events.add(listener);
+    }
+
+    public void removeListener(WssEventListener listener) {
+        events.remove(listener);
+    }
+
+    /**
+     * Binds the control port, starts the model, then accepts robots.
+     *
+     * @throws IOException         when the control port cannot be bound (in use, bad address)
+     * @throws ModelStartException when the model will not start; nothing is left listening
+     */
+    public void start() throws IOException, ModelStartException {
+        controlListener = new ControlListener(this, new InetSocketAddress(config.bindAddress(), config.controlPort()));
+        try {
+            portAcceptor = new PortAcceptor(this);
+            model.setRobotLinkModel(this);
+            model.setEventListener(events);
+            model.start();
+        } catch (IOException | ModelStartException | RuntimeException e) {
+            controlListener.close();
+            if (portAcceptor != null) {
+                portAcceptor.close();
+            }
+            throw e;
+        }
+        portAcceptor.start();
+        controlListener.start();
+        LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
+                + " with " + model.name());
+    }
+
+    /** The control port robots connect to (the one the OS chose when configured as 0). */
+    public int controlPort() {
+        return controlListener.port();
+    }
+
+    public String modelName() {
+        return model.name();
+    }
+
+    /** Stops the model and closes every socket: control connections, WSS ports, links. */
+    @Override
+    public void close() {
+        if (controlListener != null) {
+            controlListener.close();
+        }
+        try {
+            model.shutdown();
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, "the model failed to shut down: " + e, e);
+        }
+        List<Link> links = new ArrayList<>();
+        synchronized (lock) {
+            for (WssPort port : ports.values()) {
+                port.stopListening();
+                links.addAll(port.links);
+            }
+            ports.clear();
+            robots.clear();
+        }
+        links.forEach(Link::close);
+        if (portAcceptor != null) {
+            portAcceptor.close();
+        }
+        LOG.info("WSS stopped");
+    }
+
+    // ---- called by control sessions ----
+
+    /** @return false when the name is taken (nothing changes then) */
+    boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
+        Robot robot = new Robot(name, address, acceptPorts, session);
+        synchronized (lock) {
+            if (robots.containsKey(name)) {
+                return false;
+            }
+            robots.put(name, robot);
+            for (WssPort port : ports.values()) {
+                if (port.key.involves(name) && shouldListen(port.key, true)) {
+                    listen(port);
+                }
+            }
+        }
+        events.robotRegistered(name, address.getHostAddress(), robot.ports());
+        return true;
+    }
+
+    /** The robot's control connection closed: it is gone, its ports stop listening, its links live on. */
+    void deregister(String name, ControlSession session) {
+        synchronized (lock) {
+            Robot robot = robots.get(name);
+            if (robot == null || robot.session() != session) {
+                return;
+            }
+            robots.remove(name);
+            for (WssPort port : ports.values()) {
+                if (port.key.involves(name)) {
+                    port.stopListening();
+                }
+            }
+        }
+        events.robotDeregistered(name);
+    }
+
+    /** The model's strength from one robot to another; empty when {@code to} is not registered. */
+    OptionalDouble signalStrength(String from, String to) {
+        synchronized (lock) {
+            if (!robots.containsKey(to)) {
+                return OptionalDouble.empty();
+            }
+        }
+        try {
+            return OptionalDouble.of(model.getSignalStrengthForPair(from, to));
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, model.name() + " failed to give the strength " + from + " -> " + to + ": " + e, e);
+            return OptionalDouble.of(Double.NaN);
+        }
+    }
+
+    /** The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the first). */
+    DnsResult dns(String from, String to, int targetPort) {
+        if (from.equals(to)) {
+            return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
+        }
+        boolean allowed = modelAllows(from, to);
+        synchronized (lock) {
+            Robot target = robots.get(to);
+            if (target == null) {
+                return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
+            }
+            int resolved = target.resolvePort(targetPort);
+            if (resolved < 0) {
+                return new DnsResult(DnsOutcome.NOT_LISTENING, -1);
+            }
+            PortKey key = new PortKey(from, to, resolved);
+            WssPort port = ports.get(key);
+            if (port == null) {
+                try {
+                    port = WssPort.allocate(key, config.bindAddress());
+                } catch (IOException e) {
+                    LOG.warning("could not allocate a WSS port for " + key + ": " + e.getMessage());
+                    return new DnsResult(DnsOutcome.NO_PORT, -1);
+                }
+                ports.put(key, port);
+                LOG.info("allocated " + port);
+                if (shouldListen(key, allowed)) {
+                    portAcceptor.add(port);
+                } else {
+                    port.stopListening();
+                }
+            } else if (!port.listening() && shouldListen(key, allowed)) {
+                listen(port);
+            }
+            return new DnsResult(DnsOutcome.OK, port.number);
+        }
+    }
+
+    /** The source robot of the link whose outgoing port {@code port} leads to {@code asker}, or null. */
+    String reverseDns(String asker, int port) {
+        synchronized (lock) {
+            for (WssPort wssPort : ports.values()) {
+                if (!wssPort.key.to().equals(asker)) {
+                    continue;
+                }
+                for (Link link : wssPort.links) {
+                    if (link.outgoingPort() == port) {
+                        return wssPort.key.from();
+                    }
+                }
+            }
+            return null;
+        }
+    }
+
+    // ---- called by the port acceptor and links ----
+
+    /** A connection arrived on a WSS port: forward it, or close it at once and say why. */
+    void accepted(WssPort port, SocketChannel socket) {
+        PortKey key = port.key;
+        InetAddress peer = socket.socket().getInetAddress();
+        boolean allowed = modelAllows(key.from(), key.to());
+        Link link;
+        synchronized (lock) {
+            Robot source = robots.get(key.from());
+            Robot target = robots.get(key.to());
+            String refusal = null;
+            if (!port.listening() || source == null || target == null) {
+                refusal = "the port no longer listens";
+            } else if (config.matchSourceAddress() && !peer.equals(source.address())) {
+                refusal = "the connection came from " + peer.getHostAddress() + " but " + key.from()
+                        + " registered from " + source.address().getHostAddress();
+            } else if (!allowed || broken.contains(Pair.of(key.from(), key.to()))) {
+                refusal = model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
+            }
+            if (refusal != null) {
+                LOG.warning(port + ": refused a connection: " + refusal);
+                Closing.quietly(socket);
+                return;
+            }
+            try {
+                link = new Link(this, port, socket, new InetSocketAddress(target.address(), key.targetPort()),
+                        config.chunkSize(), events);
+            } catch (IOException e) {
+                LOG.warning(port + ": could not open a socket to the target: " + e.getMessage());
+                Closing.quietly(socket);
+                return;
+            }
+            port.links.add(link);
+        }
+        link.start();
+    }
+
+    void linkEstablished(Link link) {
+        events.connectionEstablished(link.key.from(), link.key.to(), link.key.targetPort());
+    }
+
+    void linkClosed(Link link, boolean wasEstablished) {
+        synchronized (lock) {
+            link.port.links.remove(link);
+        }
+        if (wasEstablished) {
+            events.connectionTerminated(link.key.from(), link.key.to(), link.key.targetPort());
+        }
+    }
+
+    // ---- RobotLinkModel: called by the model ----
+
+    @Override
+    public boolean breakConnectionsForPair(String robotA, String robotB) {
+        Pair pair = Pair.of(robotA, robotB);
+        List<Link> links = new ArrayList<>();
+        boolean changed;
+        synchronized (lock) {
+            changed = broken.add(pair);
+            for (WssPort port : ports.values()) {
+                if (port.key.isBetween(pair)) {
+                    changed |= port.stopListening();
+                    links.addAll(port.links);
+                }
+            }
+        }
+        links.forEach(Link::close);
+        return changed || !links.isEmpty();
+    }
+
+    @Override
+    public boolean resumeConnectionsForPair(String robotA, String robotB) {
+        Pair pair = Pair.of(robotA, robotB);
+        boolean changed;
+        synchronized (lock) {
+            changed = broken.remove(pair);
+            for (WssPort port : ports.values()) {
+                if (port.key.isBetween(pair) && !port.listening() && shouldListen(port.key, true)) {
+                    changed |= listen(port);
+                }
+            }
+        }
+        return changed;
+    }
+
+    @Override
+    public void kickOutRobot(String name) {
+        Robot robot;
+        List<Link> links = new ArrayList<>();
+        synchronized (lock) {
+            robot = robots.remove(name);
+            for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
+                WssPort port = it.next();
+                if (port.key.involves(name)) {
+                    port.stopListening();
+                    links.addAll(port.links);
+                    it.remove();
+                }
+            }
+        }
+        links.forEach(Link::close);
+        if (robot != null) {
+            robot.session().close();
+            LOG.info("kicked out " + name);
+            events.robotDeregistered(name);
+        }
+    }
+
+    @Override
+    public List<String> getListOfRegisteredRobots() {
+        synchronized (lock) {
+            return robots.keySet().stream().sorted().toList();
+        }
+    }
+
+    // ---- rules ----
+
+    /** A WSS port listens while both robots are registered and the model neither broke nor forbids the pair. Under the lock. */
+    private boolean shouldListen(PortKey key, boolean modelAllows) {
+        return modelAllows && robots.containsKey(key.from()) && robots.containsKey(key.to())
+                && !broken.contains(Pair.of(key.from(), key.to()));
+    }
+
+    /** Under the lock. @return true when it listens now */
+    private boolean listen(WssPort port) {
+        try {
+            port.listen(config.bindAddress());
+        } catch (IOException e) {
+            LOG.warning(port + ": could not listen again: " + e.getMessage());
+            return false;
+        }
+        portAcceptor.add(port);
+        return true;
+    }
+
+    private boolean modelAllows(String from, String to) {
+        try {
+            return model.connectionIsPossibleForPair(from, to);
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, model.name() + " failed to say whether " + from + " -> " + to + " may connect: " + e, e);
+            return false;
+        }
+    }
+}

@@ -1,0 +1,15 @@
+package org.usarsim.wss.hub;
+
+import java.net.InetAddress;
+
+/**
+ * How the hub runs.
+ *
+ * @param bindAddress        the address the control port and every WSS port listen on
+ *                           (the wildcard address: every interface)
+ * @param controlPort        the control port; 0 lets the OS choose
+ * @param chunkSize          the most bytes a link reads and writes at a time, each way
+ * @param matchSourceAddress accept a connection on a WSS port only from the source robot's control address
+ */
+public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, boolean matchSourceAddress) {
+}

@@ -1,0 +1,222 @@
+package org.usarsim.wss.hub;
+
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
+import java.nio.ByteBuffer;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.nio.channels.SocketChannel;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.logging.Logger;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * One forwarded connection: the socket a source robot opened on a WSS port, and the socket the
+ * WSS opens to the target robot. Its own thread connects to the target, then waits on a
+ * Selector over both channels and copies chunks each way, unchanged and in order. End of stream
+ * on either side stops reading and closes both once what was read is delivered.
+ */
+final class Link implements Runnable {
+
+    private static final Logger LOG = Logger.getLogger(Link.class.getName());
+    private static final int CONNECT_TIMEOUT_MS = 5000;
+    /** How many chunks one direction moves before the other gets a turn. */
+    private static final int CHUNKS_PER_TURN = 16;
+
+    final PortKey key;
+    final WssPort port;
+    private final SocketChannel source;
+    private final SocketChannel target;
+    private final InetSocketAddress targetAddress;
+    private final int outgoingPort;
+    private final int chunkSize;
+    private final WssEventListener events;
+    private final Hub hub;
+    private final Selector selector;
+    private final AtomicBoolean closed = new AtomicBoolean();
+
+    /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
+    Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
+            WssEventListener events) throws IOException {
+        this.hub = hub;
+        this.port = port;
+        this.key = port.key;
+        this.source = source;
+        this.targetAddress = targetAddress;
+        this.chunkSize = chunkSize;
+        this.events = events;
+        SocketChannel outgoing = SocketChannel.open();
+        Selector opened = null;
+        try {
+            outgoing.bind(new InetSocketAddress(0));
+            opened = Selector.open();
+        } catch (IOException e) {
+            Closing.quietly(outgoing);
+            throw e;
+        }
+        this.target = outgoing;
+        this.selector = opened;
+        this.outgoingPort = ((InetSocketAddress) outgoing.getLocalAddress()).getPort();
+    }
+
+    /** The local port of the WSS's socket to the target: what the target sees as its peer's port. */
+    int outgoingPort() {
+        return outgoingPort;
+    }
+
+    void start() {
+        Thread thread = new Thread(this, "link " + key);
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** Closes both ends now; the link's thread ends and tells the hub. Safe from any thread, more than once. */
+    void close() {
+        if (closed.compareAndSet(false, true)) {
+            Closing.quietly(source);
+            Closing.quietly(target);
+            selector.wakeup();
+        }
+    }
+
+    @Override
+    public void run() {
+        boolean established = false;
+        try {
+            if (!connect()) {
+                return;
+            }
+            established = true;
+            hub.linkEstablished(this);
+            forward();
+        } catch (IOException e) {
+            if (!closed.get()) {
+                LOG.fine(() -> this + " ended: " + e);
+            }
+        } finally {
+            close();
+            Closing.quietly(selector);
+            hub.linkClosed(this, established);
+        }
+    }
+
+    private boolean connect() {
+        try {
+            target.socket().connect(targetAddress, CONNECT_TIMEOUT_MS);
+        } catch (IOException e) {
+            if (!closed.get()) {
+                LOG.warning(this + ": the target at " + targetAddress.getAddress().getHostAddress() + ":"
+                        + targetAddress.getPort() + " did not accept (" + e.getMessage()
+                        + "); closing the source's connection");
+            }
+            return false;
+        }
+        return !closed.get();
+    }
+
+    private void forward() throws IOException {
+        for (SocketChannel channel : new SocketChannel[] {source, target}) {
+            channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
+            channel.configureBlocking(false);
+        }
+        Direction up = new Direction(source, target, key.from(), key.to());
+        Direction down = new Direction(target, source, key.to(), key.from());
+        SelectionKey sourceKey = source.register(selector, SelectionKey.OP_READ);
+        SelectionKey targetKey = target.register(selector, SelectionKey.OP_READ);
+        while (!closed.get()) {
+            selector.select();
+            boolean sourceReady = sourceKey.isValid() && selector.selectedKeys().contains(sourceKey);
+            boolean targetReady = targetKey.isValid() && selector.selectedKeys().contains(targetKey);
+            int sourceOps = sourceReady ? sourceKey.readyOps() : 0;
+            int targetOps = targetReady ? targetKey.readyOps() : 0;
+            selector.selectedKeys().clear();
+            if (closed.get()) {
+                return;
+            }
+            if ((targetOps & SelectionKey.OP_WRITE) != 0) {
+                up.flush();
+            }
+            if ((sourceOps & SelectionKey.OP_WRITE) != 0) {
+                down.flush();
+            }
+            boolean ended = up.ended || down.ended;
+            if (!ended && (sourceOps & SelectionKey.OP_READ) != 0) {
+                up.move();
+            }
+            if (!ended && (targetOps & SelectionKey.OP_READ) != 0) {
+                down.move();
+            }
+            ended = up.ended || down.ended;
+            if (ended && !up.pending() && !down.pending()) {
+                return;
+            }
+            sourceKey.interestOps(interest(ended, up, down));
+            targetKey.interestOps(interest(ended, down, up));
+        }
+    }
+
+    /** A channel is read while nothing it sent waits to be written, and written while something waits for it. */
+    private static int interest(boolean ended, Direction from, Direction to) {
+        int ops = !ended && !from.pending() ? SelectionKey.OP_READ : 0;
+        return to.pending() ? ops | SelectionKey.OP_WRITE : ops;
+    }
+
+    /** One way of the link: reads from one channel, writes everything read to the other. */
+    private final class Direction {
+        private final SocketChannel in;
+        private final SocketChannel out;
+        private final String fromRobot;
+        private final String toRobot;
+        private final ByteBuffer buffer = ByteBuffer.allocateDirect(chunkSize);
+        /** The buffer holds read bytes not yet written. */
+        private boolean pending;
+        boolean ended;
+
+        Direction(SocketChannel in, SocketChannel out, String fromRobot, String toRobot) {
+            this.in = in;
+            this.out = out;
+            this.fromRobot = fromRobot;
+            this.toRobot = toRobot;
+        }
+
+        boolean pending() {
+            return pending;
+        }
+
+        /** Reads and writes chunks until the input is drained, the output is full, or the turn is over. */
+        void move() throws IOException {
+            for (int i = 0; i < CHUNKS_PER_TURN && !pending(); i++) {
+                int read = in.read(buffer);
+                if (read < 0) {
+                    ended = true;
+                    return;
+                }
+                if (read == 0) {
+                    return;
+                }
+                buffer.flip();
+                pending = true;
+                events.dataSent(fromRobot, toRobot, read);
+                flush();
+            }
+        }
+
+        /** Writes what waits; the buffer is cleared once all of it is out. */
+        void flush() throws IOException {
+            if (!pending) {
+                return;
+            }
+            out.write(buffer);
+            if (!buffer.hasRemaining()) {
+                buffer.clear();
+                pending = false;
+            }
+        }
+    }
+
+    @Override
+    public String toString() {
+        return "link " + key + " (outgoing port " + outgoingPort + ")";
+    }
+}

@@ -1,0 +1,61 @@
+package org.usarsim.wss.model;
+
+/**
+ * A propagation model decides, for every pair of robots, the signal strength between them and
+ * whether they may talk. Implementations are found with {@link java.util.ServiceLoader}: list the
+ * class in {@code META-INF/services/org.usarsim.wss.model.PropagationModel}. See docs/models.md.
+ *
+ * <p>Lifecycle, driven by the server: {@link #configure}, {@link #setRobotLinkModel},
+ * {@link #setEventListener}, then {@link #start}; {@link #shutdown} when the server stops.
+ * The query methods are called from many threads at once and must be thread-safe and quick
+ * (they are asked on every GETSS, DNS and accepted connection). A model must not call the
+ * {@link RobotLinkModel} from inside a query method.
+ */
+public interface PropagationModel {
+
+    /** The name users pick the model by; the class's simple name unless overridden. */
+    default String name() {
+        return getClass().getSimpleName();
+    }
+
+    /** Takes the settings (headless: the properties file; GUI: the stored preferences). */
+    default void configure(ModelSettings settings) {
+    }
+
+    /** The hub, for breaking and resuming pairs and kicking robots. Called before {@link #start}. */
+    void setRobotLinkModel(RobotLinkModel linkModel);
+
+    /** Where the model reports what it decides (out of range, in range, out of battery). */
+    void setEventListener(WssEventListener listener);
+
+    /**
+     * Checks the configuration and starts the model (its own threads, its simulator connection).
+     *
+     * @throws ModelStartException when the configuration is bad or a resource is unreachable; the
+     *                             message is shown to the user as it is
+     */
+    void start() throws ModelStartException;
+
+    /** Stops the model's threads and connections. */
+    void shutdown();
+
+    boolean isActive();
+
+    /** Whether {@link #showConfigurationDialog} does anything. */
+    default boolean isConfigurable() {
+        return false;
+    }
+
+    /** Shows the model's settings; read-only when {@code editable} is false (the server runs). */
+    default void showConfigurationDialog(boolean editable) {
+    }
+
+    /**
+     * The signal strength from {@code from} to {@code to} in dBm. NaN when unknown;
+     * {@code +Infinity} when the robots are at the same place.
+     */
+    double getSignalStrengthForPair(String from, String to);
+
+    /** Whether {@code from} may open a connection to {@code to} now. */
+    boolean connectionIsPossibleForPair(String from, String to);
+}

@@ -1,0 +1,90 @@
+package org.usarsim.wss.protocol;
+
+import java.nio.charset.StandardCharsets;
+
+/**
+ * Every reply the server sends on a control connection, spelled exactly as the original
+ * (typos included: clients compare these strings). Nothing else in the server builds a reply.
+ */
+public final class Replies {
+
+    /** Every reply ends with CR LF. */
+    static final String LINE_END = "\r\n";
+
+    // Reasons of the original, kept letter for letter.
+    public static final String MUST_INIT_FIRST = "Must.Use.INIT.Method.First";
+    public static final String PORTS_MUST_BE_INTEGER = "Ports.List.Must.Be.Integer";
+    public static final String NAME_MUST_NOT_BE_EMPTY = "Robot.Name.Must.Not.Be.Empty";
+    public static final String ALREADY_EXISTS = "Robot.Alread.Exists";
+    public static final String UNKNOWN_OR_SECOND_INIT = "Method.Unknown.Or.Can.INIT.only.once";
+    public static final String PORT_MUST_BE_INTEGER = "Port.Must.Be.Integer";
+    public static final String COULD_NOT_ALLOCATE_PORT = "Could.Not.Allocate.Port";
+
+    // Reasons of ours, for input the original mishandled (see docs/protocol.md).
+    public static final String LINE_TOO_LONG = "Line.Too.Long";
+    public static final String MALFORMED_NO_COMMAND = "Malformed.Line.No.Command";
+    public static final String MALFORMED_TEXT_OUTSIDE_BRACES = "Malformed.Line.Text.Outside.Braces";
+    public static final String MALFORMED_UNCLOSED_BRACE = "Malformed.Line.Unclosed.Brace";
+    public static final String MALFORMED_NESTED_BRACE = "Malformed.Line.Nested.Brace";
+    public static final String MALFORMED_EMPTY_SEGMENT = "Malformed.Line.Empty.Segment";
+    public static final String PORT_OUT_OF_RANGE = "Port.Must.Be.Between.1.And.65535";
+    public static final String NAME_MUST_NOT_CONTAIN_WHITESPACE = "Robot.Name.Must.Not.Contain.Whitespace";
+
+    private Replies() {
+    }
+
+    /** The bytes to write for a reply: the line and CR LF, to be sent in one write. */
+    public static byte[] wire(String reply) {
+        return (reply + LINE_END).getBytes(StandardCharsets.UTF_8);
+    }
+
+    public static String error(String reason) {
+        return "ERROR {Reason " + reason + "}";
+    }
+
+    public static String initOk() {
+        return "INITREPLY {Status OK}";
+    }
+
+    public static String signalToSelf(String robot) {
+        return "SS {Robot " + robot + "} {Strength INF} {Error SS.To.Self}";
+    }
+
+    public static String signalUnknownRobot(String robot) {
+        return "SS {Robot " + robot + "} {Strength NaN} {Error Robot.Does.Not.Exist}";
+    }
+
+    /**
+     * The reply to a GETSS the model answered: +infinity and NaN or a value above 0 dBm are
+     * reported as the model's error; anything else is printed like C's {@code %g}.
+     */
+    public static String signal(String robot, double strength) {
+        if (strength == Double.POSITIVE_INFINITY) {
+            return "SS {Robot " + robot + "} {Strength INF} {Error Model.Returned.INF}";
+        }
+        if (Double.isNaN(strength) || strength > 0) {
+            return "SS {Robot " + robot + "} {Strength NaN} {Error Model.Returned.NaN}";
+        }
+        return "SS {Robot " + robot + "} {Strength " + Strengths.format(strength) + "}";
+    }
+
+    public static String dns(String robot, int port) {
+        return "DNSREPLY {Robot " + robot + "} {Port " + port + "}";
+    }
+
+    public static String dnsNoSuchRobot(String robot) {
+        return "DNSREPLY {Robot " + robot + "} {Port -1} {Error NoSuchRobot}";
+    }
+
+    public static String dnsNotListening(String robot) {
+        return "DNSREPLY {Robot " + robot + "} {Port -1} {Error RobotDoesNotListenOnThisPort}";
+    }
+
+    public static String reverseDns(String port, String sourceRobot) {
+        return "REVERSEDNSREPLY {Port " + port + "} {Robot " + sourceRobot + "}";
+    }
+
+    public static String reverseDnsUnknown(String port) {
+        return "REVERSEDNSREPLY {Port " + port + "} {Error UnknownOrIllegalPort}";
+    }
+}

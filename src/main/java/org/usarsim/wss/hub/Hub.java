@@ -13,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelStartException;
@@ -31,6 +32,8 @@ import org.usarsim.wss.model.WssEventListener;
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
     private static final Logger LOG = Logger.getLogger(Hub.class.getName());
+    /** How long an INIT of a taken name waits for the name to be freed. */
+    private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
 
     /** The outcome of a DNS. */
     enum DnsOutcome { OK, NO_SUCH_ROBOT, NOT_LISTENING, NO_PORT }
@@ -47,7 +50,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Pairs the model broke and has not resumed. */
     private final Set<Pair> broken = new HashSet<>();
     private ControlListener controlListener;
-    private PortAcceptor portAcceptor;
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -72,18 +74,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void start() throws IOException, ModelStartException {
         controlListener = new ControlListener(this, new InetSocketAddress(config.bindAddress(), config.controlPort()));
         try {
-            portAcceptor = new PortAcceptor(this);
             model.setRobotLinkModel(this);
             model.setEventListener(events);
             model.start();
-        } catch (IOException | ModelStartException | RuntimeException e) {
+        } catch (ModelStartException | RuntimeException e) {
             controlListener.close();
-            if (portAcceptor != null) {
-                portAcceptor.close();
-            }
             throw e;
         }
-        portAcceptor.start();
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());
@@ -119,20 +116,33 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.clear();
         }
         links.forEach(Link::close);
-        if (portAcceptor != null) {
-            portAcceptor.close();
-        }
         LOG.info("WSS stopped");
     }
 
     // ---- called by control sessions ----
 
-    /** @return false when the name is taken (nothing changes then) */
+    /**
+     * Registers a robot. When the name is taken, waits a moment for it to be freed: a robot whose
+     * control connection dropped reconnects at once, and its old connection's end may not have
+     * been read yet.
+     *
+     * @return false when the name stays taken (nothing changes then)
+     */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         Robot robot = new Robot(name, address, acceptPorts, session);
         synchronized (lock) {
-            if (robots.containsKey(name)) {
-                return false;
+            long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
+            while (robots.containsKey(name)) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    return false;
+                }
+                try {
+                    TimeUnit.NANOSECONDS.timedWait(lock, left);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return false;
+                }
             }
             robots.put(name, robot);
             for (WssPort port : ports.values()) {
@@ -153,6 +163,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return;
             }
             robots.remove(name);
+            lock.notifyAll();
             for (WssPort port : ports.values()) {
                 if (port.key.involves(name)) {
                     port.stopListening();
@@ -196,18 +207,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             WssPort port = ports.get(key);
             if (port == null) {
                 try {
-                    port = WssPort.allocate(key, config.bindAddress());
+                    port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
                 } catch (IOException e) {
                     LOG.warning("could not allocate a WSS port for " + key + ": " + e.getMessage());
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 ports.put(key, port);
-                LOG.info("allocated " + port);
-                if (shouldListen(key, allowed)) {
-                    portAcceptor.add(port);
-                } else {
-                    port.stopListening();
-                }
+                LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
             } else if (!port.listening() && shouldListen(key, allowed)) {
                 listen(port);
             }
@@ -324,6 +330,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
+            lock.notifyAll();
             for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
                 WssPort port = it.next();
                 if (port.key.involves(name)) {
@@ -359,13 +366,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Under the lock. @return true when it listens now */
     private boolean listen(WssPort port) {
         try {
-            port.listen(config.bindAddress());
+            port.listen();
+            return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());
             return false;
         }
-        portAcceptor.add(port);
-        return true;
     }
 
     private boolean modelAllows(String from, String to) {

@@ -3,7 +3,6 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.util.HashSet;
 import java.util.Set;
@@ -15,61 +14,56 @@ import java.util.Set;
  */
 final class WssPort {
 
-    private static final int BACKLOG = 128;
-
     final PortKey key;
     final int number;
     /** The connections accepted here that are still open. */
     final Set<Link> links = new HashSet<>();
-    private ServerSocketChannel channel;
+    private final Hub hub;
+    private final InetAddress bindAddress;
+    private PortListener listener;
 
-    private WssPort(PortKey key, ServerSocketChannel channel) {
+    private WssPort(Hub hub, PortKey key, InetAddress bindAddress, int number) {
+        this.hub = hub;
         this.key = key;
-        this.channel = channel;
-        this.number = channel.socket().getLocalPort();
+        this.bindAddress = bindAddress;
+        this.number = number;
     }
 
-    /** Binds a new OS-chosen port, listening. */
-    static WssPort allocate(PortKey key, InetAddress bindAddress) throws IOException {
-        return new WssPort(key, open(new InetSocketAddress(bindAddress, 0)));
-    }
-
-    private static ServerSocketChannel open(InetSocketAddress address) throws IOException {
-        ServerSocketChannel channel = ServerSocketChannel.open();
-        try {
-            channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-            channel.bind(address, BACKLOG);
-            channel.configureBlocking(false);
-            return channel;
-        } catch (IOException e) {
+    /** Binds a new OS-chosen port, listening on it or not. */
+    static WssPort allocate(Hub hub, PortKey key, InetAddress bindAddress, boolean listen) throws IOException {
+        ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, 0));
+        WssPort port = new WssPort(hub, key, bindAddress, channel.socket().getLocalPort());
+        if (listen) {
+            port.accept(channel);
+        } else {
             channel.close();
-            throw e;
         }
+        return port;
     }
 
     boolean listening() {
-        return channel != null;
-    }
-
-    /** The listening channel, or null. */
-    ServerSocketChannel channel() {
-        return channel;
+        return listener != null;
     }
 
     /** Listens again on the same number. */
-    void listen(InetAddress bindAddress) throws IOException {
-        if (channel == null) {
-            channel = open(new InetSocketAddress(bindAddress, number));
+    void listen() throws IOException {
+        if (listener == null) {
+            accept(PortListener.bind(new InetSocketAddress(bindAddress, number)));
         }
     }
 
-    /** @return true when it was listening */
+    private void accept(ServerSocketChannel channel) {
+        listener = new PortListener(hub, this, channel);
+        listener.start();
+    }
+
+    /** Stops listening at once: a connect after this is refused. @return true when it was listening */
     boolean stopListening() {
-        if (channel == null) {
+        if (listener == null) {
             return false;
         }
-        Closing.quietly(channel);
-        channel = null;
+        listener.close();
+        listener = null;
         return true;
     }
 

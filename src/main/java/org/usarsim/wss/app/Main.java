@@ -3,6 +3,7 @@ package org.usarsim.wss.app;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
+import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelStartException;
@@ -58,28 +59,44 @@ public final class Main {
         if (model == null) {
             fail(2, "wss.model = '" + settings.modelName() + "' is not a known model; known: " + String.join(", ", catalog.names()));
         }
-        model.configure(settings.modelSettings());
         Hub hub = new Hub(settings.hubConfig(), model);
+        CsvEventLog eventLog = settings.eventLog() ? openEventLog(settings.eventLogDir()) : null;
+        if (eventLog != null) {
+            hub.addListener(eventLog);
+        }
+        // Before anything listens: a SIGTERM right after the start line must still exit 0.
+        Signal.handle(new Signal("TERM"), signal -> stop(hub, eventLog));
+        Signal.handle(new Signal("INT"), signal -> stop(hub, eventLog));
         try {
+            model.configure(settings.modelSettings());
             hub.start();
         } catch (IOException e) {
             fail(1, "cannot listen for robots on " + settings.get("wss.bindAddress") + ":" + settings.get("wss.port")
                     + ": " + e.getMessage());
-        } catch (ModelStartException e) {
+        } catch (ModelStartException | RuntimeException e) {
             fail(1, model.name() + " did not start: " + e.getMessage());
         }
-        CountDownLatch stopped = new CountDownLatch(1);
-        Signal.handle(new Signal("TERM"), signal -> stop(hub));
-        Signal.handle(new Signal("INT"), signal -> stop(hub));
         try {
-            stopped.await();
+            new CountDownLatch(1).await();
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
     }
 
-    private static void stop(Hub hub) {
+    private static CsvEventLog openEventLog(Path directory) {
+        try {
+            return CsvEventLog.create(directory);
+        } catch (IOException e) {
+            fail(1, "cannot write the event log in " + directory + ": " + e);
+            return null;
+        }
+    }
+
+    private static void stop(Hub hub, CsvEventLog eventLog) {
         hub.close();
+        if (eventLog != null) {
+            eventLog.close();
+        }
         System.exit(0);
     }
 

@@ -35,6 +35,7 @@ final class Settings {
         KEYS.put("wss.bindAddress", new Key("0.0.0.0", "an IP address of this machine (0.0.0.0: all)", Settings::isAddress));
         KEYS.put("wss.model", new Key("NoopPropagationModel", "the name of a propagation model", v -> !v.isEmpty()));
         KEYS.put("wss.eventLog", new Key("false", "true or false", Settings::isBoolean));
+        KEYS.put("wss.eventLogDir", new Key(".", "a directory", v -> !v.isEmpty()));
         KEYS.put("wss.matchSourceAddress", new Key("true", "true or false", Settings::isBoolean));
         KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 16777216", v -> isInt(v, 1, 16 * 1024 * 1024)));
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
@@ -100,6 +101,10 @@ final class Settings {
 
     boolean eventLog() {
         return Boolean.parseBoolean(get("wss.eventLog"));
+    }
+
+    Path eventLogDir() {
+        return Path.of(get("wss.eventLogDir"));
     }
 
     Level logLevel() {

@@ -109,7 +109,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
             for (WssPort port : ports.values()) {
-                port.stopListening();
+                port.release();
                 links.addAll(port.links);
             }
             ports.clear();
@@ -334,11 +334,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
                 WssPort port = it.next();
                 if (port.key.involves(name)) {
-                    port.stopListening();
+                    port.release();
                     links.addAll(port.links);
                     it.remove();
                 }
             }
+            broken.removeIf(pair -> pair.contains(name));
         }
         links.forEach(Link::close);
         if (robot != null) {
@@ -357,10 +358,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     // ---- rules ----
 
-    /** A WSS port listens while both robots are registered and the model neither broke nor forbids the pair. Under the lock. */
+    /**
+     * A WSS port listens while both robots are registered, the target still accepts on the
+     * target port, and the model neither broke nor forbids the pair. Under the lock.
+     */
     private boolean shouldListen(PortKey key, boolean modelAllows) {
-        return modelAllows && robots.containsKey(key.from()) && robots.containsKey(key.to())
-                && !broken.contains(Pair.of(key.from(), key.to()));
+        Robot target = robots.get(key.to());
+        return modelAllows && robots.containsKey(key.from()) && target != null
+                && target.ports().contains(key.targetPort()) && !broken.contains(Pair.of(key.from(), key.to()));
     }
 
     /** Under the lock. @return true when it listens now */

@@ -3,16 +3,26 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.util.HashSet;
 import java.util.Set;
+import java.util.logging.Logger;
 
 /**
  * A port on the WSS machine for one {@link PortKey}. Its number is chosen by the OS when it is
  * first allocated and kept for the server's life; it listens or not as the hub decides.
+ *
+ * <p>While it does not listen, a bound but unconnected socket holds the number, so that the OS
+ * gives it to nobody else (not to another WSS port, nor to a link's outgoing socket) and the
+ * port can listen on it again. Both sockets set SO_REUSEADDR, which lets the listener bind
+ * beside the placeholder; a connect to a number held only by the placeholder is refused.
  * All state is guarded by the hub's lock.
  */
 final class WssPort {
+
+    private static final Logger LOG = Logger.getLogger(WssPort.class.getName());
 
     final PortKey key;
     final int number;
@@ -21,6 +31,7 @@ final class WssPort {
     private final Hub hub;
     private final InetAddress bindAddress;
     private PortListener listener;
+    private SocketChannel placeholder;
 
     private WssPort(Hub hub, PortKey key, InetAddress bindAddress, int number) {
         this.hub = hub;
@@ -31,13 +42,15 @@ final class WssPort {
 
     /** Binds a new OS-chosen port, listening on it or not. */
     static WssPort allocate(Hub hub, PortKey key, InetAddress bindAddress, boolean listen) throws IOException {
-        ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, 0));
-        WssPort port = new WssPort(hub, key, bindAddress, channel.socket().getLocalPort());
         if (listen) {
+            ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, 0));
+            WssPort port = new WssPort(hub, key, bindAddress, channel.socket().getLocalPort());
             port.accept(channel);
-        } else {
-            channel.close();
+            return port;
         }
+        SocketChannel placeholder = hold(new InetSocketAddress(bindAddress, 0));
+        WssPort port = new WssPort(hub, key, bindAddress, placeholder.socket().getLocalPort());
+        port.placeholder = placeholder;
         return port;
     }
 
@@ -49,6 +62,8 @@ final class WssPort {
     void listen() throws IOException {
         if (listener == null) {
             accept(PortListener.bind(new InetSocketAddress(bindAddress, number)));
+            Closing.quietly(placeholder);
+            placeholder = null;
         }
     }
 
@@ -57,14 +72,41 @@ final class WssPort {
         listener.start();
     }
 
-    /** Stops listening at once: a connect after this is refused. @return true when it was listening */
+    /** Stops listening at once, so that a connect is refused; keeps the number. @return true when it was listening */
     boolean stopListening() {
         if (listener == null) {
             return false;
         }
         listener.close();
         listener = null;
+        try {
+            placeholder = hold(new InetSocketAddress(bindAddress, number));
+        } catch (IOException e) {
+            LOG.warning(this + ": could not keep the number while not listening: " + e.getMessage());
+        }
         return true;
+    }
+
+    /** Stops listening and gives the number back to the OS. */
+    void release() {
+        if (listener != null) {
+            listener.close();
+            listener = null;
+        }
+        Closing.quietly(placeholder);
+        placeholder = null;
+    }
+
+    private static SocketChannel hold(InetSocketAddress address) throws IOException {
+        SocketChannel channel = SocketChannel.open();
+        try {
+            channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
+            channel.bind(address);
+            return channel;
+        } catch (IOException e) {
+            channel.close();
+            throw e;
+        }
     }
 
     @Override

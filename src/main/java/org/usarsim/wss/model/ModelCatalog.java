@@ -44,10 +44,11 @@ public final class ModelCatalog {
         return models;
     }
 
-    /** The model named by its class's simple or qualified name, or null. */
+    /** The model named by its {@link PropagationModel#name()}, its class's simple or its qualified name; or null. */
     public PropagationModel find(String name) {
         for (PropagationModel model : models) {
-            if (model.name().equals(name) || model.getClass().getName().equals(name)) {
+            Class<?> type = model.getClass();
+            if (model.name().equals(name) || type.getSimpleName().equals(name) || type.getName().equals(name)) {
                 return model;
             }
         }

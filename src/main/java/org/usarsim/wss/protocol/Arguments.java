@@ -4,9 +4,12 @@ import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /** Reads the values of a command's fields: robot names and ports, with the errors they get. */
 public final class Arguments {
+
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?[0-9]{1,10}");
 
     private Arguments() {
     }
@@ -44,10 +47,10 @@ public final class Arguments {
         return new ArrayList<>(ports);
     }
 
-    /** DNS's optional {@code Port} field: 0 when missing or 0 (the target's first port). */
+    /** DNS's optional {@code Port} field: 0 when missing, empty or 0 (the target's first port). */
     public static int targetPort(Command command) throws ProtocolException {
         String value = command.value("Port");
-        if (value == null) {
+        if (value == null || value.isEmpty()) {
             return 0;
         }
         Integer port = integer(value);
@@ -73,9 +76,9 @@ public final class Arguments {
         return port;
     }
 
-    /** A decimal integer (optional sign), or null. */
+    /** A decimal integer of ASCII digits with an optional sign, or null. */
     static Integer integer(String text) {
-        if (text.isEmpty() || text.length() > 11) {
+        if (!DECIMAL.matcher(text).matches()) {
             return null;
         }
         try {

@@ -1,0 +1,395 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.ConnectException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * Runs the real server as a child process, as a user does:
+ * {@code java -cp <classes> org.usarsim.wss.app.Main --headless --config FILE}. Every config
+ * binds 127.0.0.1 and lets the OS choose the control port, read back from the log.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class HeadlessProcessTest {
+
+    /** How long to wait for anything the server should do at once (JVM start included). */
+    private static final Duration WAIT = Duration.ofSeconds(10);
+
+    private static final Pattern LISTENING = Pattern.compile("WSS listening for robots on 127\\.0\\.0\\.1:(\\d+) with (\\S+)");
+    private static final Pattern TIMESTAMPED = Pattern.compile(
+            "^(\\d{4}-\\d{2}-\\d{2} \\d{2}:\\d{2}:\\d{2}\\.\\d{3}) (SEVERE|WARNING|INFO|CONFIG|FINE|FINER|FINEST) \\S.*");
+    private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS");
+
+    @TempDir
+    Path dir;
+
+    private final List<Server> servers = new ArrayList<>();
+    private final List<AutoCloseable> closeables = new ArrayList<>();
+
+    @AfterEach
+    void destroyEverything() throws Exception {
+        for (AutoCloseable closeable : closeables) {
+            try {
+                closeable.close();
+            } catch (IOException e) {
+                // best effort
+            }
+        }
+        for (Server server : servers) {
+            server.kill();
+        }
+    }
+
+    // ---- the cases ----
+
+    @Test
+    void startsAnswersInitAndLogsWithTimestamps() throws Exception {
+        Server server = start("--headless", "--config", config(Map.of()).toString());
+        Matcher listening = server.awaitListening();
+        assertEquals("NoopPropagationModel", listening.group(2));
+        int port = Integer.parseInt(listening.group(1));
+        assertTrue(port > 0, "the OS chose a port: " + port);
+
+        Socket robot = connect(port);
+        send(robot, "INIT {Robot R1} {Port 5000}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", readLine(robot));
+
+        server.awaitLine(line -> line.contains("registered R1"));
+        List<String> lines = server.stdoutSoFar();
+        assertFalse(lines.isEmpty());
+        LocalDateTime now = LocalDateTime.now();
+        for (String line : lines) {
+            Matcher matcher = TIMESTAMPED.matcher(line);
+            assertTrue(matcher.matches(), "a log line without a timestamp: '" + line + "'");
+            LocalDateTime time = LocalDateTime.parse(matcher.group(1), TIME);
+            assertTrue(Math.abs(Duration.between(time, now).toSeconds()) < 120,
+                    "the timestamp is the time of the event: " + line + " (now " + now + ")");
+        }
+        assertTrue(server.process.isAlive(), "still running");
+        assertEquals("", server.stderr(), "nothing on standard error");
+    }
+
+    @Test
+    void sigtermExitsZeroAndStopsListening() throws Exception {
+        Server server = start("--headless", "--config", config(Map.of()).toString());
+        int port = Integer.parseInt(server.awaitListening().group(1));
+        Socket robot = connect(port);
+        send(robot, "INIT {Robot R1} {Port 5000}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", readLine(robot));
+
+        server.sigterm();
+        assertEquals(0, server.awaitExit(), "exit code after SIGTERM; stderr: " + server.stderr());
+        assertEquals(-1, robot.getInputStream().read(), "the robot's control connection is closed");
+        assertThrows(ConnectException.class, () -> connect(port), "the control port no longer accepts connections");
+        assertTrue(server.stdoutSoFar().stream().anyMatch(line -> line.endsWith("WSS stopped")),
+                "logs that it stopped: " + server.stdoutSoFar());
+    }
+
+    /**
+     * A supervisor (or a script) that waits for the "listening" line and then stops the server
+     * must see exit code 0 too. Several tries, since it is a matter of timing.
+     */
+    @Test
+    void sigtermRightAfterTheListeningLineExitsZero() throws Exception {
+        for (int attempt = 1; attempt <= 5; attempt++) {
+            Server server = start("--headless", "--config", config(Map.of()).toString());
+            server.awaitListening();
+            server.sigterm();
+            int code = server.awaitExit();
+            assertEquals(0, code, "attempt " + attempt + ": SIGTERM sent just after the 'WSS listening' line was logged"
+                    + " gave exit code " + code + " (143 = the JVM's default SIGTERM handling: the server's own handler"
+                    + " was not installed yet); stdout: " + server.stdoutSoFar());
+        }
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.colour, blue",
+        "wss.chunkSize, big",
+        "distance.n, zero",
+        "wss.model, NoSuchModel",
+    })
+    void badConfigExitsTwoBeforeBinding(String key, String value) throws Exception {
+        Server server = start("--headless", "--config", config(Map.of(key, value)).toString());
+        assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
+        String error = server.stderr().strip();
+        assertFalse(error.isEmpty(), "an error on standard error");
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+        assertTrue(error.contains(key), "names the key: " + error);
+        assertTrue(error.contains(value), "names the value: " + error);
+        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")),
+                "never listened: " + server.stdoutSoFar());
+    }
+
+    /** With the configured port held by someone else, a bad config still gives 2: checked before binding. */
+    @Test
+    void badModelIsReportedBeforeTheControlPortIsBound() throws Exception {
+        ServerSocket taken = holdPort();
+        Map<String, String> overrides = new LinkedHashMap<>();
+        overrides.put("wss.port", String.valueOf(taken.getLocalPort()));
+        overrides.put("wss.model", "NoSuchModel");
+        Server server = start("--headless", "--config", config(overrides).toString());
+        assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
+        assertTrue(server.stderr().contains("NoSuchModel"), server.stderr());
+    }
+
+    @Test
+    void controlPortInUseExitsOne() throws Exception {
+        ServerSocket taken = holdPort();
+        int port = taken.getLocalPort();
+        Server server = start("--headless", "--config", config(Map.of("wss.port", String.valueOf(port))).toString());
+        assertEquals(1, server.awaitExit(), "exit code; stderr: " + server.stderr() + "; stdout: " + server.stdoutSoFar());
+        String error = server.stderr().strip();
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+        assertTrue(error.contains("127.0.0.1:" + port), "names the address and port: " + error);
+        assertTrue(error.contains("cannot listen"), error);
+        assertTrue(error.toLowerCase().contains("in use"), "says why: " + error);
+        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+    }
+
+    @Test
+    void unknownArgumentExitsTwo() throws Exception {
+        Server server = start("--headless", "--verbose", "--config", config(Map.of()).toString());
+        assertEquals(2, server.awaitExit());
+        assertTrue(server.stderr().contains("--verbose"), "names the argument: " + server.stderr());
+        assertTrue(server.stderr().contains("usage"), "shows the usage: " + server.stderr());
+        assertTrue(server.stdoutSoFar().isEmpty(), server.stdoutSoFar().toString());
+    }
+
+    @Test
+    void configWithoutAFileExitsTwo() throws Exception {
+        Server server = start("--headless", "--config");
+        assertEquals(2, server.awaitExit());
+        assertTrue(server.stderr().contains("--config"), server.stderr());
+    }
+
+    @Test
+    void missingConfigFileExitsTwo() throws Exception {
+        Path absent = dir.resolve("absent.properties");
+        Server server = start("--headless", "--config", absent.toString());
+        assertEquals(2, server.awaitExit());
+        String error = server.stderr().strip();
+        assertTrue(error.contains(absent.toString()), "names the file: " + error);
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+    }
+
+    @Test
+    void helpPrintsUsageAndExitsZero() throws Exception {
+        Server server = start("--help");
+        assertEquals(0, server.awaitExit());
+        assertTrue(String.join("\n", server.stdoutSoFar()).contains("usage"), server.stdoutSoFar().toString());
+    }
+
+    // ---- helpers ----
+
+    /** A config binding 127.0.0.1 on a port of the OS's choosing, with these overrides. */
+    private Path config(Map<String, String> overrides) throws IOException {
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put("wss.bindAddress", "127.0.0.1");
+        values.put("wss.port", "0");
+        values.putAll(overrides);
+        StringBuilder text = new StringBuilder("# written by HeadlessProcessTest\n");
+        values.forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+        Path file = Files.createTempFile(dir, "wss", ".properties");
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        return file;
+    }
+
+    private ServerSocket holdPort() throws IOException {
+        ServerSocket socket = new ServerSocket(0, 50, InetAddress.getByName("127.0.0.1"));
+        closeables.add(socket);
+        return socket;
+    }
+
+    private Socket connect(int port) throws IOException {
+        Socket socket = new Socket();
+        closeables.add(socket);
+        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), (int) WAIT.toMillis());
+        socket.setSoTimeout((int) WAIT.toMillis());
+        return socket;
+    }
+
+    private static void send(Socket socket, String text) throws IOException {
+        OutputStream out = socket.getOutputStream();
+        out.write(text.getBytes(StandardCharsets.US_ASCII));
+        out.flush();
+    }
+
+    /** One reply line, its CR LF included (the socket's timeout bounds the wait). */
+    private static String readLine(Socket socket) throws IOException {
+        InputStream in = socket.getInputStream();
+        ByteArrayOutputStream line = new ByteArrayOutputStream();
+        int b;
+        while ((b = in.read()) != -1) {
+            line.write(b);
+            if (b == '\n') {
+                break;
+            }
+        }
+        return line.toString(StandardCharsets.US_ASCII);
+    }
+
+    private Server start(String... args) throws Exception {
+        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        List<String> command = new ArrayList<>(List.of(
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", classes.toString(), Main.class.getName()));
+        command.addAll(List.of(args));
+        Server server = new Server(new ProcessBuilder(command).start());
+        servers.add(server);
+        return server;
+    }
+
+    /** A child server process, its standard output read line by line and its standard error collected. */
+    private static final class Server {
+
+        /** Put on the queue when standard output ends. */
+        private static final String END = new String("<end of standard output>");
+
+        final Process process;
+        private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
+        private final List<String> stdout = new CopyOnWriteArrayList<>();
+        private final ByteArrayOutputStream stderr = new ByteArrayOutputStream();
+        private final Thread outReader;
+        private final Thread errReader;
+
+        Server(Process process) {
+            this.process = process;
+            try {
+                process.getOutputStream().close();
+            } catch (IOException e) {
+                // the child reads nothing from standard input anyway
+            }
+            outReader = new Thread(this::readStdout, "stdout of " + process.pid());
+            errReader = new Thread(this::readStderr, "stderr of " + process.pid());
+            outReader.setDaemon(true);
+            errReader.setDaemon(true);
+            outReader.start();
+            errReader.start();
+        }
+
+        private void readStdout() {
+            try (var reader = process.inputReader(StandardCharsets.UTF_8)) {
+                String line;
+                while ((line = reader.readLine()) != null) {
+                    stdout.add(line);
+                    lines.add(line);
+                }
+            } catch (IOException e) {
+                // the process ended
+            } finally {
+                lines.add(END);
+            }
+        }
+
+        private void readStderr() {
+            try (InputStream in = process.getErrorStream()) {
+                byte[] buffer = new byte[4096];
+                int read;
+                while ((read = in.read(buffer)) != -1) {
+                    synchronized (stderr) {
+                        stderr.write(buffer, 0, read);
+                    }
+                }
+            } catch (IOException e) {
+                // the process ended
+            }
+        }
+
+        List<String> stdoutSoFar() {
+            return List.copyOf(stdout);
+        }
+
+        String stderr() {
+            synchronized (stderr) {
+                return stderr.toString(StandardCharsets.UTF_8);
+            }
+        }
+
+        /** The next line of standard output that matches, waiting at most {@link #WAIT}. */
+        String awaitLine(Predicate<String> wanted) throws InterruptedException {
+            long deadline = System.nanoTime() + WAIT.toNanos();
+            while (true) {
+                long left = deadline - System.nanoTime();
+                String line = left > 0 ? lines.poll(left, TimeUnit.NANOSECONDS) : null;
+                if (line == null) {
+                    fail("timed out waiting for a line on standard output; stdout: " + stdoutSoFar() + "; stderr: " + stderr());
+                }
+                if (line == END) {
+                    lines.add(END);
+                    fail("standard output ended (the server exited?) before the line came; stdout: " + stdoutSoFar()
+                            + "; stderr: " + stderr());
+                }
+                if (wanted.test(line)) {
+                    return line;
+                }
+            }
+        }
+
+        Matcher awaitListening() throws InterruptedException {
+            Matcher matcher = LISTENING.matcher(awaitLine(line -> LISTENING.matcher(line).find()));
+            assertTrue(matcher.find());
+            return matcher;
+        }
+
+        /** The exit code, waiting at most {@link #WAIT}; then all output has been read. */
+        int awaitExit() throws InterruptedException {
+            if (!process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS)) {
+                fail("the server did not exit; stdout: " + stdoutSoFar() + "; stderr: " + stderr());
+            }
+            outReader.join(WAIT.toMillis());
+            errReader.join(WAIT.toMillis());
+            return process.exitValue();
+        }
+
+        /**
+         * Sends SIGTERM. Not with {@link Process#destroy()}: that also closes our ends of the
+         * child's standard output and error, losing whatever it logs while it stops.
+         */
+        void sigterm() {
+            assertTrue(process.toHandle().destroy(), "SIGTERM sent");
+        }
+
+        void kill() throws InterruptedException {
+            if (process.isAlive()) {
+                process.destroyForcibly();
+                process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS);
+            }
+        }
+    }
+}

@@ -1,0 +1,323 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertAll;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.Properties;
+import java.util.TreeMap;
+import java.util.logging.Level;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.usarsim.wss.hub.HubConfig;
+
+class SettingsTest {
+
+    /** Every key and its documented default. */
+    private static final Map<String, String> DEFAULTS = Map.ofEntries(
+            Map.entry("wss.port", "50000"),
+            Map.entry("wss.bindAddress", "0.0.0.0"),
+            Map.entry("wss.model", "NoopPropagationModel"),
+            Map.entry("wss.eventLog", "false"),
+            Map.entry("wss.eventLogDir", "."),
+            Map.entry("wss.matchSourceAddress", "true"),
+            Map.entry("wss.chunkSize", "65536"),
+            Map.entry("wss.logLevel", "INFO"),
+            Map.entry("usarsim.host", "127.0.0.1"),
+            Map.entry("usarsim.port", "7435"),
+            Map.entry("distance.cutoff", "-93"),
+            Map.entry("distance.pd0", "-49.67"),
+            Map.entry("distance.n", "1"),
+            Map.entry("distance.d0", "2"),
+            Map.entry("obstacle.attenuation", "6.325"),
+            Map.entry("obstacle.cacheDistance", "1.0"));
+
+    @TempDir
+    Path dir;
+
+    private Path write(String content) throws IOException {
+        Path file = dir.resolve("wss.properties");
+        Files.writeString(file, content, StandardCharsets.UTF_8);
+        return file;
+    }
+
+    private static Properties props(String key, String value) {
+        Properties properties = new Properties();
+        properties.setProperty(key, value);
+        return properties;
+    }
+
+    // ---- defaults ----
+
+    @Test
+    void defaultsHaveEveryKey() {
+        Settings settings = Settings.defaults();
+        assertAll(DEFAULTS.entrySet().stream().map(e -> () -> assertEquals(e.getValue(), settings.get(e.getKey()), e.getKey())));
+    }
+
+    @Test
+    void defaultsHaveNoOtherKey() {
+        Settings settings = Settings.defaults();
+        assertEquals(null, settings.get("wss.nonsense"));
+        // modelSettings() shows every non-wss key: exactly the documented ones.
+        Map<String, String> expected = new TreeMap<>(DEFAULTS);
+        expected.keySet().removeIf(key -> key.startsWith("wss."));
+        assertEquals(expected, settings.modelSettings().asMap());
+    }
+
+    @Test
+    void defaultTypedValues() {
+        Settings settings = Settings.defaults();
+        assertEquals("NoopPropagationModel", settings.modelName());
+        assertFalse(settings.eventLog());
+        assertEquals(Level.INFO, settings.logLevel());
+    }
+
+    @Test
+    void defaultHubConfig() throws Exception {
+        HubConfig config = Settings.defaults().hubConfig();
+        assertEquals(InetAddress.getByName("0.0.0.0"), config.bindAddress());
+        assertTrue(config.bindAddress().isAnyLocalAddress());
+        assertEquals(50000, config.controlPort());
+        assertEquals(65536, config.chunkSize());
+        assertTrue(config.matchSourceAddress());
+    }
+
+    @Test
+    void emptyPropertiesGiveTheDefaults() throws Exception {
+        Settings settings = Settings.of(new Properties(), "nothing");
+        DEFAULTS.forEach((key, value) -> assertEquals(value, settings.get(key), key));
+    }
+
+    @Test
+    void emptyFileGivesTheDefaults() throws Exception {
+        Settings settings = Settings.load(write("# nothing but a comment\n\n"));
+        DEFAULTS.forEach((key, value) -> assertEquals(value, settings.get(key), key));
+    }
+
+    // ---- a file overriding values ----
+
+    @Test
+    void fileOverridesValuesAndKeepsTheOtherDefaults() throws Exception {
+        Path file = write(String.join("\n",
+                "# a test configuration",
+                "wss.port = 0",
+                "wss.bindAddress=127.0.0.1",
+                "wss.eventLog=TRUE",
+                "wss.matchSourceAddress: false",
+                "wss.chunkSize=1",
+                "wss.logLevel=FINEST",
+                "usarsim.host=sim.example.org",
+                "usarsim.port=65535",
+                "distance.cutoff=-120.5",
+                "distance.n=2.5   ",
+                "obstacle.attenuation=0",
+                ""));
+        Settings settings = Settings.load(file);
+        assertEquals("0", settings.get("wss.port"));
+        assertEquals("127.0.0.1", settings.get("wss.bindAddress"));
+        assertTrue(settings.eventLog());
+        assertEquals("false", settings.get("wss.matchSourceAddress"));
+        assertEquals("1", settings.get("wss.chunkSize"));
+        assertEquals(Level.FINEST, settings.logLevel());
+        assertEquals("sim.example.org", settings.get("usarsim.host"));
+        assertEquals("65535", settings.get("usarsim.port"));
+        assertEquals("-120.5", settings.get("distance.cutoff"));
+        assertEquals("2.5", settings.get("distance.n"), "trailing whitespace is stripped");
+        assertEquals("0", settings.get("obstacle.attenuation"));
+        // untouched keys keep their defaults
+        assertEquals("NoopPropagationModel", settings.modelName());
+        assertEquals("-49.67", settings.get("distance.pd0"));
+        assertEquals("2", settings.get("distance.d0"));
+        assertEquals("1.0", settings.get("obstacle.cacheDistance"));
+
+        HubConfig config = settings.hubConfig();
+        assertEquals(InetAddress.getByName("127.0.0.1"), config.bindAddress());
+        assertEquals(0, config.controlPort());
+        assertEquals(1, config.chunkSize());
+        assertFalse(config.matchSourceAddress());
+    }
+
+    @Test
+    void loadingDoesNotChangeTheDefaults() throws Exception {
+        Settings.of(props("wss.port", "1234"), "test");
+        assertEquals("50000", Settings.defaults().get("wss.port"));
+    }
+
+    @Test
+    void modelNameMayBeAnyNonEmptyName() throws Exception {
+        assertEquals("org.example.SomeModel", Settings.of(props("wss.model", "org.example.SomeModel"), "t").modelName());
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.port, 0", "wss.port, 65535",
+        "wss.chunkSize, 16777216",
+        "usarsim.port, 1",
+        "distance.n, 0.001", "distance.d0, 1e-3",
+        "obstacle.attenuation, 0", "obstacle.cacheDistance, 0",
+        "distance.cutoff, -1e3", "distance.pd0, 10",
+        "wss.eventLog, False", "wss.matchSourceAddress, TRUE",
+        "wss.logLevel, SEVERE", "wss.logLevel, WARNING", "wss.logLevel, FINE", "wss.logLevel, FINER",
+        "wss.bindAddress, 127.0.0.1", "wss.bindAddress, ::1",
+    })
+    void acceptsBoundaryValues(String key, String value) throws Exception {
+        assertEquals(value, Settings.of(props(key, value), "t").get(key));
+    }
+
+    // ---- modelSettings() and hubConfig() ----
+
+    @Test
+    void modelSettingsHoldTheModelKeysAndNoWssKey() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.port", "0");
+        properties.setProperty("wss.model", "NoopPropagationModel");
+        properties.setProperty("usarsim.host", "10.0.0.7");
+        properties.setProperty("distance.d0", "3.5");
+        properties.setProperty("obstacle.cacheDistance", "0.25");
+        Map<String, String> model = Settings.of(properties, "t").modelSettings().asMap();
+
+        assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
+        assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("usarsim.") || key.startsWith("distance.")
+                || key.startsWith("obstacle.")), model.toString());
+        assertEquals(Map.of(
+                "usarsim.host", "10.0.0.7",
+                "usarsim.port", "7435",
+                "distance.cutoff", "-93",
+                "distance.pd0", "-49.67",
+                "distance.n", "1",
+                "distance.d0", "3.5",
+                "obstacle.attenuation", "6.325",
+                "obstacle.cacheDistance", "0.25"), model);
+        assertEquals(3.5, Settings.of(properties, "t").modelSettings().getDouble("distance.d0", -1), 0);
+    }
+
+    @Test
+    void hubConfigFromProperties() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.bindAddress", "127.0.0.1");
+        properties.setProperty("wss.port", "4321");
+        properties.setProperty("wss.chunkSize", "512");
+        properties.setProperty("wss.matchSourceAddress", "False");
+        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, false),
+                Settings.of(properties, "t").hubConfig());
+    }
+
+    // ---- bad values ----
+
+    /** The message names the key and the value. */
+    private static SettingsException rejected(String key, String value) {
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.of(props(key, value), "my.properties"),
+                key + " = '" + value + "' should be rejected");
+        String message = e.getMessage();
+        assertTrue(message.contains(key), "names the key: " + message);
+        assertTrue(message.contains("'" + value.strip() + "'"), "names the value: " + message);
+        assertTrue(message.contains("my.properties"), "names the source: " + message);
+        assertFalse(message.contains("\n"), "one line: " + message);
+        return e;
+    }
+
+    @Test
+    void unknownKey() {
+        SettingsException e = rejected("wss.prot", "50001");
+        assertTrue(e.getMessage().contains("unknown key"), e.getMessage());
+        assertTrue(e.getMessage().contains("wss.port"), "lists the known keys: " + e.getMessage());
+    }
+
+    @Test
+    void keysAreCaseSensitive() {
+        rejected("WSS.PORT", "1");
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.port, abc", "wss.port, 5e4", "wss.port, 50000.0", "wss.port, 0x10",
+        "usarsim.port, seven", "wss.chunkSize, lots",
+        "distance.cutoff, low", "distance.pd0, '-49,67'", "distance.n, two",
+        "distance.d0, 2m", "obstacle.attenuation, six", "obstacle.cacheDistance, one",
+        "distance.cutoff, NaN", "distance.n, Infinity", "distance.pd0, -Infinity",
+    })
+    void notANumber(String key, String value) {
+        rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.port, 70000", "wss.port, 65536", "wss.port, -1",
+        "usarsim.port, 0", "usarsim.port, 65536",
+        "wss.chunkSize, 0", "wss.chunkSize, 16777217",
+        "distance.n, 0", "distance.n, -1",
+        "distance.d0, -1", "distance.d0, 0",
+        "obstacle.attenuation, -1", "obstacle.cacheDistance, -0.5",
+    })
+    void outOfRange(String key, String value) {
+        rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({"wss.eventLog, yes", "wss.eventLog, 1", "wss.matchSourceAddress, on", "wss.matchSourceAddress, nope"})
+    void badBoolean(String key, String value) {
+        rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({"wss.logLevel, info", "wss.logLevel, DEBUG", "wss.logLevel, ALL", "wss.logLevel, 800"})
+    void badLogLevel(String key, String value) {
+        rejected(key, value);
+    }
+
+    @Test
+    void emptyUsarsimHost() {
+        rejected("usarsim.host", "");
+        rejected("usarsim.host", "   ");
+        rejected("usarsim.host", "my host");
+    }
+
+    @Test
+    void emptyValues() {
+        rejected("wss.model", "");
+        rejected("wss.bindAddress", "");
+        rejected("wss.port", "");
+        rejected("distance.n", "");
+    }
+
+    @Test
+    void badValueInAFile() throws Exception {
+        Path file = write("wss.port=0\nwss.port=70000\n");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        assertTrue(e.getMessage().contains("wss.port"), e.getMessage());
+        assertTrue(e.getMessage().contains("70000"), e.getMessage());
+        assertTrue(e.getMessage().contains(file.toString()), "names the file: " + e.getMessage());
+    }
+
+    @Test
+    void distanceNZeroInAFile() throws Exception {
+        Path file = write("distance.n=0\n");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        assertTrue(e.getMessage().contains("distance.n = '0'"), e.getMessage());
+    }
+
+    @Test
+    void missingFile() {
+        Path file = dir.resolve("absent.properties");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        assertTrue(e.getMessage().contains(file.toString()), e.getMessage());
+    }
+
+    @Test
+    void malformedEscapeInAFile() throws Exception {
+        Path file = write("usarsim.host=\\uZZZZ\n");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        assertTrue(e.getMessage().contains(file.toString()), e.getMessage());
+    }
+}

@@ -5,6 +5,7 @@ import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 
 /**
@@ -17,10 +18,13 @@ final class PortListener implements Runnable {
 
     private static final Logger LOG = Logger.getLogger(PortListener.class.getName());
     private static final int BACKLOG = 128;
+    private static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(1);
 
     private final Hub hub;
     private final WssPort port;
     private final ServerSocketChannel channel;
+    /** The thread is inside accept(), where it holds the socket open. */
+    private boolean inAccept;
 
     PortListener(Hub hub, WssPort port, ServerSocketChannel channel) {
         this.hub = hub;
@@ -47,23 +51,55 @@ final class PortListener implements Runnable {
         thread.start();
     }
 
+    /**
+     * Stops listening, and returns once the socket no longer listens. Closing a channel whose
+     * thread is blocked in accept() only signals that thread; the socket is released when its
+     * accept() returns, so wait for that (it does not need the hub's lock, so this may be called
+     * under it).
+     */
     void close() {
         Closing.quietly(channel);
+        long deadline = System.nanoTime() + CLOSE_WAIT_NS;
+        synchronized (this) {
+            while (inAccept) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    LOG.warning(port + ": the accepting thread did not stop in time");
+                    return;
+                }
+                try {
+                    TimeUnit.NANOSECONDS.timedWait(this, left);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+            }
+        }
+    }
+
+    private synchronized void accepting(boolean now) {
+        inAccept = now;
+        if (!now) {
+            notifyAll();
+        }
     }
 
     @Override
     public void run() {
         while (channel.isOpen()) {
             SocketChannel socket;
+            accepting(true);
             try {
                 socket = channel.accept();
             } catch (IOException e) {
+                accepting(false);
                 if (channel.isOpen()) {
                     LOG.warning(port + ": accept failed, no longer listening: " + e);
                     close();
                 }
                 return;
             }
+            accepting(false);
             hub.accepted(port, socket);
         }
     }

@@ -1,0 +1,85 @@
+package org.usarsim.wss.hub;
+
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * A propagation model for tests: the test sets, per direction, whether a pair may connect and its
+ * strength (by default every pair may connect, at 0 dBm), and drives break, resume and kick
+ * through {@link #links()} itself. No threads, no simulator.
+ */
+final class ScriptedModel implements PropagationModel {
+
+    private final Map<String, Boolean> allowed = new ConcurrentHashMap<>();
+    private final Map<String, Double> strengths = new ConcurrentHashMap<>();
+    private volatile RobotLinkModel links;
+    private volatile WssEventListener events;
+    private volatile boolean active;
+
+    private static String key(String from, String to) {
+        return from + "\u0000" + to;
+    }
+
+    /** Whether {@code from} may connect to {@code to} from now on (one direction). */
+    void allow(String from, String to, boolean allow) {
+        allowed.put(key(from, to), allow);
+    }
+
+    /** Whether the two may connect, both directions. */
+    void allowBoth(String a, String b, boolean allow) {
+        allow(a, b, allow);
+        allow(b, a, allow);
+    }
+
+    void strength(String from, String to, double dbm) {
+        strengths.put(key(from, to), dbm);
+    }
+
+    /** The hub, as the server gave it to the model. */
+    RobotLinkModel links() {
+        return links;
+    }
+
+    /** The event listener the server gave the model. */
+    WssEventListener events() {
+        return events;
+    }
+
+    @Override
+    public void setRobotLinkModel(RobotLinkModel linkModel) {
+        this.links = linkModel;
+    }
+
+    @Override
+    public void setEventListener(WssEventListener listener) {
+        this.events = listener;
+    }
+
+    @Override
+    public void start() {
+        active = true;
+    }
+
+    @Override
+    public void shutdown() {
+        active = false;
+    }
+
+    @Override
+    public boolean isActive() {
+        return active;
+    }
+
+    @Override
+    public double getSignalStrengthForPair(String from, String to) {
+        return strengths.getOrDefault(key(from, to), 0.0);
+    }
+
+    @Override
+    public boolean connectionIsPossibleForPair(String from, String to) {
+        return allowed.getOrDefault(key(from, to), true);
+    }
+}

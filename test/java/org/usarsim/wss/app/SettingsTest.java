@@ -32,6 +32,7 @@ class SettingsTest {
             Map.entry("wss.eventLogDir", "."),
             Map.entry("wss.matchSourceAddress", "true"),
             Map.entry("wss.chunkSize", "65536"),
+            Map.entry("wss.socketBuffer", "4194304"),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -90,6 +91,7 @@ class SettingsTest {
         assertTrue(config.bindAddress().isAnyLocalAddress());
         assertEquals(50000, config.controlPort());
         assertEquals(65536, config.chunkSize());
+        assertEquals(4194304, config.socketBuffer());
         assertTrue(config.matchSourceAddress());
     }
 
@@ -209,7 +211,8 @@ class SettingsTest {
         properties.setProperty("wss.port", "4321");
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, false),
+        properties.setProperty("wss.socketBuffer", "0");
+        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false),
                 Settings.of(properties, "t").hubConfig());
     }
 
@@ -255,7 +258,7 @@ class SettingsTest {
     @CsvSource({
         "wss.port, 70000", "wss.port, 65536", "wss.port, -1",
         "usarsim.port, 0", "usarsim.port, 65536",
-        "wss.chunkSize, 0", "wss.chunkSize, 16777217",
+        "wss.chunkSize, 0", "wss.chunkSize, 16777217", "wss.socketBuffer, -1", "wss.socketBuffer, 268435457",
         "distance.n, 0", "distance.n, -1",
         "distance.d0, -1", "distance.d0, 0",
         "obstacle.attenuation, -1", "obstacle.cacheDistance, -0.5",

@@ -14,7 +14,7 @@ final class TestHub implements AutoCloseable {
     }
 
     TestHub(PropagationModel model, boolean matchSourceAddress, int chunkSize) throws Exception {
-        hub = new Hub(new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, matchSourceAddress), model);
+        hub = new Hub(new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress), model);
         hub.start();
     }
 

@@ -38,6 +38,7 @@ final class Settings {
         KEYS.put("wss.eventLogDir", new Key(".", "a directory", v -> !v.isEmpty()));
         KEYS.put("wss.matchSourceAddress", new Key("true", "true or false", Settings::isBoolean));
         KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 16777216", v -> isInt(v, 1, 16 * 1024 * 1024)));
+        KEYS.put("wss.socketBuffer", new Key("4194304", "a whole number of bytes from 0 to 268435456 (0: the OS decides)", v -> isInt(v, 0, 256 * 1024 * 1024)));
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
         KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));
         KEYS.put("usarsim.port", new Key("7435", "a port number from 1 to 65535", v -> isInt(v, 1, 65535)));
@@ -114,7 +115,8 @@ final class Settings {
     HubConfig hubConfig() {
         try {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
-                    Integer.parseInt(get("wss.chunkSize")), Boolean.parseBoolean(get("wss.matchSourceAddress")));
+                    Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
+                    Boolean.parseBoolean(get("wss.matchSourceAddress")));
         } catch (UnknownHostException e) {
             throw new IllegalStateException("wss.bindAddress was checked", e);
         }

@@ -23,7 +23,7 @@ import org.usarsim.wss.model.WssEventListener;
 
 /**
  * The server: the registry of robots, their WSS ports and the links through them. Control
- * sessions and the port acceptor call in; the propagation model calls in as a {@link RobotLinkModel}.
+ * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
  *
  * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
  * while it is held (a model may call back in from its own thread), and no I/O but binding and
@@ -44,6 +44,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final HubConfig config;
     private final PropagationModel model;
     private final EventFanOut events = new EventFanOut();
+    private final SocketBuffers socketBuffers;
     private final Object lock = new Object();
     private final Map<String, Robot> robots = new HashMap<>();
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
@@ -54,6 +55,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
         this.model = model;
+        this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         events.add(new EventLogger());
     }
 
@@ -238,7 +240,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    // ---- called by the port acceptor and links ----
+    // ---- called by the port listeners and links ----
 
     /** A connection arrived on a WSS port: forward it, or close it at once and say why. */
     void accepted(WssPort port, SocketChannel socket) {
@@ -265,7 +267,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             try {
                 link = new Link(this, port, socket, new InetSocketAddress(target.address(), key.targetPort()),
-                        config.chunkSize(), events);
+                        config.chunkSize(), socketBuffers, events);
             } catch (IOException e) {
                 LOG.warning(port + ": could not open a socket to the target: " + e.getMessage());
                 Closing.quietly(socket);

@@ -9,7 +9,9 @@ import java.net.InetAddress;
  *                           (the wildcard address: every interface)
  * @param controlPort        the control port; 0 lets the OS choose
  * @param chunkSize          the most bytes a link reads and writes at a time, each way
+ * @param socketBuffer       the send and receive buffer size of both sockets of a link; 0 leaves it to the OS
  * @param matchSourceAddress accept a connection on a WSS port only from the source robot's control address
  */
-public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, boolean matchSourceAddress) {
+public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
+        boolean matchSourceAddress) {
 }

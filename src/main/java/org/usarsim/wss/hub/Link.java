@@ -31,6 +31,7 @@ final class Link implements Runnable {
     private final InetSocketAddress targetAddress;
     private final int outgoingPort;
     private final int chunkSize;
+    private final SocketBuffers buffers;
     private final WssEventListener events;
     private final Hub hub;
     private final Selector selector;
@@ -38,13 +39,14 @@ final class Link implements Runnable {
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
-            WssEventListener events) throws IOException {
+            SocketBuffers buffers, WssEventListener events) throws IOException {
         this.hub = hub;
         this.port = port;
         this.key = port.key;
         this.source = source;
         this.targetAddress = targetAddress;
         this.chunkSize = chunkSize;
+        this.buffers = buffers;
         this.events = events;
         SocketChannel outgoing = SocketChannel.open();
         Selector opened = null;
@@ -117,6 +119,7 @@ final class Link implements Runnable {
 
     private void forward() throws IOException {
         for (SocketChannel channel : new SocketChannel[] {source, target}) {
+            buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             channel.configureBlocking(false);
         }
@@ -125,6 +128,8 @@ final class Link implements Runnable {
         SelectionKey sourceKey = source.register(selector, SelectionKey.OP_READ);
         SelectionKey targetKey = target.register(selector, SelectionKey.OP_READ);
         while (!closed.get()) {
+            up.coalesce(false);
+            down.coalesce(false);
             selector.select();
             boolean sourceReady = sourceKey.isValid() && selector.selectedKeys().contains(sourceKey);
             boolean targetReady = targetKey.isValid() && selector.selectedKeys().contains(targetKey);
@@ -171,6 +176,8 @@ final class Link implements Runnable {
         private final ByteBuffer buffer = ByteBuffer.allocateDirect(chunkSize);
         /** The buffer holds read bytes not yet written. */
         private boolean pending;
+        /** Nagle's algorithm is on for the output (see {@link #coalesce}). */
+        private boolean coalescing;
         boolean ended;
 
         Direction(SocketChannel in, SocketChannel out, String fromRobot, String toRobot) {
@@ -184,9 +191,13 @@ final class Link implements Runnable {
             return pending;
         }
 
-        /** Reads and writes chunks until the input is drained, the output is full, or the turn is over. */
+        /**
+         * Reads and writes chunks while each read fills a whole chunk (more is probably right
+         * behind it), until the output is full or the turn is over. A shorter read means the
+         * input is drained for now, so the link goes back to waiting without asking again.
+         */
         void move() throws IOException {
-            for (int i = 0; i < CHUNKS_PER_TURN && !pending(); i++) {
+            for (int i = 0; i < CHUNKS_PER_TURN && !pending; i++) {
                 int read = in.read(buffer);
                 if (read < 0) {
                     ended = true;
@@ -195,10 +206,28 @@ final class Link implements Runnable {
                 if (read == 0) {
                     return;
                 }
+                boolean full = read == buffer.capacity();
+                coalesce(full);
                 buffer.flip();
                 pending = true;
                 events.dataSent(fromRobot, toRobot, read);
                 flush();
+                if (!full) {
+                    return;
+                }
+            }
+        }
+
+        /**
+         * While a burst of full chunks passes, lets the OS hold the last partial segment of one
+         * chunk until the next chunk fills it (Nagle's algorithm), instead of sending a tiny
+         * segment per chunk. Off again for any shorter read and before the link waits: turning
+         * TCP_NODELAY back on sends what is held at once, so no message waits for an ACK.
+         */
+        void coalesce(boolean on) throws IOException {
+            if (on != coalescing) {
+                out.setOption(StandardSocketOptions.TCP_NODELAY, !on);
+                coalescing = on;
             }
         }
 

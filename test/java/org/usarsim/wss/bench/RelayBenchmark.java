@@ -1,0 +1,478 @@
+package org.usarsim.wss.bench;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Measures the WSS against socat and direct loopback, in one run on one machine, and prints
+ * the results as ratios. Needs socat and iperf3 on the PATH. See docs/performance.md.
+ *
+ * <pre>
+ * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RelayBenchmark [--seconds 5] [--runs 3] [--only NAME]
+ * </pre>
+ * NAME is one of throughput, latency, split, many.
+ */
+public final class RelayBenchmark {
+
+    private static final Pattern RECEIVED_BPS = Pattern.compile("\"sum_received\"\\s*:\\s*\\{[^}]*\"bits_per_second\"\\s*:\\s*([0-9.eE+]+)");
+
+    private final int seconds;
+    private final int runs;
+    private final List<Process> children = new ArrayList<>();
+
+    private RelayBenchmark(int seconds, int runs) {
+        this.seconds = seconds;
+        this.runs = runs;
+    }
+
+    public static void main(String[] args) throws Exception {
+        int seconds = 5;
+        int runs = 3;
+        String only = null;
+        for (int i = 0; i < args.length; i++) {
+            switch (args[i]) {
+                case "--seconds" -> seconds = Integer.parseInt(args[++i]);
+                case "--runs" -> runs = Integer.parseInt(args[++i]);
+                case "--only" -> only = args[++i];
+                default -> throw new IllegalArgumentException("unknown argument " + args[i]);
+            }
+        }
+        RelayBenchmark benchmark = new RelayBenchmark(seconds, runs);
+        Runtime.getRuntime().addShutdownHook(new Thread(benchmark::killChildren));
+        System.out.printf("WSS relay benchmark: %d cores, %s, %s%n", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), java.time.LocalDateTime.now());
+        if (only == null || only.equals("throughput")) {
+            benchmark.throughput();
+        }
+        if (only == null || only.equals("latency")) {
+            benchmark.latency();
+        }
+        if (only == null || only.equals("split")) {
+            benchmark.splitWrites();
+        }
+        if (only == null || only.equals("many")) {
+            benchmark.manyConnections();
+        }
+        benchmark.killChildren();
+        System.exit(0);
+    }
+
+    // ---- throughput: iperf3 through each path ----
+
+    private void throughput() throws Exception {
+        System.out.printf("%n## Throughput of one stream (iperf3, %d s, median of %d runs)%n%n", seconds, runs);
+        try (WssProcess wss = WssProcess.start(); WssProcess osBuffers = WssProcess.start("wss.socketBuffer=0");
+                WssProcess wss2k = WssProcess.start("wss.chunkSize=2048")) {
+            String[] names = {"direct loopback", "socat -b 65536", "WSS, default settings", "WSS, wss.socketBuffer=0 (OS sizes buffers)",
+                "socat -b 2048", "WSS, wss.chunkSize=2048"};
+            double[][] results = new double[names.length][runs];
+            for (int run = 0; run < runs; run++) {
+                results[0][run] = iperfDirect();
+                results[1][run] = iperfThroughSocat(65536);
+                results[2][run] = iperfThroughWss(wss);
+                results[3][run] = iperfThroughWss(osBuffers);
+                results[4][run] = iperfThroughSocat(2048);
+                results[5][run] = iperfThroughWss(wss2k);
+            }
+            double direct = median(results[0]);
+            System.out.println("| path | MB/s (median) | runs | vs socat (same chunk) | vs direct |");
+            System.out.println("|---|---|---|---|---|");
+            for (int i = 0; i < names.length; i++) {
+                double m = median(results[i]);
+                String vsSocat = i == 0 ? "" : String.format(Locale.ROOT, "%.2fx", m / median(results[i < 4 ? 1 : 4]));
+                System.out.printf(Locale.ROOT, "| %s | %.0f | %s | %s | %.2fx |%n", names[i], m, runs(results[i]), vsSocat, m / direct);
+            }
+        }
+    }
+
+    private double iperfDirect() throws Exception {
+        int port = freePort();
+        Process server = iperfServer(port);
+        try {
+            return iperfClient(port);
+        } finally {
+            stop(server);
+        }
+    }
+
+    private double iperfThroughSocat(int buffer) throws Exception {
+        int port = freePort();
+        int relay = freePort();
+        Process server = iperfServer(port);
+        Process socat = socat(buffer, relay, port);
+        try {
+            return iperfClient(relay);
+        } finally {
+            stop(socat);
+            stop(server);
+        }
+    }
+
+    private double iperfThroughWss(WssProcess wss) throws Exception {
+        int port = freePort();
+        Process server = iperfServer(port);
+        try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", port);
+                ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
+            return iperfClient(source.dns("Sink"));
+        } finally {
+            stop(server);
+        }
+    }
+
+    private Process iperfServer(int port) throws Exception {
+        Process server = child("iperf3", "-s", "-1", "-B", "127.0.0.1", "-p", Integer.toString(port));
+        waitListening(port);
+        return server;
+    }
+
+    /** MB/s received, from iperf3's JSON. */
+    private double iperfClient(int port) throws Exception {
+        Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J");
+        String json = new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        client.waitFor(seconds + 30L, TimeUnit.SECONDS);
+        Matcher matcher = RECEIVED_BPS.matcher(json);
+        if (!matcher.find()) {
+            throw new IOException("no iperf3 result: " + json);
+        }
+        return Double.parseDouble(matcher.group(1)) / 8 / 1e6;
+    }
+
+    // ---- latency: 64-byte round trips ----
+
+    private void latency() throws Exception {
+        int rounds = 20_000;
+        System.out.printf("%n## Round trip of a 64-byte message (%d rounds per run, best median of %d runs)%n%n", rounds, runs);
+        try (EchoServer echo = new EchoServer(64); WssProcess wss = WssProcess.start();
+                ControlClient echoRobot = new ControlClient(wss.controlPort, "Echo", echo.port());
+                ControlClient client = new ControlClient(wss.controlPort, "Client", 1)) {
+            int relay = freePort();
+            Process socat = socat(65536, relay, echo.port());
+            int wssPort = client.dns("Echo");
+            String[] names = {"direct loopback", "socat -b 65536", "WSS"};
+            int[] ports = {echo.port(), relay, wssPort};
+            long[][] best = new long[names.length][];
+            for (int run = 0; run < runs; run++) {
+                for (int i = 0; i < names.length; i++) {
+                    long[] rtts = roundTrips(ports[i], rounds, false, 2000);
+                    if (best[i] == null || percentile(rtts, 50) < percentile(best[i], 50)) {
+                        best[i] = rtts;
+                    }
+                }
+            }
+            stop(socat);
+            double directMedian = percentile(best[0], 50) / 1e3;
+            System.out.println("| path | median µs | p99 µs | added to direct (median) | added vs socat's |");
+            System.out.println("|---|---|---|---|---|");
+            double socatAdded = percentile(best[1], 50) / 1e3 - directMedian;
+            for (int i = 0; i < names.length; i++) {
+                double median = percentile(best[i], 50) / 1e3;
+                double added = median - directMedian;
+                System.out.printf(Locale.ROOT, "| %s | %.1f | %.1f | %s | %s |%n", names[i], median, percentile(best[i], 99) / 1e3,
+                        i == 0 ? "" : String.format(Locale.ROOT, "%.1f µs", added),
+                        i == 2 ? String.format(Locale.ROOT, "%.2fx", added / socatAdded) : "");
+            }
+        }
+    }
+
+    /**
+     * Round-trip times in ns of {@code rounds} 64-byte messages, after {@code warmUp} unmeasured ones
+     * on the same connection (a server that has run a while is warm); split: written as 16 + 48 bytes.
+     */
+    private static long[] roundTrips(int port, int rounds, boolean split, int warmUp) throws IOException {
+        try (Socket socket = new Socket()) {
+            socket.setTcpNoDelay(true);
+            socket.connect(new InetSocketAddress("127.0.0.1", port), 5000);
+            socket.setSoTimeout(10_000);
+            OutputStream out = socket.getOutputStream();
+            InputStream in = socket.getInputStream();
+            byte[] message = new byte[64];
+            byte[] reply = new byte[64];
+            long[] rtts = new long[rounds];
+            for (int i = -warmUp; i < rounds; i++) {
+                message[0] = (byte) i;
+                long start = System.nanoTime();
+                if (split) {
+                    out.write(message, 0, 16);
+                    out.write(message, 16, 48);
+                } else {
+                    out.write(message);
+                }
+                if (in.readNBytes(reply, 0, 64) != 64 || reply[0] != message[0]) {
+                    throw new IOException("lost or wrong echo on port " + port);
+                }
+                if (i >= 0) {
+                    rtts[i] = System.nanoTime() - start;
+                }
+            }
+            return rtts;
+        }
+    }
+
+    // ---- split writes: 16 + 48 bytes ----
+
+    private void splitWrites() throws Exception {
+        int rounds = 300;
+        System.out.printf("%n## A 64-byte message written as 16 + 48 bytes and echoed (%d rounds after 5000 unmeasured)%n%n", rounds);
+        try (EchoServer echo = new EchoServer(64); WssProcess wss = WssProcess.start();
+                ControlClient echoRobot = new ControlClient(wss.controlPort, "Echo", echo.port());
+                ControlClient client = new ControlClient(wss.controlPort, "Client", 1)) {
+            int relay = freePort();
+            Process socat = socat(65536, relay, echo.port());
+            String[] names = {"direct loopback", "socat -b 65536", "WSS"};
+            int[] ports = {echo.port(), relay, client.dns("Echo")};
+            System.out.println("| path | median µs | p99 µs | worst ms | rounds over 5 ms |");
+            System.out.println("|---|---|---|---|---|");
+            for (int i = 0; i < names.length; i++) {
+                long[] rtts = roundTrips(ports[i], rounds, true, 5000);
+                long over = Arrays.stream(rtts).filter(t -> t > 5_000_000).count();
+                System.out.printf(Locale.ROOT, "| %s | %.1f | %.1f | %.2f | %d |%n", names[i], percentile(rtts, 50) / 1e3,
+                        percentile(rtts, 99) / 1e3, Arrays.stream(rtts).max().getAsLong() / 1e6, over);
+            }
+            stop(socat);
+        }
+    }
+
+    // ---- many: 100 robots, 10 connections each ----
+
+    private void manyConnections() throws Exception {
+        int robots = 100;
+        int peers = 10;
+        int messageSize = 1024;
+        System.out.printf("%n## %d robots, each with connections to %d others (%d forwarded connections), %d-byte echoes for %d s%n%n",
+                robots, peers, robots * peers, messageSize, seconds);
+        List<EchoServer> echoes = new ArrayList<>();
+        for (int i = 0; i < robots; i++) {
+            echoes.add(new EchoServer(messageSize));
+        }
+        try (WssProcess wss = WssProcess.start()) {
+            ProcessStats atStart = ProcessStats.of(wss.pid());
+            List<ControlClient> controls = new ArrayList<>();
+            int[][] targets = new int[robots * peers][];
+            for (int i = 0; i < robots; i++) {
+                controls.add(new ControlClient(wss.controlPort, "R" + i, echoes.get(i).port()));
+            }
+            int[] wssPorts = new int[robots * peers];
+            int[] directPorts = new int[robots * peers];
+            for (int i = 0; i < robots; i++) {
+                for (int k = 1; k <= peers; k++) {
+                    int target = (i + k) % robots;
+                    wssPorts[i * peers + k - 1] = controls.get(i).dns("R" + target);
+                    directPorts[i * peers + k - 1] = echoes.get(target).port();
+                }
+            }
+            ProcessStats registered = ProcessStats.of(wss.pid());
+            Load direct = load(directPorts, messageSize, null);
+            Load relayed = load(wssPorts, messageSize, wss);
+            ProcessStats after = awaitSettled(wss.pid(), registered);
+            for (ControlClient control : controls) {
+                control.close();
+            }
+            ProcessStats deregistered = awaitSettled(wss.pid(), atStart);
+            System.out.println("| path | connections | errors | MB/s (both ways) | p99 round trip ms | vs direct |");
+            System.out.println("|---|---|---|---|---|---|");
+            System.out.printf(Locale.ROOT, "| direct loopback | %d | %d | %.1f | %.2f | |%n", directPorts.length, direct.errors, direct.mbPerSecond(), direct.p99Ms());
+            System.out.printf(Locale.ROOT, "| WSS | %d | %d | %.1f | %.2f | %.2fx throughput, %.2fx p99 |%n", wssPorts.length, relayed.errors,
+                    relayed.mbPerSecond(), relayed.p99Ms(), relayed.mbPerSecond() / direct.mbPerSecond(), relayed.p99Ms() / direct.p99Ms());
+            System.out.println();
+            System.out.println("| WSS process | server threads | all threads | descriptors | resident MiB |");
+            System.out.println("|---|---|---|---|---|");
+            row("at start", atStart);
+            row("100 robots registered, 1000 WSS ports listening", registered);
+            row("during the run (1000 links)", relayed.during);
+            row("after every connection closed", after);
+            row("after every robot left", deregistered);
+            System.out.println();
+            System.out.println("Bytes lost or changed: " + (relayed.errors == 0 ? "none" : relayed.errors + " connections failed")
+                    + "; every echo is checked byte for byte.");
+        } finally {
+            for (EchoServer echo : echoes) {
+                echo.close();
+            }
+        }
+    }
+
+    private static void row(String when, ProcessStats stats) {
+        System.out.printf(Locale.ROOT, "| %s | %d | %d | %d | %d |%n", when, stats.serverThreads(), stats.threads(), stats.descriptors(),
+                stats.residentKiB() / 1024);
+    }
+
+    /** Waits (with a deadline) until the server's own threads are back to the reference's count, then reads its stats. */
+    private static ProcessStats awaitSettled(long pid, ProcessStats reference) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        ProcessStats stats = ProcessStats.of(pid);
+        while (stats.serverThreads() > reference.serverThreads() && System.nanoTime() < deadline) {
+            Thread.sleep(50);
+            stats = ProcessStats.of(pid);
+        }
+        return stats;
+    }
+
+    private record Load(long bytes, double seconds, long[] rtts, int errors, ProcessStats during) {
+        double mbPerSecond() {
+            return bytes / seconds / 1e6;
+        }
+
+        double p99Ms() {
+            return percentile(rtts, 99) / 1e6;
+        }
+    }
+
+    /** One thread per connection, each echoing messages for the run's seconds; all at once. */
+    private Load load(int[] ports, int messageSize, WssProcess wss) throws Exception {
+        int n = ports.length;
+        Socket[] sockets = new Socket[n];
+        for (int i = 0; i < n; i++) {
+            sockets[i] = new Socket();
+            sockets[i].setTcpNoDelay(true);
+            sockets[i].connect(new InetSocketAddress("127.0.0.1", ports[i]), 10_000);
+            sockets[i].setSoTimeout(20_000);
+        }
+        AtomicLong bytes = new AtomicLong();
+        long[][] rtts = new long[n][];
+        int[] errors = new int[1];
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        List<Thread> threads = new ArrayList<>();
+        for (int i = 0; i < n; i++) {
+            int index = i;
+            Thread thread = new Thread(null, () -> {
+                long[] times = new long[1 << 16];
+                int count = 0;
+                byte[] message = new byte[messageSize];
+                byte[] reply = new byte[messageSize];
+                try {
+                    OutputStream out = sockets[index].getOutputStream();
+                    InputStream in = sockets[index].getInputStream();
+                    for (long seq = 0; System.nanoTime() < end; seq++) {
+                        Arrays.fill(message, (byte) (seq * 31 + index));
+                        long start = System.nanoTime();
+                        out.write(message);
+                        if (in.readNBytes(reply, 0, messageSize) != messageSize || !Arrays.equals(message, reply)) {
+                            throw new IOException("lost or changed bytes");
+                        }
+                        if (count < times.length) {
+                            times[count++] = System.nanoTime() - start;
+                        }
+                        bytes.addAndGet(2L * messageSize);
+                    }
+                } catch (IOException e) {
+                    synchronized (errors) {
+                        errors[0]++;
+                    }
+                }
+                rtts[index] = Arrays.copyOf(times, count);
+            }, "load " + i, 256 * 1024);
+            threads.add(thread);
+        }
+        long start = System.nanoTime();
+        threads.forEach(Thread::start);
+        ProcessStats during = null;
+        if (wss != null) {
+            Thread.sleep(TimeUnit.SECONDS.toMillis(seconds) / 2);
+            during = ProcessStats.of(wss.pid());
+        }
+        for (Thread thread : threads) {
+            thread.join();
+        }
+        double elapsed = (System.nanoTime() - start) / 1e9;
+        for (Socket socket : sockets) {
+            socket.close();
+        }
+        long[] all = Arrays.stream(rtts).flatMapToLong(Arrays::stream).toArray();
+        return new Load(bytes.get(), elapsed, all, errors[0], during);
+    }
+
+    // ---- processes and helpers ----
+
+    private Process socat(int buffer, int listenPort, int targetPort) throws Exception {
+        Process socat = child("socat", "-b", Integer.toString(buffer),
+                "TCP-LISTEN:" + listenPort + ",bind=127.0.0.1,reuseaddr,fork", "TCP:127.0.0.1:" + targetPort);
+        waitListening(listenPort);
+        return socat;
+    }
+
+    /** Starts a helper program; only an iperf3 client's output is read, the rest is dropped (socat reports every connection iperf3 ends as an error). */
+    private Process child(String... command) throws IOException {
+        boolean readOutput = command[0].equals("iperf3") && command[1].equals("-c");
+        ProcessBuilder builder = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.DISCARD);
+        if (!readOutput) {
+            builder.redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        }
+        Process process = builder.start();
+        children.add(process);
+        return process;
+    }
+
+    private void stop(Process process) throws InterruptedException {
+        process.destroy();
+        if (!process.waitFor(5, TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+        }
+        children.remove(process);
+    }
+
+    private void killChildren() {
+        for (Process process : new ArrayList<>(children)) {
+            process.destroyForcibly();
+        }
+    }
+
+    private static int freePort() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1"))) {
+            return socket.getLocalPort();
+        }
+    }
+
+    /** Waits until something listens on 127.0.0.1:port, reading /proc/net/tcp (a probe connection would disturb iperf3). */
+    private static void waitListening(int port) throws Exception {
+        String local = String.format("0100007F:%04X", port);
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (System.nanoTime() < deadline) {
+            for (String line : Files.readAllLines(Path.of("/proc/net/tcp"))) {
+                String[] fields = line.trim().split("\\s+");
+                if (fields.length > 3 && fields[1].equals(local) && fields[3].equals("0A")) {
+                    return;
+                }
+            }
+            Thread.sleep(10);
+        }
+        throw new IOException("nothing listens on port " + port);
+    }
+
+    static double median(double[] values) {
+        double[] sorted = values.clone();
+        Arrays.sort(sorted);
+        return sorted[sorted.length / 2];
+    }
+
+    static double percentile(long[] values, double p) {
+        long[] sorted = values.clone();
+        Arrays.sort(sorted);
+        int index = (int) Math.min(sorted.length - 1, Math.max(0, Math.ceil(p / 100.0 * sorted.length) - 1));
+        return sorted[index];
+    }
+
+    private static String runs(double[] values) {
+        StringBuilder text = new StringBuilder();
+        for (double value : values) {
+            text.append(text.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.0f", value));
+        }
+        return text.toString();
+    }
+}

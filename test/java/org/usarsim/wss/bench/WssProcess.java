@@ -1,0 +1,84 @@
+package org.usarsim.wss.bench;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/** The WSS as users run it: a separate JVM, headless, on 127.0.0.1 with an OS-chosen control port. */
+final class WssProcess implements AutoCloseable {
+
+    private static final Pattern LISTENING = Pattern.compile("listening for robots on [^:]+:(\\d+)");
+
+    final Process process;
+    final int controlPort;
+
+    private WssProcess(Process process, int controlPort) {
+        this.process = process;
+        this.controlPort = controlPort;
+    }
+
+    /** Starts the server from the compiled classes with these extra properties. */
+    static WssProcess start(String... properties) throws IOException, InterruptedException {
+        Path config = Files.createTempFile("wss-bench", ".properties");
+        List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
+        lines.addAll(List.of(properties));
+        Files.write(config, lines);
+        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
+        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", classes, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString())
+                .redirectErrorStream(true).start();
+        BlockingQueue<String> out = new LinkedBlockingQueue<>();
+        Thread reader = new Thread(() -> {
+            try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
+                String line;
+                while ((line = in.readLine()) != null) {
+                    out.add(line);
+                    if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
+                        System.err.println("  [wss] " + line);
+                    }
+                }
+            } catch (IOException ignored) {
+                // The process ended.
+            }
+        }, "wss-output");
+        reader.setDaemon(true);
+        reader.start();
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (System.nanoTime() < deadline) {
+            String line = out.poll(100, TimeUnit.MILLISECONDS);
+            if (line != null) {
+                Matcher matcher = LISTENING.matcher(line);
+                if (matcher.find()) {
+                    return new WssProcess(process, Integer.parseInt(matcher.group(1)));
+                }
+            }
+            if (!process.isAlive()) {
+                break;
+            }
+        }
+        process.destroyForcibly();
+        throw new IOException("the WSS did not start");
+    }
+
+    long pid() {
+        return process.pid();
+    }
+
+    @Override
+    public void close() throws InterruptedException {
+        process.destroy();
+        if (!process.waitFor(10, TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+        }
+    }
+}

@@ -32,7 +32,8 @@ class EventLogTest {
         CsvEventLog log = CsvEventLog.create(dir);
         assertTrue(log.file().getFileName().toString().matches("log-\\d{4}\\.\\d\\d\\.\\d\\d-\\d\\d\\.\\d\\d\\.\\d\\d\\.\\d{3}\\.txt"),
                 log.file().toString());
-        try (TestHub server = new TestHub()) {
+        ScriptedModel model = new ScriptedModel();
+        try (TestHub server = new TestHub(model, true, 65536)) {
             server.hub.addListener(log);
             try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
                 ServerSocket r1Accepts = r1.listen();
@@ -46,9 +47,10 @@ class EventLogTest {
                 Wait.until("the link is closed", () -> ForwardingTest.linkThreads() == 0);
                 r1.control.close();
                 Wait.until("R1's deregistration is logged", () -> logged(log, "DEREGISTERED,"));
-                log.connectionOutOfRange("R1", "R2", -95.5, 120.25);
-                log.connectionInRange("R1", "R2");
-                log.robotOutOfBattery("R2");
+                // The events a model reports, through the listener the hub gave it.
+                model.events().connectionOutOfRange("R1", "R2", -95.5, 120.25);
+                model.events().connectionInRange("R1", "R2");
+                model.events().robotOutOfBattery("R2");
                 log.close();
 
                 String time = "\\d\\d:\\d\\d:\\d\\d\\.\\d{3}";

@@ -3,6 +3,7 @@ package org.usarsim.wss.app;
 import java.io.IOException;
 import java.nio.file.Path;
 import java.util.concurrent.CountDownLatch;
+import java.util.logging.Logger;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.model.ModelCatalog;
@@ -24,9 +25,11 @@ public final class Main {
 
     public static void main(String[] args) {
         Path config = null;
+        boolean headless = false;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--headless":
+                    headless = true;
                     break;
                 case "--config":
                     if (i + 1 == args.length) {
@@ -42,10 +45,10 @@ public final class Main {
                     fail(2, "unknown argument " + args[i] + "\n" + USAGE);
             }
         }
-        runHeadless(config);
+        runHeadless(config, headless);
     }
 
-    private static void runHeadless(Path config) {
+    private static void runHeadless(Path config, boolean asked) {
         Settings settings;
         try {
             settings = config == null ? Settings.defaults() : Settings.load(config);
@@ -54,6 +57,9 @@ public final class Main {
             return;
         }
         LogSetup.toStandardOutput(settings.logLevel());
+        if (!asked) {
+            Logger.getLogger(Main.class.getName()).info("there is no window yet: running headless");
+        }
         ModelCatalog catalog = ModelCatalog.load(Main.class.getClassLoader());
         PropagationModel model = catalog.find(settings.modelName());
         if (model == null) {

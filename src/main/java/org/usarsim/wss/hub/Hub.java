@@ -279,7 +279,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     void linkEstablished(Link link) {
-        events.connectionEstablished(link.key.from(), link.key.to(), link.key.targetPort());
+        PortKey key = link.port.key;
+        events.connectionEstablished(key.from(), key.to(), key.targetPort());
     }
 
     void linkClosed(Link link, boolean wasEstablished) {
@@ -287,7 +288,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             link.port.links.remove(link);
         }
         if (wasEstablished) {
-            events.connectionTerminated(link.key.from(), link.key.to(), link.key.targetPort());
+            PortKey key = link.port.key;
+            events.connectionTerminated(key.from(), key.to(), key.targetPort());
         }
     }
 

@@ -24,8 +24,8 @@ final class Link implements Runnable {
     /** How many chunks one direction moves before the other gets a turn. */
     private static final int CHUNKS_PER_TURN = 16;
 
-    final PortKey key;
     final WssPort port;
+    private final PortKey key;
     private final SocketChannel source;
     private final SocketChannel target;
     private final InetSocketAddress targetAddress;

@@ -164,7 +164,7 @@ class SettingsTest {
     @ParameterizedTest
     @CsvSource({
         "wss.port, 0", "wss.port, 65535",
-        "wss.chunkSize, 16777216",
+        "wss.chunkSize, 1048576",
         "usarsim.port, 1",
         "distance.n, 0.001", "distance.d0, 1e-3",
         "obstacle.attenuation, 0", "obstacle.cacheDistance, 0",
@@ -258,7 +258,7 @@ class SettingsTest {
     @CsvSource({
         "wss.port, 70000", "wss.port, 65536", "wss.port, -1",
         "usarsim.port, 0", "usarsim.port, 65536",
-        "wss.chunkSize, 0", "wss.chunkSize, 16777217", "wss.socketBuffer, -1", "wss.socketBuffer, 268435457",
+        "wss.chunkSize, 0", "wss.chunkSize, 1048577", "wss.socketBuffer, -1", "wss.socketBuffer, 268435457",
         "distance.n, 0", "distance.n, -1",
         "distance.d0, -1", "distance.d0, 0",
         "obstacle.attenuation, -1", "obstacle.cacheDistance, -0.5",

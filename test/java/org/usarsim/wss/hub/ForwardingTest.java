@@ -203,6 +203,51 @@ class ForwardingTest {
     }
 
     @Test
+    void aSideThatClosesStillGetsEverythingToTheOtherWhileThatOneKeepsTalking() throws Exception {
+        try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
+            ServerSocket r1Accepts = r1.listen();
+            r1.init("R1", r1Accepts.getLocalPort());
+            r2.init("R2", 6000);
+            byte[] data = randomBytes(6 * 1024 * 1024, 7);
+            Socket out = r2.connect(r2.dns("R1", 0));
+            try (Socket in = r1Accepts.accept()) {
+                in.setSoTimeout(TestRobot.TIMEOUT_MS);
+                // R2 sends a big message and ends its stream (reading what comes until its end, as a
+                // client that closes cleanly does); R1 keeps sending heartbeats the link no longer reads.
+                pool.submit(() -> {
+                    out.getInputStream().transferTo(java.io.OutputStream.nullOutputStream());
+                    out.close();
+                    return null;
+                });
+                pool.submit(() -> {
+                    out.getOutputStream().write(data);
+                    out.shutdownOutput();
+                    return null;
+                });
+                java.util.concurrent.atomic.AtomicBoolean reading = new java.util.concurrent.atomic.AtomicBoolean(true);
+                pool.submit(() -> {
+                    byte[] heartbeat = new byte[16];
+                    while (reading.get()) {
+                        in.getOutputStream().write(heartbeat);
+                        Thread.yield();
+                    }
+                    return null;
+                });
+                ByteArrayOutputStream received = new ByteArrayOutputStream();
+                byte[] small = new byte[1024];
+                int read;
+                while ((read = in.getInputStream().read(small)) >= 0) {
+                    received.write(small, 0, read);
+                }
+                reading.set(false);
+                assertArrayEquals(data, received.toByteArray(), "everything R2 sent, then end of stream (no reset)");
+            }
+            r1Accepts.close();
+        }
+        Wait.until("every link thread ended", () -> linkThreads() == 0);
+    }
+
+    @Test
     void aTargetThatDoesNotListenGetsTheSourceClosedAtOnce() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
             ServerSocket closed = r1.listen();

@@ -519,6 +519,9 @@ class LinkLifecycleTest {
         toR1 += big.length;
         toR2 += small.length;
         first.source.close();
+        // The target gets the end of stream after the last byte, and closes its end as clients do.
+        assertEquals(-1, first.target.getInputStream().read());
+        first.target.close();
         Wait.until("the first connection terminated", () -> recorder.count("CON_TERMINATED,R2,R1," + a) == 1);
 
         // A connection R1 -> R2, closed by a break.

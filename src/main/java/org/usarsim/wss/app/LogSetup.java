@@ -27,8 +27,14 @@ final class LogSetup {
                     .append(TIME.format(LocalDateTime.ofInstant(record.getInstant(), ZoneId.systemDefault())))
                     .append(' ').append(record.getLevel().getName()).append(' ')
                     .append(formatMessage(record));
-            if (record.getThrown() != null && !formatMessage(record).contains(String.valueOf(record.getThrown().getMessage()))) {
-                line.append(" (").append(record.getThrown()).append(')');
+            Throwable thrown = record.getThrown();
+            if (thrown != null) {
+                // Still one line: the exception and where it was thrown.
+                line.append(" (").append(thrown);
+                if (thrown.getStackTrace().length > 0) {
+                    line.append(" at ").append(thrown.getStackTrace()[0]);
+                }
+                line.append(')');
             }
             return line.append(System.lineSeparator()).toString();
         }

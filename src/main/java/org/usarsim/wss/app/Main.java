@@ -99,11 +99,14 @@ public final class Main {
     }
 
     private static void stop(Hub hub, CsvEventLog eventLog) {
-        hub.close();
-        if (eventLog != null) {
-            eventLog.close();
+        try {
+            hub.close();
+            if (eventLog != null) {
+                eventLog.close();
+            }
+        } finally {
+            System.exit(0);
         }
-        System.exit(0);
     }
 
     private static void fail(int status, String message) {

@@ -37,7 +37,7 @@ final class Settings {
         KEYS.put("wss.eventLog", new Key("false", "true or false", Settings::isBoolean));
         KEYS.put("wss.eventLogDir", new Key(".", "a directory", v -> !v.isEmpty()));
         KEYS.put("wss.matchSourceAddress", new Key("true", "true or false", Settings::isBoolean));
-        KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 16777216", v -> isInt(v, 1, 16 * 1024 * 1024)));
+        KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 1048576", v -> isInt(v, 1, 1024 * 1024)));
         KEYS.put("wss.socketBuffer", new Key("4194304", "a whole number of bytes from 0 to 268435456 (0: the OS decides)", v -> isInt(v, 0, 256 * 1024 * 1024)));
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
         KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));

@@ -59,17 +59,26 @@ final class ControlListener implements Runnable {
             try {
                 channel = server.accept();
             } catch (IOException e) {
-                if (server.isOpen()) {
-                    LOG.log(Level.SEVERE, "accepting control connections failed: " + e, e);
+                if (!server.isOpen()) {
+                    return;
                 }
-                return;
+                // Out of descriptors, say: robots must still be able to connect once it passes.
+                LOG.log(Level.SEVERE, "accepting a control connection failed, trying again: " + e, e);
+                Pause.briefly();
+                continue;
             }
             ControlSession session = new ControlSession(hub, this, channel);
             sessions.add(session);
             if (!server.isOpen()) {
                 session.close();
             }
-            session.start();
+            try {
+                session.start();
+            } catch (OutOfMemoryError e) {
+                LOG.severe("no thread for the control connection from " + channel.socket().getInetAddress() + ": " + e);
+                session.close();
+                sessions.remove(session);
+            }
         }
     }
 }

@@ -7,6 +7,7 @@ import java.nio.ByteBuffer;
 import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.OptionalDouble;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
@@ -85,6 +86,9 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
             reply = answer(command);
         } catch (ProtocolException e) {
             reply = e.reply();
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, peer + ": failed to answer '" + line + "': " + e, e);
+            reply = Replies.error(Replies.INTERNAL_ERROR);
         }
         String answered = reply;
         LOG.fine(() -> peer + " " + line + " => " + answered);

@@ -50,6 +50,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
     /** Pairs the model broke and has not resumed. */
     private final Set<Pair> broken = new HashSet<>();
+    /** Set by {@link #close}: nothing registers or listens any more. */
+    private boolean closed;
     private ControlListener controlListener;
 
     public Hub(HubConfig config, PropagationModel model) {
@@ -110,6 +112,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
+            closed = true;
             for (WssPort port : ports.values()) {
                 port.release();
                 links.addAll(port.links);
@@ -134,7 +137,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         Robot robot = new Robot(name, address, acceptPorts, session);
         synchronized (lock) {
             long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
-            while (robots.containsKey(name)) {
+            while (robots.containsKey(name) && !closed) {
                 long left = deadline - System.nanoTime();
                 if (left <= 0) {
                     return false;
@@ -145,6 +148,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                     Thread.currentThread().interrupt();
                     return false;
                 }
+            }
+            if (closed) {
+                return false;
             }
             robots.put(name, robot);
             for (WssPort port : ports.values()) {
@@ -198,7 +204,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean allowed = modelAllows(from, to);
         synchronized (lock) {
             Robot target = robots.get(to);
-            if (target == null) {
+            if (closed || !robots.containsKey(from) || target == null) {
                 return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
             }
             int resolved = target.resolvePort(targetPort);
@@ -231,7 +237,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                     continue;
                 }
                 for (Link link : wssPort.links) {
-                    if (link.outgoingPort() == port) {
+                    if (link.outgoingPort() == port && !link.isClosed()) {
                         return wssPort.key.from();
                     }
                 }
@@ -243,7 +249,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     // ---- called by the port listeners and links ----
 
     /** A connection arrived on a WSS port: forward it, or close it at once and say why. */
-    void accepted(WssPort port, SocketChannel socket) {
+    void accepted(WssPort port, PortListener listener, SocketChannel socket) {
         PortKey key = port.key;
         InetAddress peer = socket.socket().getInetAddress();
         boolean allowed = modelAllows(key.from(), key.to());
@@ -252,7 +258,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             Robot source = robots.get(key.from());
             Robot target = robots.get(key.to());
             String refusal = null;
-            if (!port.listening() || source == null || target == null) {
+            if (closed || !port.listensWith(listener) || source == null || target == null) {
                 refusal = "the port no longer listens";
             } else if (config.matchSourceAddress() && !peer.equals(source.address())) {
                 refusal = "the connection came from " + peer.getHostAddress() + " but " + key.from()
@@ -275,7 +281,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             port.links.add(link);
         }
-        link.start();
+        try {
+            link.start();
+        } catch (OutOfMemoryError e) {
+            LOG.severe(port + ": no thread for a new link (" + e.getMessage() + "); closing the connection");
+            synchronized (lock) {
+                port.links.remove(link);
+            }
+            link.close();
+        }
     }
 
     void linkEstablished(Link link) {

@@ -4,10 +4,14 @@ import java.io.IOException;
 import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
+import java.nio.channels.CancelledKeyException;
+import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
 
@@ -15,12 +19,15 @@ import org.usarsim.wss.model.WssEventListener;
  * One forwarded connection: the socket a source robot opened on a WSS port, and the socket the
  * WSS opens to the target robot. Its own thread connects to the target, then waits on a
  * Selector over both channels and copies chunks each way, unchanged and in order. End of stream
- * on either side stops reading and closes both once what was read is delivered.
+ * or a reset on either side stops reading and ends both streams once what was read is written
+ * (see {@link #finish}); a side that cannot be written to any more closes both at once.
  */
 final class Link implements Runnable {
 
     private static final Logger LOG = Logger.getLogger(Link.class.getName());
     private static final int CONNECT_TIMEOUT_MS = 5000;
+    /** How long a finished link waits for both sides to end their streams. */
+    private static final long FINISH_NS = TimeUnit.SECONDS.toNanos(5);
     /** How many chunks one direction moves before the other gets a turn. */
     private static final int CHUNKS_PER_TURN = 16;
 
@@ -62,6 +69,10 @@ final class Link implements Runnable {
         this.outgoingPort = ((InetSocketAddress) outgoing.getLocalAddress()).getPort();
     }
 
+    boolean isClosed() {
+        return closed.get();
+    }
+
     /** The local port of the WSS's socket to the target: what the target sees as its peer's port. */
     int outgoingPort() {
         return outgoingPort;
@@ -92,10 +103,13 @@ final class Link implements Runnable {
             established = true;
             hub.linkEstablished(this);
             forward();
-        } catch (IOException e) {
+        } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
+            // A reset or an error on a socket, or a close from another thread: the link is over.
             if (!closed.get()) {
                 LOG.fine(() -> this + " ended: " + e);
             }
+        } catch (RuntimeException | Error e) {
+            LOG.log(Level.WARNING, this + " failed: " + e, e);
         } finally {
             close();
             Closing.quietly(selector);
@@ -121,6 +135,8 @@ final class Link implements Runnable {
         for (SocketChannel channel : new SocketChannel[] {source, target}) {
             buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
+            // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
+            channel.setOption(StandardSocketOptions.SO_KEEPALIVE, true);
             channel.configureBlocking(false);
         }
         Direction up = new Direction(source, target, key.from(), key.to());
@@ -154,10 +170,51 @@ final class Link implements Runnable {
             }
             ended = up.ended || down.ended;
             if (ended && !up.pending() && !down.pending()) {
+                finish(up, down, sourceKey, targetKey);
                 return;
             }
             sourceKey.interestOps(interest(ended, up, down));
             targetKey.interestOps(interest(ended, down, up));
+        }
+    }
+
+    /**
+     * Ends both streams without a reset once everything read is written: shuts down both outputs
+     * (the end of stream follows what is queued), then reads and drops what either side still
+     * sends until both have ended or {@link #FINISH_NS} has passed. Closing a socket with unread
+     * input would reset the connection, and a reset throws away what is still queued for that side.
+     */
+    private void finish(Direction up, Direction down, SelectionKey sourceKey, SelectionKey targetKey) throws IOException {
+        up.coalesce(false);
+        down.coalesce(false);
+        shutdownOutput(source);
+        shutdownOutput(target);
+        sourceKey.interestOps(up.ended ? 0 : SelectionKey.OP_READ);
+        targetKey.interestOps(down.ended ? 0 : SelectionKey.OP_READ);
+        long deadline = System.nanoTime() + FINISH_NS;
+        while (!(up.ended && down.ended) && !closed.get()) {
+            long left = TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime());
+            if (left <= 0) {
+                LOG.fine(() -> this + ": a side did not end its stream in time; closing");
+                return;
+            }
+            selector.select(left);
+            selector.selectedKeys().clear();
+            if (!up.ended && up.drop()) {
+                sourceKey.interestOps(0);
+            }
+            if (!down.ended && down.drop()) {
+                targetKey.interestOps(0);
+            }
+        }
+    }
+
+    /** Sends the end of stream after what is queued; a side that reset has no stream left to end. */
+    private static void shutdownOutput(SocketChannel channel) {
+        try {
+            channel.shutdownOutput();
+        } catch (IOException e) {
+            // Reset or already closed: nothing to end.
         }
     }
 
@@ -198,7 +255,7 @@ final class Link implements Runnable {
          */
         void move() throws IOException {
             for (int i = 0; i < CHUNKS_PER_TURN && !pending; i++) {
-                int read = in.read(buffer);
+                int read = read();
                 if (read < 0) {
                     ended = true;
                     return;
@@ -228,6 +285,35 @@ final class Link implements Runnable {
             if (on != coalescing) {
                 out.setOption(StandardSocketOptions.TCP_NODELAY, !on);
                 coalescing = on;
+            }
+        }
+
+        /** Reads and drops what is there, once the other side has gone; @return true at end of stream. */
+        boolean drop() throws IOException {
+            int read = 0;
+            for (int i = 0; i < CHUNKS_PER_TURN; i++) {
+                buffer.clear();
+                read = read();
+                if (read <= 0) {
+                    break;
+                }
+            }
+            ended = read < 0;
+            return ended;
+        }
+
+        /**
+         * Reads into the buffer: -1 at end of stream, and also when the side reset the connection
+         * or failed, since it is gone either way and what was read from it is still delivered.
+         */
+        private int read() {
+            try {
+                return in.read(buffer);
+            } catch (IOException e) {
+                if (!closed.get()) {
+                    LOG.fine(() -> Link.this + ": " + fromRobot + "'s side failed: " + e);
+                }
+                return -1;
             }
         }
 

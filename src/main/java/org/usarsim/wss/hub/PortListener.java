@@ -93,14 +93,16 @@ final class PortListener implements Runnable {
                 socket = channel.accept();
             } catch (IOException e) {
                 accepting(false);
-                if (channel.isOpen()) {
-                    LOG.warning(port + ": accept failed, no longer listening: " + e);
-                    close();
+                if (!channel.isOpen()) {
+                    return;
                 }
-                return;
+                // Out of descriptors, say: the port still listens, so try again in a moment.
+                LOG.warning(port + ": accept failed, trying again: " + e);
+                Pause.briefly();
+                continue;
             }
             accepting(false);
-            hub.accepted(port, socket);
+            hub.accepted(port, this, socket);
         }
     }
 }

@@ -45,7 +45,7 @@ final class WssPort {
         if (listen) {
             ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, 0));
             WssPort port = new WssPort(hub, key, bindAddress, channel.socket().getLocalPort());
-            port.accept(channel);
+            port.startListener(channel);
             return port;
         }
         SocketChannel placeholder = hold(new InetSocketAddress(bindAddress, 0));
@@ -58,16 +58,21 @@ final class WssPort {
         return listener != null;
     }
 
+    /** Whether this listener is the one the port listens with now (not one stopped by a break since). */
+    boolean listensWith(PortListener current) {
+        return listener == current;
+    }
+
     /** Listens again on the same number. */
     void listen() throws IOException {
         if (listener == null) {
-            accept(PortListener.bind(new InetSocketAddress(bindAddress, number)));
+            startListener(PortListener.bind(new InetSocketAddress(bindAddress, number)));
             Closing.quietly(placeholder);
             placeholder = null;
         }
     }
 
-    private void accept(ServerSocketChannel channel) {
+    private void startListener(ServerSocketChannel channel) {
         listener = new PortListener(hub, this, channel);
         listener.start();
     }

@@ -29,6 +29,8 @@ public final class Replies {
     public static final String MALFORMED_EMPTY_SEGMENT = "Malformed.Line.Empty.Segment";
     public static final String PORT_OUT_OF_RANGE = "Port.Must.Be.Between.1.And.65535";
     public static final String NAME_MUST_NOT_CONTAIN_WHITESPACE = "Robot.Name.Must.Not.Contain.Whitespace";
+    /** A fault of the server's own (logged as a WARNING); the connection stays usable. */
+    public static final String INTERNAL_ERROR = "Server.Internal.Error";
 
     private Replies() {
     }

@@ -145,7 +145,7 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
                 return Replies.dns(other, result.port());
             case NO_SUCH_ROBOT:
                 return Replies.dnsNoSuchRobot(other);
-            case NOT_LISTENING:
+            case NO_SUCH_TARGET_PORT:
                 return Replies.dnsNotListening(other);
             default:
                 return Replies.error(Replies.COULD_NOT_ALLOCATE_PORT);

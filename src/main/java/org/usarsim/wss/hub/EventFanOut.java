@@ -67,6 +67,7 @@ final class EventFanOut implements WssEventListener {
         each(l -> l.connectionTerminated(from, to, targetPort));
     }
 
+    /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */
     @Override
     public void dataSent(String from, String to, int bytes) {
         for (WssEventListener listener : listeners) {

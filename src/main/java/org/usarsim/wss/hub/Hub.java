@@ -36,7 +36,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
 
     /** The outcome of a DNS. */
-    enum DnsOutcome { OK, NO_SUCH_ROBOT, NOT_LISTENING, NO_PORT }
+    enum DnsOutcome { OK, NO_SUCH_ROBOT, NO_SUCH_TARGET_PORT, NO_PORT }
 
     record DnsResult(DnsOutcome outcome, int port) {
     }
@@ -209,7 +209,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             int resolved = target.resolvePort(targetPort);
             if (resolved < 0) {
-                return new DnsResult(DnsOutcome.NOT_LISTENING, -1);
+                return new DnsResult(DnsOutcome.NO_SUCH_TARGET_PORT, -1);
             }
             PortKey key = new PortKey(from, to, resolved);
             WssPort port = ports.get(key);

@@ -288,7 +288,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             synchronized (lock) {
                 port.links.remove(link);
             }
-            link.close();
+            link.discard();
         }
     }
 

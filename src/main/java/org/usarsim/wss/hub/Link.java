@@ -93,6 +93,12 @@ final class Link implements Runnable {
         }
     }
 
+    /** For a link whose thread never started: closes everything it holds. */
+    void discard() {
+        close();
+        Closing.quietly(selector);
+    }
+
     @Override
     public void run() {
         boolean established = false;

@@ -105,6 +105,38 @@ class HeadlessProcessTest {
     }
 
     @Test
+    void withTheEventLogOnEveryEventIsACsvLineInANewFile() throws Exception {
+        Path logs = dir.resolve("event logs");
+        Server server = start("--headless", "--config",
+                config(Map.of("wss.eventLog", "true", "wss.eventLogDir", logs.toString())).toString());
+        int port = Integer.parseInt(server.awaitListening().group(1));
+        try (Socket r1 = connect(port); Socket r2 = connect(port)) {
+            send(r1, "INIT {Robot R1} {Port 5000,5001}\r\n");
+            assertEquals("INITREPLY {Status OK}\r\n", readLine(r1));
+            send(r2, "INIT {Robot R2} {Port 6000}\r\n");
+            assertEquals("INITREPLY {Status OK}\r\n", readLine(r2));
+        }
+        for (int robot = 0; robot < 2; robot++) {
+            server.awaitLine(line -> line.contains("deregistered R"));
+        }
+        server.sigterm();
+        assertEquals(0, server.awaitExit(), "stderr: " + server.stderr());
+        List<Path> files;
+        try (var listing = Files.list(logs)) {
+            files = listing.toList();
+        }
+        assertEquals(1, files.size(), "one file per run: " + files);
+        assertTrue(files.get(0).getFileName().toString().matches("log-\\d{4}\\.\\d\\d\\.\\d\\d-\\d\\d\\.\\d\\d\\.\\d\\d\\.\\d{3}\\.txt"),
+                files.get(0).toString());
+        List<String> lines = Files.readAllLines(files.get(0));
+        String time = "\\d\\d:\\d\\d:\\d\\d\\.\\d{3}";
+        assertEquals(4, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).matches("REGISTERED," + time + ",R1,127\\.0\\.0\\.1,5000:5001"), lines.get(0));
+        assertTrue(lines.get(1).matches("REGISTERED," + time + ",R2,127\\.0\\.0\\.1,6000"), lines.get(1));
+        assertTrue(lines.stream().skip(2).allMatch(line -> line.matches("DEREGISTERED," + time + ",R[12]")), lines.toString());
+    }
+
+    @Test
     void sigtermExitsZeroAndStopsListening() throws Exception {
         Server server = start("--headless", "--config", config(Map.of()).toString());
         int port = Integer.parseInt(server.awaitListening().group(1));

@@ -381,10 +381,4 @@ class ForwardingTest {
         assertEquals(length, data.length, "bytes before end of stream");
         return data;
     }
-
-    static byte[] readAll(InputStream in) throws IOException {
-        ByteArrayOutputStream all = new ByteArrayOutputStream();
-        in.transferTo(all);
-        return all.toByteArray();
-    }
 }

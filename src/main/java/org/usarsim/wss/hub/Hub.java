@@ -95,10 +95,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         return controlListener.port();
     }
 
-    public String modelName() {
-        return model.name();
-    }
-
     /** Stops the model and closes every socket: control connections, WSS ports, links. */
     @Override
     public void close() {

@@ -40,10 +40,6 @@ public final class ModelCatalog {
         return model.name().equals("NoopPropagationModel");
     }
 
-    public List<PropagationModel> models() {
-        return models;
-    }
-
     /** The model named by its {@link PropagationModel#name()}, its class's simple or its qualified name; or null. */
     public PropagationModel find(String name) {
         for (PropagationModel model : models) {

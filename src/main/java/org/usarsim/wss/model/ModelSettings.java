@@ -16,10 +16,6 @@ public final class ModelSettings {
         this.values = Map.copyOf(values);
     }
 
-    public static ModelSettings empty() {
-        return new ModelSettings(Map.of());
-    }
-
     public String getString(String key, String fallback) {
         return values.getOrDefault(key, fallback);
     }

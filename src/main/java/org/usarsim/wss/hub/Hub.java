@@ -52,7 +52,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Set<Pair> broken = new HashSet<>();
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
-    private ControlListener controlListener;
+    private volatile ControlListener controlListener;
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -72,7 +72,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /**
      * Binds the control port, starts the model, then accepts robots.
      *
-     * @throws IOException         when the control port cannot be bound (in use, bad address)
+     * @throws IOException         when the control port cannot be bound (in use, bad address), or
+     *                             {@link #close} was called before the start finished
      * @throws ModelStartException when the model will not start; nothing is left listening
      */
     public void start() throws IOException, ModelStartException {
@@ -84,6 +85,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         } catch (ModelStartException | RuntimeException e) {
             controlListener.close();
             throw e;
+        }
+        synchronized (lock) {
+            if (closed) {
+                // Stopped while the model was starting (a slow simulator connection, say).
+                controlListener.close();
+                model.shutdown();
+                throw new IOException("stopped while starting");
+            }
         }
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()

@@ -42,9 +42,9 @@ class EventLogTest {
                 r2.init("R2", 6000);
                 try (Socket out = r2.connect(r2.dns("R1", 0)); Socket in = r1Accepts.accept()) {
                     out.getOutputStream().write("12345".getBytes(StandardCharsets.UTF_8));
-                    assertEquals("12345", ForwardingTest.readExactly(in.getInputStream(), 5));
+                    assertEquals("12345", Sockets.readExactly(in.getInputStream(), 5));
                 }
-                Wait.until("the link is closed", () -> ForwardingTest.linkThreads() == 0);
+                Wait.until("the link is closed", () -> Sockets.linkThreads() == 0);
                 r1.control.close();
                 Wait.until("R1's deregistration is logged", () -> logged(log, "DEREGISTERED,"));
                 // The events a model reports, through the listener the hub gave it.

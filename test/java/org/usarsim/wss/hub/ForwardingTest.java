@@ -1,6 +1,11 @@
 package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
+import static org.usarsim.wss.hub.Sockets.linkThreads;
+import static org.usarsim.wss.hub.Sockets.randomBytes;
+import static org.usarsim.wss.hub.Sockets.readExactly;
+import static org.usarsim.wss.hub.Sockets.readExactlyBytes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -8,15 +13,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.net.ConnectException;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.net.SocketException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
@@ -65,8 +67,7 @@ class ForwardingTest {
     @Test
     void bytesFlowBothWaysAndReverseDnsNamesTheSource() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot(); TestRobot r3 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             r3.init("R3", 7000);
             try (Socket fromR2 = r2.connect(r2.dns("R1", 0)); Socket atR1 = r1Accepts.accept()) {
@@ -89,8 +90,7 @@ class ForwardingTest {
     @Test
     void twoSimultaneousBinaryStreamsOnOneWssPort() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             int port = r2.dns("R1", 0);
             Socket a = r2.connect(port);
@@ -126,8 +126,7 @@ class ForwardingTest {
     @Test
     void oneConnectionPerPacketFiftyInARow() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             for (int i = 0; i < 50; i++) {
                 byte[] packet = ("packet " + i + " " + "#".repeat(i * 37)).getBytes(StandardCharsets.UTF_8);
@@ -153,8 +152,7 @@ class ForwardingTest {
     @Test
     void reverseDnsAnswersForEveryOpenConnection() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot(); TestRobot r3 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             r3.init("R3", 7000);
             List<Socket> sockets = new ArrayList<>();
@@ -177,8 +175,7 @@ class ForwardingTest {
     @Test
     void endOfStreamClosesBothSidesAfterDeliveringWhatWasRead() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             byte[] data = randomBytes(2 * 1024 * 1024, 99);
             Socket out = r2.connect(r2.dns("R1", 0));
@@ -205,8 +202,7 @@ class ForwardingTest {
     @Test
     void aSideThatClosesStillGetsEverythingToTheOtherWhileThatOneKeepsTalking() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             byte[] data = randomBytes(6 * 1024 * 1024, 7);
             Socket out = r2.connect(r2.dns("R1", 0));
@@ -258,7 +254,7 @@ class ForwardingTest {
             int port = r2.dns("R1", 0);
             for (int i = 0; i < 3; i++) {
                 try (Socket out = r2.connect(port)) {
-                    assertClosedByPeer(out);
+                    assertClosedByPeer(out, "connection " + i + " to a target that does not listen");
                 }
             }
             assertEquals("SS {Robot R1} {Strength 0}", r2.ask("GETSS {Robot R1}"), "the robots are still served");
@@ -271,8 +267,7 @@ class ForwardingTest {
             ServerSocket r1Accepts = r1.listen();
             assertEquals("127.0.0.2", r1Accepts.getInetAddress().getHostAddress());
             r1.init("R1", r1Accepts.getLocalPort());
-            ServerSocket r2Accepts = r2.listen();
-            r2.init("R2", r2Accepts.getLocalPort());
+            ServerSocket r2Accepts = r2.initAccepting("R2");
             try (Socket out = r2.connect(r2.dns("R1", 0)); Socket in = r1Accepts.accept()) {
                 in.setSoTimeout(TestRobot.TIMEOUT_MS);
                 out.getOutputStream().write("to .2".getBytes(StandardCharsets.UTF_8));
@@ -290,12 +285,11 @@ class ForwardingTest {
     @Test
     void aConnectionFromAnotherAddressThanTheSourceRobotsIsClosed() throws Exception {
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot(); TestRobot stranger = server.robotAt("127.0.0.3")) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             int port = r2.dns("R1", 0);
             try (Socket fromStranger = stranger.connect(port)) {
-                assertClosedByPeer(fromStranger);
+                assertClosedByPeer(fromStranger, "a connection from 127.0.0.3");
             }
             try (Socket out = r2.connect(port); Socket in = r1Accepts.accept()) {
                 assertEquals("R2", reverseDnsName(r1, in.getPort()));
@@ -308,8 +302,7 @@ class ForwardingTest {
         server.close();
         server = new TestHub(new org.usarsim.wss.model.noop.NoopPropagationModel(), false, 65536);
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot(); TestRobot stranger = server.robotAt("127.0.0.3")) {
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             try (Socket out = stranger.connect(r2.dns("R1", 0)); Socket in = r1Accepts.accept()) {
                 in.setSoTimeout(TestRobot.TIMEOUT_MS);
@@ -323,8 +316,7 @@ class ForwardingTest {
     void afterControlLossTheSameNameGetsTheSamePortsBack() throws Exception {
         try (TestRobot r2 = server.robot()) {
             TestRobot r1 = server.robot();
-            ServerSocket r1Accepts = r1.listen();
-            r1.init("R1", r1Accepts.getLocalPort());
+            ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             int port = r2.dns("R1", 0);
             r1.control.close();
@@ -350,35 +342,5 @@ class ForwardingTest {
         String prefix = "REVERSEDNSREPLY {Port " + port + "} {Robot ";
         assertTrue(reply.startsWith(prefix), reply);
         return reply.substring(prefix.length(), reply.length() - 1);
-    }
-
-    /** The WSS closed the connection: a read ends (end of stream or reset) well before the timeout. */
-    private static void assertClosedByPeer(Socket socket) throws IOException {
-        socket.setSoTimeout(TestRobot.TIMEOUT_MS);
-        try {
-            assertEquals(-1, socket.getInputStream().read());
-        } catch (SocketException reset) {
-            // A reset is a close too.
-        }
-    }
-
-    static long linkThreads() {
-        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().startsWith("link ")).count();
-    }
-
-    static byte[] randomBytes(int size, long seed) {
-        byte[] data = new byte[size];
-        new Random(seed).nextBytes(data);
-        return data;
-    }
-
-    static String readExactly(InputStream in, int length) throws IOException {
-        return new String(readExactlyBytes(in, length), StandardCharsets.UTF_8);
-    }
-
-    static byte[] readExactlyBytes(InputStream in, int length) throws IOException {
-        byte[] data = in.readNBytes(length);
-        assertEquals(length, data.length, "bytes before end of stream");
-        return data;
     }
 }

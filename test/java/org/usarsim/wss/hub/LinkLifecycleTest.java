@@ -1,11 +1,15 @@
 package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
+import static org.usarsim.wss.hub.Sockets.linkThreads;
+import static org.usarsim.wss.hub.Sockets.randomBytes;
+import static org.usarsim.wss.hub.Sockets.readExactly;
+import static org.usarsim.wss.hub.Sockets.readExactlyBytes;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.io.IOException;
 import java.net.BindException;
@@ -26,8 +30,6 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.function.LongPredicate;
-import java.util.function.LongSupplier;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
@@ -134,15 +136,14 @@ class LinkLifecycleTest {
 
         assertFalse(links.breakConnectionsForPair("R1", "R2"), "a second break has nothing to change");
         assertFalse(links.breakConnectionsForPair("R2", "R1"), "a pair has no direction");
-        Wait.until("the pair's link threads ended", () -> ForwardingTest.linkThreads() == 4);
+        Wait.until("the pair's link threads ended", () -> linkThreads() == 4);
     }
 
     @Test
     void everyBreakRefusesAtOnceAndKeepsTheNumberReserved() throws Exception {
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         int port = r2.dns("R1", 0);
         int rounds = 500;
@@ -314,8 +315,7 @@ class LinkLifecycleTest {
     void aKickForgetsTheRobotsBreaks() throws Exception {
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         int before = r2.dns("R1", 0);
         assertTrue(links.breakConnectionsForPair("R1", "R2"));
@@ -377,7 +377,7 @@ class LinkLifecycleTest {
             assertPasses(toR1, "after the control connection closed " + i);
             assertPasses(fromR1, "after the control connection closed " + i);
         }
-        Wait.until("two links live on", () -> ForwardingTest.linkThreads() == 2);
+        Wait.until("two links live on", () -> linkThreads() == 2);
 
         // INIT of the same name: the same numbers listen again.
         TestRobot again = robot("127.0.0.2");
@@ -399,8 +399,7 @@ class LinkLifecycleTest {
     void aBreakHoldsAcrossALostControlConnectionAndANewInit() throws Exception {
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         int r2ToR1 = r2.dns("R1", 0);
         assertTrue(links.breakConnectionsForPair("R1", "R2"));
@@ -421,8 +420,7 @@ class LinkLifecycleTest {
         assertFalse(links.breakConnectionsForPair("R1", "R2"));
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         int r2ToR1 = r2.dns("R1", 0);
         assertRefused(r2, r2ToR1, "broken before it was registered");
@@ -475,8 +473,7 @@ class LinkLifecycleTest {
     void aDnsThatGetsTrueOpensAPortThatAFalseDnsLeftClosed() throws Exception {
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         model.allow("R2", "R1", false);
         int r2ToR1 = r2.dns("R1", 0);
@@ -510,12 +507,12 @@ class LinkLifecycleTest {
 
         // A connection R2 -> R1 with a lot one way and a little the other, closed by the source.
         Conn first = open(r2, r2.dns("R1", 0), r1Accepts);
-        byte[] big = ForwardingTest.randomBytes(100_000, 7);
-        byte[] small = ForwardingTest.randomBytes(3_333, 8);
+        byte[] big = randomBytes(100_000, 7);
+        byte[] small = randomBytes(3_333, 8);
         first.source.getOutputStream().write(big);
-        assertArrayEquals(big, ForwardingTest.readExactlyBytes(first.target.getInputStream(), big.length));
+        assertArrayEquals(big, readExactlyBytes(first.target.getInputStream(), big.length));
         first.target.getOutputStream().write(small);
-        assertArrayEquals(small, ForwardingTest.readExactlyBytes(first.source.getInputStream(), small.length));
+        assertArrayEquals(small, readExactlyBytes(first.source.getInputStream(), small.length));
         toR1 += big.length;
         toR2 += small.length;
         first.source.close();
@@ -546,7 +543,7 @@ class LinkLifecycleTest {
         toR2 += "<third".length();
         links.kickOutRobot("R1");
         Wait.until("the kicked robot's connection terminated", () -> recorder.count("CON_TERMINATED,R2,R1," + b) == 1);
-        Wait.until("every link thread ended", () -> ForwardingTest.linkThreads() == 0);
+        Wait.until("every link thread ended", () -> linkThreads() == 0);
         server.hub.removeListener(recorder);
         server.hub.removeListener(log);
         log.close();
@@ -596,15 +593,14 @@ class LinkLifecycleTest {
     void shortConnectionsAndABreakLeaveNoThreadsNorDescriptorsBehind() throws Exception {
         TestRobot r1 = robot("127.0.0.1");
         TestRobot r2 = robot("127.0.0.2");
-        ServerSocket r1Accepts = r1.listen();
-        r1.init("R1", r1Accepts.getLocalPort());
+        ServerSocket r1Accepts = r1.initAccepting("R1");
         r2.init("R2", 6000);
         int port = r2.dns("R1", 0);
         for (int i = 0; i < 20; i++) {
             shortConnection(r2, port, r1Accepts, i);
         }
-        Wait.until("the warm-up's link threads ended", () -> ForwardingTest.linkThreads() == 0);
-        long before = waitForCount("descriptors settle", LinkLifecycleTest::openDescriptors, n -> true);
+        Wait.until("the warm-up's link threads ended", () -> linkThreads() == 0);
+        long before = Wait.settle("descriptors settle", LinkLifecycleTest::openDescriptors, n -> true);
 
         for (int i = 0; i < 300; i++) {
             shortConnection(r2, port, r1Accepts, i);
@@ -620,9 +616,9 @@ class LinkLifecycleTest {
         assertTrue(links.resumeConnectionsForPair("R1", "R2"));
         shortConnection(r2, port, r1Accepts, 300);
 
-        Wait.until("every link thread ended", () -> ForwardingTest.linkThreads() == 0);
+        Wait.until("every link thread ended", () -> linkThreads() == 0);
         Wait.until("one accepting thread for the WSS port", () -> portThreads(port) == 1);
-        long after = waitForCount("descriptors return to their level", LinkLifecycleTest::openDescriptors,
+        long after = Wait.settle("descriptors return to their level", LinkLifecycleTest::openDescriptors,
                 n -> n <= before + 5);
         assertTrue(after <= before + 5, "open descriptors before " + before + ", after " + after);
     }
@@ -663,28 +659,13 @@ class LinkLifecycleTest {
         byte[] there = (tag + ">").getBytes(StandardCharsets.UTF_8);
         byte[] back = ("<" + tag).getBytes(StandardCharsets.UTF_8);
         conn.source.getOutputStream().write(there);
-        assertEquals(tag + ">", ForwardingTest.readExactly(conn.target.getInputStream(), there.length), conn + ": " + tag);
+        assertEquals(tag + ">", readExactly(conn.target.getInputStream(), there.length), conn + ": " + tag);
         conn.target.getOutputStream().write(back);
-        assertEquals("<" + tag, ForwardingTest.readExactly(conn.source.getInputStream(), back.length), conn + ": " + tag);
+        assertEquals("<" + tag, readExactly(conn.source.getInputStream(), back.length), conn + ": " + tag);
     }
 
     private static void assertRefused(TestRobot from, int wssPort, String what) {
         assertThrows(ConnectException.class, () -> from.connect(wssPort).close(), "WSS port " + wssPort + " refuses: " + what);
-    }
-
-    /** The other end closed: the next read is end of stream or a reset, well before the read timeout. */
-    private static void assertClosedByPeer(Socket socket, String what) throws IOException {
-        socket.setSoTimeout(TestRobot.TIMEOUT_MS);
-        int read;
-        try {
-            read = socket.getInputStream().read();
-        } catch (SocketTimeoutException e) {
-            fail(what + ": still open after " + TestRobot.TIMEOUT_MS + " ms");
-            return;
-        } catch (SocketException reset) {
-            return;
-        }
-        assertEquals(-1, read, what + ": end of stream");
     }
 
     private static void assertGreeted(TestRobot r1, TestRobot r2, int r2ToR1First, int r2ToR1Second, int r1ToR2,
@@ -737,7 +718,7 @@ class LinkLifecycleTest {
             out.getOutputStream().write(data);
             try (Socket in = targetAccepts.accept()) {
                 in.setSoTimeout(TestRobot.TIMEOUT_MS);
-                assertArrayEquals(data, ForwardingTest.readExactlyBytes(in.getInputStream(), data.length), "connection " + i);
+                assertArrayEquals(data, readExactlyBytes(in.getInputStream(), data.length), "connection " + i);
             }
         }
     }
@@ -754,22 +735,6 @@ class LinkLifecycleTest {
         } catch (IOException e) {
             throw new AssertionError("cannot list /proc/self/fd", e);
         }
-    }
-
-    /** Polls a count until it satisfies the condition (or the deadline passes); returns the last value. */
-    private static long waitForCount(String what, LongSupplier count, LongPredicate done) {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
-        long value = count.getAsLong();
-        while (!done.test(value) && System.nanoTime() < deadline) {
-            try {
-                Thread.sleep(5);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                fail("interrupted waiting until " + what);
-            }
-            value = count.getAsLong();
-        }
-        return value;
     }
 
     /** Records every event as its CSV line without the time field. */

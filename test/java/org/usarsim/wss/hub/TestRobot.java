@@ -52,6 +52,13 @@ final class TestRobot implements AutoCloseable {
         return server;
     }
 
+    /** Registers with one accepting port, a server socket on this robot's address; returns that socket. */
+    ServerSocket initAccepting(String name) throws IOException {
+        ServerSocket accepts = listen();
+        init(name, accepts.getLocalPort());
+        return accepts;
+    }
+
     void send(String text) throws IOException {
         out.write(text.getBytes(StandardCharsets.UTF_8));
         out.flush();

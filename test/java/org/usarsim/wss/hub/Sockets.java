@@ -1,0 +1,55 @@
+package org.usarsim.wss.hub;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.Socket;
+import java.net.SocketException;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.util.Random;
+
+/** What the socket tests do with the bytes and ends of a connection. */
+final class Sockets {
+
+    private Sockets() {
+    }
+
+    static byte[] randomBytes(int size, long seed) {
+        byte[] data = new byte[size];
+        new Random(seed).nextBytes(data);
+        return data;
+    }
+
+    static String readExactly(InputStream in, int length) throws IOException {
+        return new String(readExactlyBytes(in, length), StandardCharsets.UTF_8);
+    }
+
+    static byte[] readExactlyBytes(InputStream in, int length) throws IOException {
+        byte[] data = in.readNBytes(length);
+        assertEquals(length, data.length, "bytes before end of stream");
+        return data;
+    }
+
+    /** The other end closed: the next read is end of stream or a reset, well before the read timeout. */
+    static void assertClosedByPeer(Socket socket, String what) throws IOException {
+        socket.setSoTimeout(TestRobot.TIMEOUT_MS);
+        int read;
+        try {
+            read = socket.getInputStream().read();
+        } catch (SocketTimeoutException e) {
+            fail(what + ": still open after " + TestRobot.TIMEOUT_MS + " ms");
+            return;
+        } catch (SocketException reset) {
+            return;
+        }
+        assertEquals(-1, read, what + ": end of stream");
+    }
+
+    /** The server's threads that forward a connection. */
+    static long linkThreads() {
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().startsWith("link ")).count();
+    }
+}

@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.util.List;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
@@ -48,6 +49,8 @@ final class EventLogger implements WssEventListener {
 
     @Override
     public void dataSent(String from, String to, int bytes) {
-        LOG.finest(() -> bytes + " bytes " + from + " -> " + to);
+        if (LOG.isLoggable(Level.FINEST)) { // per chunk: not even a lambda unless it is logged
+            LOG.finest(bytes + " bytes " + from + " -> " + to);
+        }
     }
 }

@@ -118,6 +118,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
             closed = true;
+            lock.notifyAll(); // an INIT waiting for a name gives up at once
             for (WssPort port : ports.values()) {
                 port.release();
                 links.addAll(port.links);

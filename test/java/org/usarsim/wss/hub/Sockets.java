@@ -12,29 +12,29 @@ import java.nio.charset.StandardCharsets;
 import java.util.Random;
 
 /** What the socket tests do with the bytes and ends of a connection. */
-final class Sockets {
+public final class Sockets {
 
     private Sockets() {
     }
 
-    static byte[] randomBytes(int size, long seed) {
+    public static byte[] randomBytes(int size, long seed) {
         byte[] data = new byte[size];
         new Random(seed).nextBytes(data);
         return data;
     }
 
-    static String readExactly(InputStream in, int length) throws IOException {
+    public static String readExactly(InputStream in, int length) throws IOException {
         return new String(readExactlyBytes(in, length), StandardCharsets.UTF_8);
     }
 
-    static byte[] readExactlyBytes(InputStream in, int length) throws IOException {
+    public static byte[] readExactlyBytes(InputStream in, int length) throws IOException {
         byte[] data = in.readNBytes(length);
         assertEquals(length, data.length, "bytes before end of stream");
         return data;
     }
 
     /** The other end closed: the next read is end of stream or a reset, well before the read timeout. */
-    static void assertClosedByPeer(Socket socket, String what) throws IOException {
+    public static void assertClosedByPeer(Socket socket, String what) throws IOException {
         socket.setSoTimeout(TestRobot.TIMEOUT_MS);
         int read;
         try {
@@ -49,7 +49,7 @@ final class Sockets {
     }
 
     /** The server's threads that forward a connection. */
-    static long linkThreads() {
+    public static long linkThreads() {
         return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().startsWith("link ")).count();
     }
 }

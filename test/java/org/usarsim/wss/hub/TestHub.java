@@ -5,30 +5,30 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /** A hub on 127.0.0.1 with an OS-chosen control port, for one test. */
-final class TestHub implements AutoCloseable {
+public final class TestHub implements AutoCloseable {
 
-    final Hub hub;
+    public final Hub hub;
 
-    TestHub() throws Exception {
+    public TestHub() throws Exception {
         this(new NoopPropagationModel(), true, 65536);
     }
 
-    TestHub(PropagationModel model, boolean matchSourceAddress, int chunkSize) throws Exception {
+    public TestHub(PropagationModel model, boolean matchSourceAddress, int chunkSize) throws Exception {
         hub = new Hub(new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress), model);
         hub.start();
     }
 
-    int port() {
+    public int port() {
         return hub.controlPort();
     }
 
     /** A robot whose control connection comes from 127.0.0.1. */
-    TestRobot robot() throws Exception {
+    public TestRobot robot() throws Exception {
         return new TestRobot(port(), "127.0.0.1");
     }
 
     /** A robot whose control connection (and listening sockets) are on the given loopback address. */
-    TestRobot robotAt(String address) throws Exception {
+    public TestRobot robotAt(String address) throws Exception {
         return new TestRobot(port(), address);
     }
 

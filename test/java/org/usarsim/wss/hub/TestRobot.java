@@ -21,18 +21,18 @@ import java.util.regex.Pattern;
  * A robot as a team's client is: a control connection to the WSS (from a chosen loopback
  * address) and, when it accepts connections, server sockets on that address.
  */
-final class TestRobot implements AutoCloseable {
+public final class TestRobot implements AutoCloseable {
 
-    static final int TIMEOUT_MS = 5000;
+    public static final int TIMEOUT_MS = 5000;
     private static final Pattern DNS_PORT = Pattern.compile("DNSREPLY \\{Robot \\S+\\} \\{Port (-?\\d+)\\}");
 
-    final String address;
-    final Socket control;
+    public final String address;
+    public final Socket control;
     private final InputStream in;
     private final OutputStream out;
     private final List<ServerSocket> listeners = new ArrayList<>();
 
-    TestRobot(int wssPort, String address) throws IOException {
+    public TestRobot(int wssPort, String address) throws IOException {
         this.address = address;
         control = new Socket();
         control.bind(new InetSocketAddress(address, 0));
@@ -44,7 +44,7 @@ final class TestRobot implements AutoCloseable {
     }
 
     /** A server socket on this robot's address, as the robot's accepting port. */
-    ServerSocket listen() throws IOException {
+    public ServerSocket listen() throws IOException {
         ServerSocket server = new ServerSocket();
         server.bind(new InetSocketAddress(address, 0));
         server.setSoTimeout(TIMEOUT_MS);
@@ -53,19 +53,19 @@ final class TestRobot implements AutoCloseable {
     }
 
     /** Registers with one accepting port, a server socket on this robot's address; returns that socket. */
-    ServerSocket initAccepting(String name) throws IOException {
+    public ServerSocket initAccepting(String name) throws IOException {
         ServerSocket accepts = listen();
         init(name, accepts.getLocalPort());
         return accepts;
     }
 
-    void send(String text) throws IOException {
+    public void send(String text) throws IOException {
         out.write(text.getBytes(StandardCharsets.UTF_8));
         out.flush();
     }
 
     /** Reads one reply line, CR LF included, byte by byte (so that nothing after it is consumed). */
-    String readLine() throws IOException {
+    public String readLine() throws IOException {
         ByteArrayOutputStream line = new ByteArrayOutputStream();
         int previous = -1;
         while (true) {
@@ -83,12 +83,12 @@ final class TestRobot implements AutoCloseable {
     }
 
     /** Sends a command and returns its reply (without CR LF). */
-    String ask(String command) throws IOException {
+    public String ask(String command) throws IOException {
         send(command + "\r\n");
         return readLine();
     }
 
-    void init(String name, int... ports) throws IOException {
+    public void init(String name, int... ports) throws IOException {
         StringBuilder list = new StringBuilder();
         for (int port : ports) {
             list.append(list.length() == 0 ? "" : ",").append(port);
@@ -98,7 +98,7 @@ final class TestRobot implements AutoCloseable {
     }
 
     /** DNS to a robot (port 0: no Port field); returns the WSS port, asserting an OK reply. */
-    int dns(String robot, int port) throws IOException {
+    public int dns(String robot, int port) throws IOException {
         String reply = ask(port == 0 ? "DNS {Robot " + robot + "}" : "DNS {Robot " + robot + "} {Port " + port + "}");
         Matcher matcher = DNS_PORT.matcher(reply);
         assertTrue(matcher.matches(), "DNS reply: " + reply);
@@ -108,7 +108,7 @@ final class TestRobot implements AutoCloseable {
     }
 
     /** Opens a data connection to a WSS port from this robot's address. */
-    Socket connect(int wssPort) throws IOException {
+    public Socket connect(int wssPort) throws IOException {
         Socket socket = new Socket();
         socket.bind(new InetSocketAddress(address, 0));
         socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), wssPort), TIMEOUT_MS);

@@ -7,14 +7,14 @@ import java.util.function.LongPredicate;
 import java.util.function.LongSupplier;
 
 /** Waits for a condition with a deadline, polling: never a fixed sleep. */
-final class Wait {
+public final class Wait {
 
     private Wait() {
     }
 
     private static final long DEADLINE_NS = 5_000_000_000L;
 
-    static void until(String what, BooleanSupplier condition) {
+    public static void until(String what, BooleanSupplier condition) {
         long deadline = System.nanoTime() + DEADLINE_NS;
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > deadline) {
@@ -25,7 +25,7 @@ final class Wait {
     }
 
     /** Polls a count until it satisfies the condition or the deadline passes; returns the last value (the caller asserts). */
-    static long settle(String what, LongSupplier count, LongPredicate done) {
+    public static long settle(String what, LongSupplier count, LongPredicate done) {
         long deadline = System.nanoTime() + DEADLINE_NS;
         long value = count.getAsLong();
         while (!done.test(value) && System.nanoTime() < deadline) {

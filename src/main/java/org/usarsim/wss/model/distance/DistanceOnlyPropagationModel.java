@@ -1,0 +1,27 @@
+package org.usarsim.wss.model.distance;
+
+import java.util.Map;
+
+/**
+ * The original's DistanceOnly model: S = Pd0 - 10 N log10(d / d0) with d the 3-D distance between
+ * two robots as the simulator reports it. A robot with no known position has NaN strength and may
+ * connect (it is kicked at the next poll if the simulator does not list it); every registered
+ * robot the simulator does not list is kicked.
+ */
+public final class DistanceOnlyPropagationModel extends SimulatorModel {
+
+    @Override
+    protected double strength(RobotState a, RobotState b) {
+        return pathLoss().strength(a.distanceTo(b));
+    }
+
+    @Override
+    protected boolean allowsUnknownRobots() {
+        return true;
+    }
+
+    @Override
+    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+        return true;
+    }
+}

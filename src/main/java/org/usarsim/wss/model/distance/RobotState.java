@@ -1,0 +1,13 @@
+package org.usarsim.wss.model.distance;
+
+/** Where the simulator says a robot is, in metres, and whether its battery is empty. */
+public record RobotState(String name, double x, double y, double z, boolean batteryEmpty) {
+
+    /** The 3-D distance in metres. */
+    public double distanceTo(RobotState other) {
+        double dx = x - other.x;
+        double dy = y - other.y;
+        double dz = z - other.z;
+        return Math.sqrt(dx * dx + dy * dy + dz * dz);
+    }
+}

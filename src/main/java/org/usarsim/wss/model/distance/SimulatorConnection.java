@@ -1,0 +1,166 @@
+package org.usarsim.wss.model.distance;
+
+import java.io.ByteArrayOutputStream;
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.util.Collection;
+import java.util.HashMap;
+import java.util.Map;
+import java.util.Set;
+
+/**
+ * One connection to a USARSim-compatible position socket: {@code GETPOS} and {@code GETOBS}, each
+ * answered by one line. Used by one thread at a time. Every request waits at most the timeout for
+ * its answer; a stale answer to an earlier request (a late {@code NUMOBS}) is skipped.
+ */
+public final class SimulatorConnection implements Closeable {
+
+    /** Longer lines are garbage: about 15 000 robots would fit. */
+    static final int MAX_LINE_BYTES = 1024 * 1024;
+
+    private final Socket socket;
+    private final InputStream in;
+    private final OutputStream out;
+    private final int timeoutMs;
+    private final byte[] buffer = new byte[8192];
+    private int bufferStart;
+    private int bufferEnd;
+
+    private SimulatorConnection(Socket socket, int timeoutMs) throws IOException {
+        this.socket = socket;
+        this.timeoutMs = timeoutMs;
+        socket.setTcpNoDelay(true);
+        in = socket.getInputStream();
+        out = socket.getOutputStream();
+    }
+
+    /** Connects, waiting at most {@code timeoutMs}; the same timeout bounds every answer. */
+    public static SimulatorConnection open(String host, int port, int timeoutMs) throws IOException {
+        Socket socket = new Socket();
+        try {
+            socket.connect(new InetSocketAddress(host, port), timeoutMs);
+            return new SimulatorConnection(socket, timeoutMs);
+        } catch (IOException | RuntimeException e) {
+            socket.close();
+            throw e;
+        }
+    }
+
+    /** Sends {@code GETPOS}; the robots the simulator lists, by name. */
+    public Map<String, RobotState> positions() throws IOException {
+        send("GETPOS\r\n");
+        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (true) {
+            String line = readLine(deadline, "GETPOS");
+            switch (SimulatorReplies.type(line)) {
+                case SimulatorReplies.POSITIONS:
+                    return SimulatorReplies.positions(line);
+                case SimulatorReplies.NUMOBS:
+                    continue; // a late answer to an earlier GETOBS
+                default:
+                    throw unexpected(line);
+            }
+        }
+    }
+
+    /**
+     * Sends one {@code GETOBS} per pair in a single write and collects the answers that come
+     * within the timeout. A pair without an answer, or with a negative count, maps to NaN.
+     */
+    public Map<NamePair, Double> obstacles(Collection<NamePair> pairs) throws IOException {
+        Map<NamePair, Double> counts = new HashMap<>();
+        if (pairs.isEmpty()) {
+            return counts;
+        }
+        StringBuilder requests = new StringBuilder();
+        for (NamePair pair : pairs) {
+            requests.append("GETOBS {From ").append(pair.first()).append("} {To ").append(pair.second()).append("}\r\n");
+        }
+        send(requests.toString());
+        Set<NamePair> asked = Set.copyOf(pairs);
+        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
+        try {
+            while (counts.size() < asked.size()) {
+                String line = readLine(deadline, "GETOBS");
+                if (!SimulatorReplies.type(line).equals(SimulatorReplies.NUMOBS)) {
+                    throw unexpected(line);
+                }
+                SimulatorReplies.ObstacleCount count = SimulatorReplies.obstacles(line);
+                if (asked.contains(count.pair())) {
+                    counts.put(count.pair(), count.count());
+                }
+            }
+        } catch (SocketTimeoutException e) {
+            // Unanswered pairs stay unknown: a simulator may not know GETOBS at all.
+        }
+        for (NamePair pair : pairs) {
+            counts.putIfAbsent(pair, Double.NaN);
+        }
+        return counts;
+    }
+
+    private void send(String text) throws IOException {
+        out.write(text.getBytes(StandardCharsets.UTF_8));
+        out.flush();
+    }
+
+    /** The next line (CR LF or LF), waiting until the deadline at most. */
+    private String readLine(long deadline, String request) throws IOException {
+        ByteArrayOutputStream line = new ByteArrayOutputStream();
+        while (true) {
+            for (int i = bufferStart; i < bufferEnd; i++) {
+                if (buffer[i] == '\n') {
+                    line.write(buffer, bufferStart, i - bufferStart);
+                    bufferStart = i + 1;
+                    String text = line.toString(StandardCharsets.UTF_8).strip();
+                    if (!text.isEmpty()) {
+                        return text;
+                    }
+                    line.reset();
+                    continue; // a blank line: skipped
+                }
+            }
+            line.write(buffer, bufferStart, bufferEnd - bufferStart);
+            bufferStart = bufferEnd;
+            if (line.size() > MAX_LINE_BYTES) {
+                throw new SimulatorReplyException("a reply line longer than " + MAX_LINE_BYTES + " bytes");
+            }
+            long left = (deadline - System.nanoTime()) / 1_000_000L;
+            if (left <= 0) {
+                throw new SocketTimeoutException("no answer to " + request + " within " + timeoutMs + " ms");
+            }
+            socket.setSoTimeout((int) left);
+            int read;
+            try {
+                read = in.read(buffer);
+            } catch (SocketTimeoutException e) {
+                throw new SocketTimeoutException("no answer to " + request + " within " + timeoutMs + " ms");
+            }
+            if (read < 0) {
+                throw new IOException("the simulator closed the connection");
+            }
+            bufferStart = 0;
+            bufferEnd = read;
+        }
+    }
+
+    private static SimulatorReplyException unexpected(String line) {
+        String shown = line.length() > 200 ? line.substring(0, 200) + "..." : line;
+        return new SimulatorReplyException("unexpected reply: " + shown);
+    }
+
+    @Override
+    public void close() {
+        try {
+            socket.close();
+        } catch (IOException e) {
+            // closing: nothing left to do
+        }
+    }
+}

@@ -1,0 +1,318 @@
+package org.usarsim.wss.model.distance;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * A propagation model driven by robot positions polled from a USARSim-compatible simulator. Every
+ * interval it sends {@code GETPOS}; then it kicks the registered robots the simulator no longer
+ * lists or whose battery is empty, and breaks or resumes every pair of listed robots by its
+ * strength (events only on change). When the simulator goes away, answers late or sends garbage,
+ * the model says so once, keeps the last known link state and reconnects with a growing pause.
+ *
+ * <p>Subclasses give the strength of a pair; the rest is here, in one place.
+ */
+public abstract class SimulatorModel implements PropagationModel {
+
+    private static final long MAX_BACKOFF_MS = 10_000;
+
+    private final Logger log = Logger.getLogger(getClass().getName());
+
+    private String host = "127.0.0.1";
+    private int port = 7435;
+    private int intervalMs = 1000;
+    private int timeoutMs = 2000;
+    private PathLoss pathLoss = new PathLoss(-49.67, 1, 2, -93);
+    private double margin;
+    private double holdSeconds;
+
+    private volatile RobotLinkModel linkModel;
+    private volatile WssEventListener listener = new WssEventListener() {
+    };
+    private volatile Map<String, RobotState> positions = Map.of();
+    private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
+    private volatile Thread poller;
+    private volatile boolean active;
+    /** The poller's connection; null while there is none. */
+    private volatile SimulatorConnection connection;
+    /** Why the simulator is unusable since {@link #troubleSince}; null while it answers. */
+    private String trouble;
+    private long troubleSince;
+
+    @Override
+    public void configure(ModelSettings settings) {
+        host = settings.getString("usarsim.host", host);
+        port = settings.getInt("usarsim.port", port);
+        intervalMs = settings.getInt("usarsim.interval", intervalMs);
+        timeoutMs = settings.getInt("usarsim.timeout", timeoutMs);
+        pathLoss = new PathLoss(settings.getDouble("distance.pd0", pathLoss.pd0()), settings.getDouble("distance.n", pathLoss.n()),
+                settings.getDouble("distance.d0", pathLoss.d0()), settings.getDouble("distance.cutoff", pathLoss.cutoff()));
+        margin = settings.getDouble("distance.margin", margin);
+        holdSeconds = settings.getDouble("distance.holdTime", holdSeconds);
+    }
+
+    @Override
+    public void setRobotLinkModel(RobotLinkModel linkModel) {
+        this.linkModel = linkModel;
+    }
+
+    @Override
+    public void setEventListener(WssEventListener listener) {
+        this.listener = listener;
+    }
+
+    /** Checks the settings, connects to the simulator and starts polling it. */
+    @Override
+    public synchronized void start() throws ModelStartException {
+        if (active) {
+            return;
+        }
+        check(pathLoss.n() > 0 && Double.isFinite(pathLoss.n()), "distance.n must be above 0, not " + pathLoss.n());
+        check(pathLoss.d0() > 0 && Double.isFinite(pathLoss.d0()), "distance.d0 must be above 0, not " + pathLoss.d0());
+        check(Double.isFinite(pathLoss.pd0()) && Double.isFinite(pathLoss.cutoff()), "distance.pd0 and distance.cutoff must be numbers");
+        check(margin >= 0 && holdSeconds >= 0, "distance.margin and distance.holdTime must be 0 or more");
+        check(intervalMs > 0 && timeoutMs > 0, "usarsim.interval and usarsim.timeout must be above 0");
+        check(port > 0 && port < 65536, "usarsim.port must be from 1 to 65535, not " + port);
+        check(linkModel != null, "no server to act on (setRobotLinkModel was not called)");
+        try {
+            connection = SimulatorConnection.open(host, port, timeoutMs);
+        } catch (IOException | RuntimeException e) {
+            throw new ModelStartException("cannot reach the simulator at " + where() + " (" + e.getMessage() + ")", e);
+        }
+        positions = Map.of();
+        links = new LinkStates(pathLoss.cutoff(), margin, holdSeconds);
+        trouble = null;
+        active = true;
+        log.info(name() + " polls the simulator at " + where() + " every " + intervalMs + " ms; range " + metres(pathLoss.range())
+                + " (cutoff " + pathLoss.cutoff() + " dBm" + (margin > 0 ? ", margin " + margin + " dB" : "")
+                + (holdSeconds > 0 ? ", hold time " + holdSeconds + " s" : "") + ")");
+        Thread thread = new Thread(this::run, name() + " poller");
+        thread.setDaemon(true);
+        poller = thread;
+        thread.start();
+    }
+
+    private static void check(boolean ok, String message) throws ModelStartException {
+        if (!ok) {
+            throw new ModelStartException(message);
+        }
+    }
+
+    @Override
+    public void shutdown() {
+        Thread thread;
+        synchronized (this) {
+            active = false;
+            thread = poller;
+            poller = null;
+        }
+        if (thread != null) {
+            thread.interrupt();
+            closeConnection();
+            try {
+                thread.join(TimeUnit.SECONDS.toMillis(5));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    @Override
+    public boolean isActive() {
+        return active;
+    }
+
+    @Override
+    public boolean isConfigurable() {
+        return true;
+    }
+
+    /** The strength from the last known positions: NaN while either robot's position is unknown. */
+    @Override
+    public double getSignalStrengthForPair(String from, String to) {
+        Map<String, RobotState> known = positions;
+        RobotState a = known.get(from);
+        RobotState b = known.get(to);
+        return a == null || b == null ? Double.NaN : strength(a, b);
+    }
+
+    /**
+     * The pair's link state as last decided; for a pair not decided yet, its strength against the
+     * cutoff, or {@link #allowsUnknownRobots()} while a position is unknown.
+     */
+    @Override
+    public boolean connectionIsPossibleForPair(String from, String to) {
+        Boolean live = links.live(NamePair.of(from, to));
+        if (live != null) {
+            return live;
+        }
+        Map<String, RobotState> known = positions;
+        RobotState a = known.get(from);
+        RobotState b = known.get(to);
+        return a == null || b == null ? allowsUnknownRobots() : strength(a, b) >= pathLoss.cutoff();
+    }
+
+    // ---- what a subclass decides ----
+
+    /** The strength in dBm between two robots the simulator lists; NaN when it cannot be known. */
+    protected abstract double strength(RobotState a, RobotState b);
+
+    /** Whether a robot with no known position may connect. */
+    protected abstract boolean allowsUnknownRobots();
+
+    /** Whether registered robots absent from this position list are kicked. */
+    protected abstract boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed);
+
+    /** Called at every poll before the pairs are decided, with the pairs to decide. */
+    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
+            throws IOException {
+    }
+
+    protected final PathLoss pathLoss() {
+        return pathLoss;
+    }
+
+    // ---- the poller ----
+
+    private void run() {
+        long backoffMs = intervalMs;
+        long next = System.nanoTime();
+        try {
+            while (pause(next)) {
+                long started = System.nanoTime();
+                next = started + intervalMs * 1_000_000L;
+                try {
+                    if (connection == null) {
+                        connection = SimulatorConnection.open(host, port, timeoutMs);
+                    }
+                    poll(connection);
+                    back();
+                    backoffMs = intervalMs;
+                } catch (IOException e) {
+                    if (!active) {
+                        return;
+                    }
+                    lost(e);
+                    closeConnection();
+                    next = started + backoffMs * 1_000_000L;
+                    backoffMs = Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
+                } catch (RuntimeException e) {
+                    log.log(Level.WARNING, name() + ": a poll failed: " + e, e);
+                }
+            }
+        } finally {
+            closeConnection();
+        }
+    }
+
+    /** Waits until {@code deadline}; false when the model stopped meanwhile. */
+    private boolean pause(long deadline) {
+        long left;
+        while (active && (left = deadline - System.nanoTime()) > 0) {
+            try {
+                TimeUnit.NANOSECONDS.sleep(left);
+            } catch (InterruptedException e) {
+                return false;
+            }
+        }
+        return active;
+    }
+
+    /** One poll: positions, kicks, then every pair of listed robots broken or resumed. */
+    private void poll(SimulatorConnection simulator) throws IOException {
+        RobotLinkModel hub = linkModel;
+        List<String> registeredBefore = hub.getListOfRegisteredRobots();
+        Map<String, RobotState> listed = simulator.positions();
+        positions = listed;
+        boolean kickAbsent = kicksRobotsAbsentFrom(listed);
+        for (String robot : registeredBefore) {
+            RobotState state = listed.get(robot);
+            if (state == null && kickAbsent) {
+                log.info("kicking " + robot + ": the simulator does not list it");
+                hub.kickOutRobot(robot);
+            } else if (state != null && state.batteryEmpty()) {
+                log.info("kicking " + robot + ": its battery is empty");
+                listener.robotOutOfBattery(robot);
+                hub.kickOutRobot(robot);
+            }
+        }
+        List<String> present = new ArrayList<>();
+        for (String robot : hub.getListOfRegisteredRobots()) {
+            RobotState state = listed.get(robot);
+            if (state != null && !state.batteryEmpty()) {
+                present.add(robot);
+            }
+        }
+        List<NamePair> pairs = new ArrayList<>();
+        for (int i = 0; i < present.size(); i++) {
+            for (int j = i + 1; j < present.size(); j++) {
+                pairs.add(NamePair.of(present.get(i), present.get(j)));
+            }
+        }
+        beforeDecisions(listed, pairs, simulator);
+        LinkStates states = links;
+        Set<String> presentSet = new HashSet<>(present);
+        states.retainOnly(presentSet);
+        long now = System.nanoTime();
+        for (NamePair pair : pairs) {
+            RobotState a = listed.get(pair.first());
+            RobotState b = listed.get(pair.second());
+            double strength = strength(a, b);
+            if (states.decide(pair, strength, now)) {
+                if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {
+                    log.fine(pair + " in range: " + strength + " dBm");
+                    listener.connectionInRange(pair.first(), pair.second());
+                }
+            } else if (hub.breakConnectionsForPair(pair.first(), pair.second())) {
+                log.fine(pair + " out of range: " + strength + " dBm at " + metres(a.distanceTo(b)));
+                listener.connectionOutOfRange(pair.first(), pair.second(), strength, a.distanceTo(b));
+            }
+        }
+    }
+
+    private void lost(IOException e) {
+        String reason = e.getMessage() == null ? e.toString() : e.getMessage();
+        if (trouble == null) {
+            troubleSince = System.nanoTime();
+            log.warning("lost the simulator at " + where() + ": " + reason + "; keeping the last known link state and reconnecting");
+        } else if (!reason.equals(trouble)) {
+            log.fine("the simulator at " + where() + " is still unusable: " + reason);
+        }
+        trouble = reason;
+    }
+
+    private void back() {
+        if (trouble != null) {
+            long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - troubleSince);
+            log.info("the simulator at " + where() + " answers again after " + seconds + " s");
+            trouble = null;
+        }
+    }
+
+    private synchronized void closeConnection() {
+        if (connection != null) {
+            connection.close();
+            connection = null;
+        }
+    }
+
+    private String where() {
+        return host + ":" + port;
+    }
+
+    private static String metres(double metres) {
+        return String.format(java.util.Locale.ROOT, "%.2f m", metres);
+    }
+}

@@ -1,0 +1,174 @@
+package org.usarsim.wss.model.distance;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+/**
+ * Reads the simulator's replies:
+ * {@code POSITIONS {Robots 2} {Name R1 Location 1.25,-3.0,0.45 BatteryEmpty False} {Name R2 ...}} and
+ * {@code NUMOBS {From a} {To b} {ObstCount 3.0000}}. Extra whitespace is tolerated; anything else
+ * is a {@link SimulatorReplyException} naming what is wrong.
+ */
+final class SimulatorReplies {
+
+    static final String POSITIONS = "POSITIONS";
+    static final String NUMOBS = "NUMOBS";
+
+    private SimulatorReplies() {
+    }
+
+    /** The type of a reply line: its first word. */
+    static String type(String line) {
+        String stripped = line.strip();
+        int end = 0;
+        while (end < stripped.length() && !Character.isWhitespace(stripped.charAt(end)) && stripped.charAt(end) != '{') {
+            end++;
+        }
+        return stripped.substring(0, end);
+    }
+
+    /** The robots of a POSITIONS line, by name, in the order given. */
+    static Map<String, RobotState> positions(String line) throws SimulatorReplyException {
+        List<List<String>> segments = segments(line, POSITIONS);
+        if (segments.isEmpty()) {
+            throw malformed(line, "no {Robots n}");
+        }
+        List<String> count = segments.get(0);
+        if (count.size() != 2 || !count.get(0).equals("Robots")) {
+            throw malformed(line, "it does not start with {Robots n}");
+        }
+        int robots;
+        try {
+            robots = Integer.parseInt(count.get(1));
+        } catch (NumberFormatException e) {
+            throw malformed(line, "the robot count is not a number");
+        }
+        if (robots != segments.size() - 1) {
+            throw malformed(line, "it says " + robots + " robots but lists " + (segments.size() - 1));
+        }
+        Map<String, RobotState> result = new LinkedHashMap<>();
+        for (List<String> segment : segments.subList(1, segments.size())) {
+            RobotState robot = robot(segment, line);
+            if (result.put(robot.name(), robot) != null) {
+                throw malformed(line, "robot " + robot.name() + " is listed twice");
+            }
+        }
+        return result;
+    }
+
+    private static RobotState robot(List<String> segment, String line) throws SimulatorReplyException {
+        if (segment.size() % 2 != 0) {
+            throw malformed(line, "a robot's fields are not key-value pairs: " + String.join(" ", segment));
+        }
+        String name = null;
+        double[] location = null;
+        boolean batteryEmpty = false;
+        for (int i = 0; i < segment.size(); i += 2) {
+            String value = segment.get(i + 1);
+            switch (segment.get(i)) {
+                case "Name" -> name = value;
+                case "Location" -> location = location(value, line);
+                case "BatteryEmpty" -> batteryEmpty = bool(value, line);
+                default -> {
+                    // Fields we do not use (a newer simulator may add some) are ignored.
+                }
+            }
+        }
+        if (name == null || location == null) {
+            throw malformed(line, "a robot without Name or Location: {" + String.join(" ", segment) + "}");
+        }
+        return new RobotState(name, location[0], location[1], location[2], batteryEmpty);
+    }
+
+    private static double[] location(String value, String line) throws SimulatorReplyException {
+        String[] parts = value.split(",", -1);
+        if (parts.length != 3) {
+            throw malformed(line, "location " + value + " is not x,y,z");
+        }
+        double[] xyz = new double[3];
+        for (int i = 0; i < 3; i++) {
+            try {
+                xyz[i] = Double.parseDouble(parts[i]);
+            } catch (NumberFormatException e) {
+                throw malformed(line, "location " + value + " is not x,y,z");
+            }
+            if (!Double.isFinite(xyz[i])) {
+                throw malformed(line, "location " + value + " is not finite");
+            }
+        }
+        return xyz;
+    }
+
+    private static boolean bool(String value, String line) throws SimulatorReplyException {
+        if (value.equalsIgnoreCase("True")) {
+            return true;
+        }
+        if (value.equalsIgnoreCase("False")) {
+            return false;
+        }
+        throw malformed(line, "BatteryEmpty " + value + " is not True or False");
+    }
+
+    /** A NUMOBS reply: the pair it is for and the count, NaN when the simulator does not know (negative). */
+    record ObstacleCount(NamePair pair, double count) {
+    }
+
+    static ObstacleCount obstacles(String line) throws SimulatorReplyException {
+        Map<String, String> fields = new LinkedHashMap<>();
+        for (List<String> segment : segments(line, NUMOBS)) {
+            if (segment.size() != 2) {
+                throw malformed(line, "{" + String.join(" ", segment) + "} is not {Key Value}");
+            }
+            fields.put(segment.get(0), segment.get(1));
+        }
+        String from = fields.get("From");
+        String to = fields.get("To");
+        String count = fields.get("ObstCount");
+        if (from == null || to == null || count == null) {
+            throw malformed(line, "it needs From, To and ObstCount");
+        }
+        double value;
+        try {
+            value = Double.parseDouble(count);
+        } catch (NumberFormatException e) {
+            throw malformed(line, "ObstCount " + count + " is not a number");
+        }
+        return new ObstacleCount(NamePair.of(from, to), value >= 0 && Double.isFinite(value) ? value : Double.NaN);
+    }
+
+    /** The {...} segments after the type word, each as its whitespace-separated words. */
+    private static List<List<String>> segments(String line, String type) throws SimulatorReplyException {
+        String rest = line.strip();
+        if (!type(rest).equals(type)) {
+            throw malformed(line, "it is not a " + type + " reply");
+        }
+        rest = rest.substring(type.length());
+        List<List<String>> segments = new ArrayList<>();
+        int i = 0;
+        while (i < rest.length()) {
+            char c = rest.charAt(i);
+            if (Character.isWhitespace(c)) {
+                i++;
+            } else if (c == '{') {
+                int close = rest.indexOf('}', i);
+                int nested = rest.indexOf('{', i + 1);
+                if (close < 0 || (nested >= 0 && nested < close)) {
+                    throw malformed(line, "a { is not closed");
+                }
+                String inside = rest.substring(i + 1, close).strip();
+                segments.add(inside.isEmpty() ? List.of() : List.of(inside.split("\\s+")));
+                i = close + 1;
+            } else {
+                throw malformed(line, "text outside {...}");
+            }
+        }
+        return segments;
+    }
+
+    private static SimulatorReplyException malformed(String line, String why) {
+        String shown = line.length() > 200 ? line.substring(0, 200) + "..." : line;
+        return new SimulatorReplyException("malformed reply (" + why + "): " + shown);
+    }
+}

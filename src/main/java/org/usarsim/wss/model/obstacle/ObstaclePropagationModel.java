@@ -1,0 +1,80 @@
+package org.usarsim.wss.model.obstacle;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.distance.NamePair;
+import org.usarsim.wss.model.distance.RobotState;
+import org.usarsim.wss.model.distance.SimulatorConnection;
+import org.usarsim.wss.model.distance.SimulatorModel;
+
+/**
+ * The original's realisation of the manual's RayTracing idea: the DistanceOnly strength minus a
+ * fixed attenuation per obstacle between the two robots, S = Pd0 - 10 N log10(d / d0) - k A. The
+ * obstacle count k comes from the simulator ({@code GETOBS}) and is cached per pair until either
+ * robot moves more than the cache distance. Pessimistic: a pair with an unknown position or
+ * count has NaN strength and may not connect. Registered robots absent from a non-empty position
+ * list are kicked.
+ */
+public final class ObstaclePropagationModel extends SimulatorModel {
+
+    private double attenuation = 6.325;
+    private double cacheDistance = 1.0;
+    private volatile ObstacleCounts counts = new ObstacleCounts(cacheDistance);
+
+    @Override
+    public void configure(ModelSettings settings) {
+        super.configure(settings);
+        attenuation = settings.getDouble("obstacle.attenuation", attenuation);
+        cacheDistance = settings.getDouble("obstacle.cacheDistance", cacheDistance);
+    }
+
+    @Override
+    public synchronized void start() throws ModelStartException {
+        if (!(attenuation >= 0 && cacheDistance >= 0)) {
+            throw new ModelStartException("obstacle.attenuation and obstacle.cacheDistance must be 0 or more");
+        }
+        counts = new ObstacleCounts(cacheDistance);
+        super.start();
+    }
+
+    @Override
+    protected double strength(RobotState a, RobotState b) {
+        return pathLoss().strength(a.distanceTo(b)) - counts.count(a, b) * attenuation;
+    }
+
+    @Override
+    protected boolean allowsUnknownRobots() {
+        return false;
+    }
+
+    @Override
+    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+        return !listed.isEmpty();
+    }
+
+    /** Asks the simulator, in one batch, for the counts of the pairs whose cached count no longer holds. */
+    @Override
+    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
+            throws IOException {
+        ObstacleCounts known = counts;
+        Set<NamePair> current = new HashSet<>(pairs);
+        known.retain(current::contains);
+        List<NamePair> missing = new ArrayList<>();
+        for (NamePair pair : pairs) {
+            if (Double.isNaN(known.count(listed.get(pair.first()), listed.get(pair.second())))) {
+                missing.add(pair);
+            }
+        }
+        simulator.obstacles(missing).forEach((pair, count) -> {
+            if (!Double.isNaN(count)) {
+                known.put(pair, count, listed);
+            }
+        });
+    }
+}

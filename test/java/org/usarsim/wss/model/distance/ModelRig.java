@@ -1,0 +1,138 @@
+package org.usarsim.wss.model.distance;
+
+import java.net.ServerSocket;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+import org.usarsim.wss.hub.TestHub;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.hub.Wait;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * A simulator model under test, for real: a {@link FakeSimulator}, the model polling it every
+ * 100 ms (unless the settings say otherwise), a hub on 127.0.0.1, the hub's events and the
+ * model's log lines as they happen.
+ */
+public final class ModelRig implements AutoCloseable {
+
+    /** One event as it happened: its words (type, then arguments) and when. */
+    public record Event(String type, List<Object> args, long nanos) {
+        @Override
+        public String toString() {
+            return type + args;
+        }
+    }
+
+    public final FakeSimulator sim;
+    public final SimulatorModel model;
+    public final TestHub server;
+    public final List<Event> events = new CopyOnWriteArrayList<>();
+    public final List<LogRecord> log = new CopyOnWriteArrayList<>();
+    private final List<AutoCloseable> toClose = new ArrayList<>();
+    private final Map<String, ServerSocket> accepting = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Logger logger;
+    private final Handler handler = new Handler() {
+        @Override
+        public void publish(LogRecord record) {
+            log.add(record);
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+        }
+    };
+
+    public ModelRig(SimulatorModel model, Map<String, String> settings) throws Exception {
+        this.model = model;
+        sim = new FakeSimulator();
+        Map<String, String> all = new LinkedHashMap<>();
+        all.put("usarsim.host", "127.0.0.1");
+        all.put("usarsim.port", Integer.toString(sim.port()));
+        all.put("usarsim.interval", "100");
+        all.put("usarsim.timeout", "300");
+        all.putAll(settings);
+        model.configure(new ModelSettings(all));
+        logger = Logger.getLogger(model.getClass().getName());
+        logger.setLevel(Level.FINE);
+        logger.addHandler(handler);
+        server = new TestHub(model, true, 65536);
+        server.hub.addListener(new WssEventListener() {
+            @Override
+            public void robotDeregistered(String robot) {
+                add("DEREGISTERED", robot);
+            }
+
+            @Override
+            public void robotOutOfBattery(String robot) {
+                add("OUT_OF_BATTERY", robot);
+            }
+
+            @Override
+            public void connectionOutOfRange(String from, String to, double strength, double distance) {
+                add("OUT_OF_RANGE", from, to, strength, distance);
+            }
+
+            @Override
+            public void connectionInRange(String from, String to) {
+                add("IN_RANGE", from, to);
+            }
+        });
+    }
+
+    private void add(String type, Object... args) {
+        events.add(new Event(type, List.of(args), System.nanoTime()));
+    }
+
+    /** The events of these types, in order. */
+    public List<Event> events(String... types) {
+        List<String> wanted = List.of(types);
+        return events.stream().filter(e -> wanted.contains(e.type())).toList();
+    }
+
+    /** The model's log lines at this level whose text contains {@code part}. */
+    public long logLines(Level level, String part) {
+        return log.stream().filter(r -> r.getLevel().equals(level) && r.getMessage().contains(part)).count();
+    }
+
+    /** Places the robot in the simulator and registers it, accepting connections on one port. */
+    public TestRobot robot(String name, double x, double y, double z) throws Exception {
+        sim.place(name, x, y, z);
+        TestRobot robot = server.robot();
+        toClose.add(robot);
+        accepting.put(name, robot.initAccepting(name));
+        return robot;
+    }
+
+    /** The socket on which the robot registered by {@link #robot} accepts connections. */
+    public ServerSocket accepts(String name) {
+        return accepting.get(name);
+    }
+
+    /** Waits until the model has completed {@code count} more polls. */
+    public void polls(int count) {
+        long target = sim.getposCount() + count + 1;
+        Wait.until(count + " polls of the simulator", () -> sim.getposCount() >= target);
+    }
+
+    @Override
+    public void close() throws Exception {
+        for (AutoCloseable closeable : toClose) {
+            closeable.close();
+        }
+        server.close();
+        sim.close();
+        logger.removeHandler(handler);
+    }
+}

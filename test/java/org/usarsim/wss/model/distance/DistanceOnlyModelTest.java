@@ -95,7 +95,7 @@ class DistanceOnlyModelTest {
         a.initAccepting("A");
         ServerSocket bAccepts = b.initAccepting("B");
         assertEquals("SS {Robot B} {Strength NaN} {Error Model.Returned.NaN}", a.ask("GETSS {Robot B}"));
-        Conn conn = Conn.open(a, a.dns("B", 0), bAccepts);
+        DataConnection conn = DataConnection.open(a, a.dns("B", 0), bAccepts);
         conn.assertPasses("with unknown positions");
         conn.close();
         a.close();
@@ -112,13 +112,13 @@ class DistanceOnlyModelTest {
         ServerSocket bAccepts = rig.accepts("B");
         rig.polls(1);
         int port = a.dns("B", 0);
-        Conn conn = Conn.open(a, port, bAccepts);
+        DataConnection conn = DataConnection.open(a, port, bAccepts);
         conn.assertPasses("in range");
 
         long moved = System.nanoTime();
         rig.sim.place("B", 100, 0, 0);
-        assertClosedByPeer(conn.source, "A's end");
-        assertClosedByPeer(conn.target, "B's end");
+        assertClosedByPeer(conn.source(), "A's end");
+        assertClosedByPeer(conn.target(), "B's end");
         TestRobot source = a;
         Wait.until("the WSS port refuses", () -> refuses(source, port));
         long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - moved);
@@ -126,24 +126,26 @@ class DistanceOnlyModelTest {
         assertEquals(port, a.dns("B", 0), "the number is kept while out of range");
         assertEquals(Replies.signal("B", new PathLoss(-49.67, 3, 2, -93).strength(100)), a.ask("GETSS {Robot B}"));
 
+        Wait.until("the event", () -> rig.events("OUT_OF_RANGE").size() == 1);
         List<ModelRig.Event> out = rig.events("OUT_OF_RANGE");
         assertEquals(1, out.size(), rig.events.toString());
         assertEquals(List.of("A", "B", new PathLoss(-49.67, 3, 2, -93).strength(100), 100.0), out.get(0).args());
 
         rig.sim.place("B", 20, 0, 0);
-        Conn[] again = new Conn[1];
+        DataConnection[] again = new DataConnection[1];
         Wait.until("the same WSS port listens again", () -> (again[0] = openIfListening(source, port, bAccepts)) != null);
         assertEquals(port, a.dns("B", 0));
         again[0].assertPasses("back in range");
+        Wait.until("the event", () -> rig.events("IN_RANGE").size() == 1);
         assertEquals(List.of("IN_RANGE[A, B]"), rig.events("IN_RANGE").stream().map(Object::toString).toList());
         again[0].close();
         conn.close();
     }
 
     /** A connection through the port, or null while it refuses. */
-    private static Conn openIfListening(TestRobot robot, int port, ServerSocket targetAccepts) {
+    private static DataConnection openIfListening(TestRobot robot, int port, ServerSocket targetAccepts) {
         try {
-            return Conn.open(robot, port, targetAccepts);
+            return DataConnection.open(robot, port, targetAccepts);
         } catch (ConnectException e) {
             return null;
         } catch (IOException e) {
@@ -201,7 +203,7 @@ class DistanceOnlyModelTest {
         rig.robot("B", 10, 0, 0);
         rig.polls(1);
         ServerSocket bAccepts = rig.accepts("B");
-        Conn conn = Conn.open(a, a.dns("B", 0), bAccepts);
+        DataConnection conn = DataConnection.open(a, a.dns("B", 0), bAccepts);
         String before = a.ask("GETSS {Robot B}");
 
         rig.sim.mode(FakeSimulator.Mode.SILENT);
@@ -217,7 +219,7 @@ class DistanceOnlyModelTest {
 
         rig.sim.mode(FakeSimulator.Mode.ANSWER);
         Wait.until("the model says the simulator is back", () -> rig.logLines(Level.INFO, "answers again") == 1);
-        assertClosedByPeer(conn.source, "A's end once B's move is known");
+        assertClosedByPeer(conn.source(), "A's end once B's move is known");
         assertEquals(1, rig.logLines(Level.WARNING, "lost the simulator"));
     }
 
@@ -341,35 +343,4 @@ class DistanceOnlyModelTest {
     }
 
     // ---- helpers ----
-
-    /** A data connection from a robot through a WSS port to the target's accepting socket. */
-    static final class Conn implements AutoCloseable {
-        final Socket source;
-        final Socket target;
-
-        private Conn(Socket source, Socket target) {
-            this.source = source;
-            this.target = target;
-        }
-
-        static Conn open(TestRobot from, int wssPort, ServerSocket targetAccepts) throws IOException {
-            Socket source = from.connect(wssPort);
-            Socket target = targetAccepts.accept();
-            target.setSoTimeout(TestRobot.TIMEOUT_MS);
-            return new Conn(source, target);
-        }
-
-        void assertPasses(String when) throws IOException {
-            source.getOutputStream().write(("ping " + when).getBytes(StandardCharsets.UTF_8));
-            assertEquals("ping " + when, readExactly(target.getInputStream(), ("ping " + when).length()), when);
-            target.getOutputStream().write(("pong " + when).getBytes(StandardCharsets.UTF_8));
-            assertEquals("pong " + when, readExactly(source.getInputStream(), ("pong " + when).length()), when);
-        }
-
-        @Override
-        public void close() throws IOException {
-            source.close();
-            target.close();
-        }
-    }
 }

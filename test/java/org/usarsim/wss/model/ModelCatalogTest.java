@@ -155,6 +155,20 @@ class ModelCatalogTest {
     }
 
     @Test
+    void aJarFindsItsDependenciesThroughItsManifestButOnlyItsOwnModels() throws Exception {
+        // The dependency lists a model of its own: it is not a plugin, so that model is not loaded.
+        PluginJars.jar(dir.resolve("lib/helper.jar"), classes, List.of("Base", "Helper", "OtherModel"), List.of("OtherModel"));
+        Path jar = PluginJars.jar(dir.resolve("needs-helper.jar"), classes, List.of("NeedsHelper"), List.of("NeedsHelper"),
+                "lib/helper.jar");
+        ModelCatalog catalog = ModelCatalog.load(APPLICATION, List.of(dir));
+        List<String> names = catalog.names();
+        assertEquals("NeedsHelper", names.get(names.size() - 1));
+        assertNull(catalog.find("OtherModel"), "neither a plugin of its own (lib/ is not searched) nor one of needs-helper.jar");
+        assertEquals(List.of("loaded propagation model NeedsHelper from " + jar), messages(Level.INFO));
+        assertTrue(messages(Level.WARNING).isEmpty(), messages(Level.WARNING).toString());
+    }
+
+    @Test
     void foldersAreSearchedInOrderAndTheFirstOfTwoNamesWins() throws Exception {
         Path first = PluginJars.jar(dir.resolve("one/z.jar"), classes, List.of("Base", "FixedStrengthModel"), List.of("FixedStrengthModel"));
         Path second = PluginJars.jar(dir.resolve("two/a.jar"), classes, List.of("Base", "FixedStrengthModel"), List.of("FixedStrengthModel"));

@@ -138,8 +138,18 @@ public final class PluginJars {
      * file listing these models (simple names; a name without a class is fine); none: no services file.
      */
     public static Path jar(Path jar, Path classes, List<String> classNames, List<String> services) throws IOException {
+        return jar(jar, classes, classNames, services, null);
+    }
+
+    /** The same, with a manifest whose Class-Path names these jars (relative to this one); null: none. */
+    public static Path jar(Path jar, Path classes, List<String> classNames, List<String> services, String classPath)
+            throws IOException {
         Files.createDirectories(jar.getParent());
-        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar), manifest(null))) {
+        Manifest manifest = manifest(null);
+        if (classPath != null) {
+            manifest.getMainAttributes().put(Attributes.Name.CLASS_PATH, classPath);
+        }
+        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar), manifest)) {
             for (String name : classNames) {
                 String entry = PACKAGE.replace('.', '/') + "/" + name + ".class";
                 put(out, entry, Files.readAllBytes(classes.resolve(entry)));

@@ -5,6 +5,7 @@ import java.net.MalformedURLException;
 import java.net.URISyntaxException;
 import java.net.URL;
 import java.net.URLClassLoader;
+import java.nio.file.FileSystemNotFoundException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.CodeSource;
@@ -47,7 +48,7 @@ public final class PluginFolder {
             if (folder != null) {
                 return Optional.of(folder.resolve("plugins"));
             }
-        } catch (URISyntaxException | IllegalArgumentException | java.nio.file.FileSystemNotFoundException e) {
+        } catch (URISyntaxException | IllegalArgumentException | FileSystemNotFoundException e) {
             // not a file: no folder beside it
         }
         LOG.fine("no plugins folder: " + type.getName() + " was not loaded from a file (" + location + ")");

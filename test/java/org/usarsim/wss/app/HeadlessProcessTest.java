@@ -276,14 +276,14 @@ class HeadlessProcessTest {
         return socket;
     }
 
-    private static void send(Socket socket, String text) throws IOException {
+    static void send(Socket socket, String text) throws IOException {
         OutputStream out = socket.getOutputStream();
         out.write(text.getBytes(StandardCharsets.US_ASCII));
         out.flush();
     }
 
     /** One reply line, its CR LF included (the socket's timeout bounds the wait). */
-    private static String readLine(Socket socket) throws IOException {
+    static String readLine(Socket socket) throws IOException {
         InputStream in = socket.getInputStream();
         ByteArrayOutputStream line = new ByteArrayOutputStream();
         int b;
@@ -308,7 +308,7 @@ class HeadlessProcessTest {
     }
 
     /** A child server process, its standard output read line by line and its standard error collected. */
-    private static final class Server {
+    static final class Server {
 
         /** Put on the queue when standard output ends. */
         private static final String END = new String("<end of standard output>");

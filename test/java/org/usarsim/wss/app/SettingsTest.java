@@ -33,6 +33,7 @@ class SettingsTest {
             Map.entry("wss.matchSourceAddress", "true"),
             Map.entry("wss.chunkSize", "65536"),
             Map.entry("wss.socketBuffer", "4194304"),
+            Map.entry("wss.pluginDir", ""),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -82,6 +83,7 @@ class SettingsTest {
         assertEquals("NoopPropagationModel", settings.modelName());
         assertFalse(settings.eventLog());
         assertEquals(Level.INFO, settings.logLevel());
+        assertTrue(settings.pluginDir().isEmpty(), "no plugin folder unless one is named");
     }
 
     @Test
@@ -175,6 +177,22 @@ class SettingsTest {
     })
     void acceptsBoundaryValues(String key, String value) throws Exception {
         assertEquals(value, Settings.of(props(key, value), "t").get(key));
+    }
+
+    @Test
+    void pluginDirNamesAnExistingFolder() throws Exception {
+        Path plugins = Files.createDirectories(dir.resolve("my plugins"));
+        Settings settings = Settings.of(props("wss.pluginDir", " " + plugins + " "), "t");
+        assertEquals(plugins, settings.pluginDir().orElseThrow());
+        assertTrue(Settings.of(props("wss.pluginDir", ""), "t").pluginDir().isEmpty(), "empty: none");
+    }
+
+    @Test
+    void pluginDirThatIsNoFolder() throws Exception {
+        SettingsException absent = rejected("wss.pluginDir", dir.resolve("absent").toString());
+        assertTrue(absent.getMessage().contains("directory"), absent.getMessage());
+        rejected("wss.pluginDir", write("wss.port=1\n").toString());
+        rejected("wss.pluginDir", "nul\u0000char");
     }
 
     // ---- modelSettings() and hubConfig() ----

@@ -2,12 +2,15 @@ package org.usarsim.wss.app;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import sun.misc.Signal;
 
@@ -60,7 +63,10 @@ public final class Main {
         if (!asked) {
             Logger.getLogger(Main.class.getName()).info("there is no window yet: running headless");
         }
-        ModelCatalog catalog = ModelCatalog.load(Main.class.getClassLoader());
+        List<Path> pluginFolders = new ArrayList<>();
+        PluginFolder.besideCodeOf(Main.class).ifPresent(pluginFolders::add);
+        settings.pluginDir().ifPresent(pluginFolders::add);
+        ModelCatalog catalog = ModelCatalog.load(Main.class.getClassLoader(), pluginFolders);
         PropagationModel model = catalog.find(settings.modelName());
         if (model == null) {
             fail(2, "wss.model = '" + settings.modelName() + "' is not a known model; known: " + String.join(", ", catalog.names()));

@@ -8,9 +8,11 @@ import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Properties;
 import java.util.function.Predicate;
 import java.util.logging.Level;
@@ -39,6 +41,7 @@ final class Settings {
         KEYS.put("wss.matchSourceAddress", new Key("true", "true or false", Settings::isBoolean));
         KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 1048576", v -> isInt(v, 1, 1024 * 1024)));
         KEYS.put("wss.socketBuffer", new Key("4194304", "a whole number of bytes from 0 to 268435456 (0: the OS decides)", v -> isInt(v, 0, 256 * 1024 * 1024)));
+        KEYS.put("wss.pluginDir", new Key("", "an existing directory (empty: none)", v -> v.isEmpty() || isDirectory(v)));
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
         KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));
         KEYS.put("usarsim.port", new Key("7435", "a port number from 1 to 65535", v -> isInt(v, 1, 65535)));
@@ -108,6 +111,12 @@ final class Settings {
         return Path.of(get("wss.eventLogDir"));
     }
 
+    /** The folder named by wss.pluginDir, whose jars are loaded as model plugins; empty when none is named. */
+    Optional<Path> pluginDir() {
+        String value = get("wss.pluginDir");
+        return value.isEmpty() ? Optional.empty() : Optional.of(Path.of(value));
+    }
+
     Level logLevel() {
         return Level.parse(get("wss.logLevel"));
     }
@@ -143,6 +152,14 @@ final class Settings {
             double number = Double.parseDouble(value);
             return Double.isFinite(number) && (exclusive ? number > min : number >= min);
         } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+
+    private static boolean isDirectory(String value) {
+        try {
+            return Files.isDirectory(Path.of(value));
+        } catch (InvalidPathException e) {
             return false;
         }
     }

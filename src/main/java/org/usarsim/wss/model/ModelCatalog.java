@@ -1,57 +1,188 @@
 package org.usarsim.wss.model;
 
+import java.io.IOException;
+import java.net.URLClassLoader;
+import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
-import java.util.logging.Level;
 import java.util.logging.Logger;
 
-/** The propagation models found with {@link ServiceLoader}, NoopPropagationModel first. */
+/**
+ * The propagation models: the built-in ones, found with {@link ServiceLoader} on the application's
+ * class path, NoopPropagationModel first; then those of the plugin jars in each given folder
+ * ({@link PluginFolder}), folder by folder, jars in name order. A model that fails to load, or whose
+ * name is taken by one loaded before it, is reported with a WARNING and skipped.
+ */
 public final class ModelCatalog {
 
     private static final Logger LOG = Logger.getLogger(ModelCatalog.class.getName());
 
-    private final List<PropagationModel> models;
+    private static final String NOOP = "NoopPropagationModel";
 
-    private ModelCatalog(List<PropagationModel> models) {
-        this.models = List.copyOf(models);
+    /** More failures than this from one source: its ServiceLoader is not getting anywhere. */
+    private static final int MAX_FAILURES = 100;
+
+    /** The models by name, in load order. */
+    private final Map<String, PropagationModel> models;
+
+    private ModelCatalog(Map<String, PropagationModel> models) {
+        this.models = models;
     }
 
-    /** Loads every model the class loader offers; one that fails to load is logged and skipped. */
+    /** The built-in models only. */
     public static ModelCatalog load(ClassLoader loader) {
-        List<PropagationModel> found = new ArrayList<>();
-        var iterator = ServiceLoader.load(PropagationModel.class, loader).iterator();
+        return load(loader, List.of());
+    }
+
+    /**
+     * The built-in models that {@code loader} offers, then the plugins of each folder in order
+     * (a folder that does not exist has none). Never fails: what cannot be loaded is logged.
+     */
+    public static ModelCatalog load(ClassLoader loader, List<Path> pluginFolders) {
+        Map<String, PropagationModel> models = new LinkedHashMap<>();
+        Map<String, String> sources = new LinkedHashMap<>();
+        List<Named> builtIn = instantiate(ServiceLoader.load(PropagationModel.class, loader), "the class path");
+        builtIn.sort((a, b) -> Boolean.compare(!a.name().equals(NOOP), !b.name().equals(NOOP)));
+        for (Named model : builtIn) {
+            add(models, sources, model, "the class path");
+        }
+        List<Path> seen = new ArrayList<>();
+        for (Path folder : pluginFolders) {
+            Path key = identity(folder);
+            if (seen.contains(key)) {
+                LOG.fine("plugin folder " + folder + " was searched already");
+                continue;
+            }
+            seen.add(key);
+            for (Path jar : PluginFolder.jars(folder)) {
+                PluginFolder.open(jar, loader).ifPresent(jarLoader -> loadPlugin(jar, jarLoader, models, sources));
+            }
+        }
+        return new ModelCatalog(models);
+    }
+
+    private static void loadPlugin(Path jar, URLClassLoader jarLoader, Map<String, PropagationModel> models,
+            Map<String, String> sources) {
+        boolean used = false;
+        for (Named model : instantiate(ServiceLoader.load(PropagationModel.class, jarLoader), jar.toString())) {
+            if (add(models, sources, model, jar.toString())) {
+                LOG.info("loaded propagation model " + model.name() + " from " + jar);
+                used = true;
+            }
+        }
+        if (!used) {
+            try {
+                jarLoader.close();
+            } catch (IOException e) {
+                LOG.fine("cannot close the class loader of " + jar + ": " + e);
+            }
+        }
+    }
+
+    /** Adds the model unless its name is taken (first wins); whether it was added. */
+    private static boolean add(Map<String, PropagationModel> models, Map<String, String> sources, Named model, String source) {
+        String taken = sources.get(model.name());
+        if (taken != null) {
+            LOG.warning("skipping a propagation model in " + source + ": " + model.model().getClass().getName()
+                    + " is called " + model.name() + ", the name of a model already loaded from " + taken);
+            return false;
+        }
+        models.put(model.name(), model.model());
+        sources.put(model.name(), source);
+        return true;
+    }
+
+    /** A model and the name it gave when it was loaded. */
+    private record Named(String name, PropagationModel model) {
+    }
+
+    /**
+     * Every model the loader builds, with its name; each one that throws while being found, built
+     * or named is logged as a WARNING naming {@code source} and the reason, and skipped.
+     */
+    private static List<Named> instantiate(ServiceLoader<PropagationModel> loader, String source) {
+        List<Named> found = new ArrayList<>();
+        Iterator<PropagationModel> iterator = loader.iterator();
+        int failures = 0;
         while (true) {
+            PropagationModel model = null;
             try {
                 if (!iterator.hasNext()) {
                     break;
                 }
-                found.add(iterator.next());
-            } catch (ServiceConfigurationError | RuntimeException | LinkageError e) {
-                LOG.log(Level.WARNING, "skipping a propagation model that failed to load: " + e.getMessage(), e);
+                model = iterator.next();
+                String name = model.name();
+                if (name == null || name.isBlank()) {
+                    LOG.warning("skipping a propagation model in " + source + ": " + model.getClass().getName()
+                            + ".name() returned " + (name == null ? "null" : "'" + name + "'"));
+                } else {
+                    found.add(new Named(name, model));
+                }
+            } catch (RuntimeException | Error e) {
+                if (e instanceof VirtualMachineError && !(e instanceof StackOverflowError)) {
+                    throw e; // out of memory, or the JVM itself broke: not something a plugin did alone
+                }
+                String what = model == null ? "" : model.getClass().getName() + ".name() failed: ";
+                LOG.warning("skipping a propagation model in " + source + ": " + what + reason(e));
+                if (++failures == MAX_FAILURES) {
+                    LOG.warning("giving up on " + source + " after " + failures + " failures");
+                    break;
+                }
             }
         }
-        found.sort((a, b) -> Boolean.compare(!isNoop(a), !isNoop(b)));
-        return new ModelCatalog(found);
+        return found;
     }
 
-    private static boolean isNoop(PropagationModel model) {
-        return model.name().equals("NoopPropagationModel");
+    /**
+     * The error's message without the service's name, its root cause, and where that was thrown
+     * when that is the model's code (a frame outside the JDK's modules).
+     */
+    static String reason(Throwable e) {
+        String prefix = PropagationModel.class.getName() + ": ";
+        String message = e instanceof ServiceConfigurationError && e.getMessage() != null && e.getMessage().startsWith(prefix)
+                ? e.getMessage().substring(prefix.length()) : e.toString();
+        Throwable root = e;
+        while (root.getCause() != null && root.getCause() != root) {
+            root = root.getCause();
+        }
+        StringBuilder reason = new StringBuilder(message);
+        if (root != e) {
+            reason.append(": ").append(root);
+        }
+        StackTraceElement[] trace = root.getStackTrace();
+        if (trace.length > 0 && trace[0].getModuleName() == null) {
+            reason.append(" (at ").append(trace[0]).append(')');
+        }
+        return reason.toString();
+    }
+
+    /** The folder as a file system object, so that one folder named twice is searched once. */
+    private static Path identity(Path folder) {
+        try {
+            return folder.toRealPath();
+        } catch (IOException | RuntimeException e) {
+            return folder.toAbsolutePath().normalize();
+        }
     }
 
     /** The model named by its {@link PropagationModel#name()}, its class's simple or its qualified name; or null. */
     public PropagationModel find(String name) {
-        for (PropagationModel model : models) {
-            Class<?> type = model.getClass();
-            if (model.name().equals(name) || type.getSimpleName().equals(name) || type.getName().equals(name)) {
-                return model;
+        for (Map.Entry<String, PropagationModel> entry : models.entrySet()) {
+            Class<?> type = entry.getValue().getClass();
+            if (entry.getKey().equals(name) || type.getSimpleName().equals(name) || type.getName().equals(name)) {
+                return entry.getValue();
             }
         }
         return null;
     }
 
+    /** The names of the models, in load order: NoopPropagationModel, the other built-ins, the plugins. */
     public List<String> names() {
-        return models.stream().map(PropagationModel::name).toList();
+        return List.copyOf(models.keySet());
     }
 }

@@ -1,0 +1,143 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.app.HeadlessProcessTest.Server;
+import org.usarsim.wss.model.PluginJars;
+
+/**
+ * Model plugins in the real server process: from the folder named by wss.pluginDir, and from the
+ * plugins/ folder beside wss.jar when run with {@code java -jar}.
+ */
+@Timeout(value = 60, unit = TimeUnit.SECONDS)
+class PluginProcessTest {
+
+    private static final int WAIT_MS = 10_000;
+
+    @TempDir
+    static Path compiled;
+
+    private static Path classes;
+
+    @TempDir
+    Path dir;
+
+    private final List<Server> servers = new ArrayList<>();
+    private final List<Socket> sockets = new ArrayList<>();
+
+    @BeforeAll
+    static void compilePlugins() throws IOException {
+        classes = PluginJars.compile(compiled);
+    }
+
+    @AfterEach
+    void stopEverything() throws Exception {
+        for (Socket socket : sockets) {
+            socket.close();
+        }
+        for (Server server : servers) {
+            server.kill();
+        }
+    }
+
+    @Test
+    void aPluginFromPluginDirIsSelectedAndAnswers() throws Exception {
+        Path plugins = dir.resolve("my plugins");
+        Path jar = PluginJars.fixedStrengthJar(plugins.resolve("fixed.jar"), classes);
+        Server server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+                config("wss.pluginDir = " + plugins, "wss.model = FixedStrength"));
+
+        Matcher listening = server.awaitListening();
+        assertEquals("FixedStrength", listening.group(2));
+        assertTrue(server.stdoutSoFar().stream().anyMatch(line -> line.endsWith("INFO loaded propagation model FixedStrength from " + jar)),
+                server.stdoutSoFar().toString());
+        assertStrength(Integer.parseInt(listening.group(1)), "-42.5");
+    }
+
+    @Test
+    void aPluginBesideWssJarIsSelectedAndAnswersEvenNextToABrokenOne() throws Exception {
+        Path app = dir.resolve("app");
+        Path wssJar = PluginJars.serverJar(app.resolve("wss.jar"));
+        Path jar = PluginJars.fixedStrengthJar(app.resolve("plugins").resolve("fixed.jar"), classes);
+        Path broken = PluginJars.jar(app.resolve("plugins").resolve("broken.jar"), classes, List.of("Base", "ConstructorThrows"),
+                List.of("ConstructorThrows"));
+        Server server = start(List.of("-jar", wssJar.toString()), config("wss.model = " + PluginJars.FIXED));
+
+        Matcher listening = server.awaitListening();
+        assertEquals("FixedStrength", listening.group(2));
+        List<String> log = server.stdoutSoFar();
+        assertTrue(log.stream().anyMatch(line -> line.endsWith("INFO loaded propagation model FixedStrength from " + jar)), log.toString());
+        assertTrue(log.stream().anyMatch(line -> line.contains("WARNING skipping a propagation model in " + broken)
+                && line.contains("the constructor fails")), log.toString());
+        assertStrength(Integer.parseInt(listening.group(1)), "-42.5");
+    }
+
+    @Test
+    void aPluginDirThatDoesNotExistExitsTwoBeforeBinding() throws Exception {
+        Path absent = dir.resolve("no such folder");
+        Server server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+                config("wss.pluginDir = " + absent));
+        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        String error = server.stderr().strip();
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+        assertTrue(error.contains("wss.pluginDir = '" + absent + "'"), "names the key and the value: " + error);
+        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+    }
+
+    // ---- helpers ----
+
+    /** Two robots register; B's strength as A sees it is the plugin's. */
+    private void assertStrength(int port, String strength) throws Exception {
+        Socket a = connect(port);
+        Socket b = connect(port);
+        HeadlessProcessTest.send(a, "INIT {Robot A} {Port 5000}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", HeadlessProcessTest.readLine(a));
+        HeadlessProcessTest.send(b, "INIT {Robot B} {Port 5001}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", HeadlessProcessTest.readLine(b));
+        HeadlessProcessTest.send(a, "GETSS {Robot B}\r\n");
+        assertEquals("SS {Robot B} {Strength " + strength + "}\r\n", HeadlessProcessTest.readLine(a));
+    }
+
+    private Path config(String... lines) throws IOException {
+        List<String> all = new ArrayList<>(List.of("wss.bindAddress = 127.0.0.1", "wss.port = 0"));
+        all.addAll(List.of(lines));
+        // Properties files treat a backslash as an escape: a Windows path needs it doubled.
+        all.replaceAll(line -> line.replace("\\", "\\\\"));
+        return Files.write(Files.createTempFile(dir, "wss", ".properties"), all, StandardCharsets.UTF_8);
+    }
+
+    private Server start(List<String> javaArguments, Path config) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(javaArguments);
+        command.addAll(List.of("--headless", "--config", config.toString()));
+        Server server = new Server(new ProcessBuilder(command).start());
+        servers.add(server);
+        return server;
+    }
+
+    private Socket connect(int port) throws IOException {
+        Socket socket = new Socket();
+        sockets.add(socket);
+        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), WAIT_MS);
+        socket.setSoTimeout(WAIT_MS);
+        return socket;
+    }
+}

@@ -52,8 +52,4 @@ final class LinkStates {
     void retainOnly(Collection<String> robots) {
         states.keySet().removeIf(pair -> !robots.contains(pair.first()) || !robots.contains(pair.second()));
     }
-
-    void clear() {
-        states.clear();
-    }
 }

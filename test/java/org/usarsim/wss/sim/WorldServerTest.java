@@ -179,7 +179,7 @@ class WorldServerTest {
     }
 
     @Test
-    void aLineOfJustUnderTheLimitIsOnlyIgnored() throws IOException {
+    void aLineOfExactlySixtyFourKibibytesIsOnlyIgnored() throws IOException {
         Socket client = connect();
         send(client, "x".repeat(64 * 1024) + "\r\nGETPOS\r\n");
         assertEquals(AT_10, readLine(client));

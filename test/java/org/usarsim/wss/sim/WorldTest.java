@@ -2,7 +2,6 @@ package org.usarsim.wss.sim;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -124,7 +123,7 @@ class WorldTest {
         World world = new World(List.of(), List.of());
         assertThrows(IllegalArgumentException.class, () -> world.at(-1));
         assertThrows(IllegalArgumentException.class, () -> world.at(Double.NaN));
-        assertSame(0, world.at(0).robots().size());
+        assertEquals(0, world.at(0).robots().size());
     }
 
     private static void assertAt(double x, double y, double z, Point actual) {

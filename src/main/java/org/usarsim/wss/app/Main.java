@@ -175,8 +175,9 @@ public final class Main {
         AtomicReference<WorldServer> running = new AtomicReference<>();
         Runnable stop = () -> {
             try {
-                if (running.get() != null) {
-                    running.get().close();
+                WorldServer server = running.get();
+                if (server != null) {
+                    server.close();
                 }
             } finally {
                 System.exit(0);

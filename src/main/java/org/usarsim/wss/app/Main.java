@@ -1,10 +1,14 @@
 package org.usarsim.wss.app;
 
 import java.io.IOException;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
@@ -12,16 +16,27 @@ import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.sim.WorldFileException;
+import org.usarsim.wss.sim.WorldServer;
 import sun.misc.Signal;
 
 /**
  * Starts the WSS. {@code --headless [--config FILE]} runs without a window, from built-in
- * defaults and the file. Exit codes: 0 after SIGTERM or Ctrl-C, 1 when the server cannot start
- * (control port in use, model will not start), 2 for a bad command line or configuration.
+ * defaults and the file. {@code --world FILE [--port N] [--bind ADDRESS]} runs a USARSim-compatible
+ * world server instead (docs/world.md). Exit codes: 0 after SIGTERM or Ctrl-C, 1 when the server
+ * cannot start (port in use, model will not start), 2 for a bad command line, configuration or world file.
  */
 public final class Main {
 
-    static final String USAGE = "usage: java -jar wss.jar [--headless] [--config FILE]";
+    static final String USAGE = "usage: java -jar wss.jar [--headless] [--config FILE]\n"
+            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]";
+
+    private static final String HELP = USAGE + "\n"
+            + "  --headless          run the WSS without a window\n"
+            + "  --config FILE       the WSS's properties file (docs/headless.md)\n"
+            + "  --world FILE        instead of the WSS, serve USARSim's position protocol from a world file (docs/world.md)\n"
+            + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default 7435)\n"
+            + "  --bind ADDRESS      the address the world server listens on (default 0.0.0.0: every interface)";
 
     private Main() {
     }
@@ -29,6 +44,9 @@ public final class Main {
     public static void main(String[] args) {
         Path config = null;
         boolean headless = false;
+        Path world = null;
+        String port = null;
+        String bind = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--headless":
@@ -40,13 +58,40 @@ public final class Main {
                     }
                     config = Path.of(args[++i]);
                     break;
+                case "--world":
+                case "--port":
+                case "--bind": {
+                    String option = args[i];
+                    if (i + 1 == args.length) {
+                        fail(2, option + " needs a value\n" + USAGE);
+                    }
+                    String value = args[++i];
+                    if (option.equals("--world")) {
+                        world = Path.of(value);
+                    } else if (option.equals("--port")) {
+                        port = value;
+                    } else {
+                        bind = value;
+                    }
+                    break;
+                }
                 case "--help":
                 case "-h":
-                    System.out.println(USAGE);
+                    System.out.println(HELP);
                     return;
                 default:
                     fail(2, "unknown argument " + args[i] + "\n" + USAGE);
             }
+        }
+        if (world != null && (headless || config != null)) {
+            fail(2, "--world runs the world server alone, without --headless or --config\n" + USAGE);
+        }
+        if (world == null && (port != null || bind != null)) {
+            fail(2, "--port and --bind are for the world server: they need --world FILE\n" + USAGE);
+        }
+        if (world != null) {
+            runWorld(world, port == null ? "7435" : port, bind == null ? "0.0.0.0" : bind);
+            return;
         }
         runHeadless(config, headless);
     }
@@ -112,6 +157,52 @@ public final class Main {
             }
         } finally {
             System.exit(0);
+        }
+    }
+
+    /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */
+    private static void runWorld(Path file, String portText, String bindText) {
+        int port = -1;
+        try {
+            port = Integer.parseInt(portText);
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        if (port < 0 || port > 65535) {
+            fail(2, "--port " + portText + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
+        }
+        InetAddress address = null;
+        try {
+            address = InetAddress.getByName(bindText);
+        } catch (UnknownHostException e) {
+            fail(2, "--bind " + bindText + " is not an address of this machine: " + e.getMessage());
+        }
+        LogSetup.toStandardOutput(Level.INFO);
+        AtomicReference<WorldServer> running = new AtomicReference<>();
+        Runnable stop = () -> {
+            try {
+                WorldServer server = running.get();
+                if (server != null) {
+                    server.close();
+                }
+            } finally {
+                System.exit(0);
+            }
+        };
+        // Before anything listens: a SIGTERM right after the start line must still exit 0.
+        Signal.handle(new Signal("TERM"), signal -> stop.run());
+        Signal.handle(new Signal("INT"), signal -> stop.run());
+        try {
+            running.set(WorldServer.start(file, address, port));
+        } catch (WorldFileException e) {
+            fail(2, e.getMessage());
+        } catch (IOException e) {
+            fail(1, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
+        }
+        try {
+            new CountDownLatch(1).await();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

@@ -1,0 +1,24 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.nio.file.Path;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/** The properties files in docs/examples are valid headless configurations. */
+class ExampleConfigsTest {
+
+    @ParameterizedTest
+    @CsvSource({
+        "docs/examples/corridor.properties, DistanceOnlyPropagationModel",
+        "docs/examples/building.properties, ObstaclePropagationModel",
+    })
+    void examplesLoad(String file, String model) throws Exception {
+        Settings settings = Settings.load(Path.of(file));
+        assertEquals(model, settings.modelName());
+        assertEquals("127.0.0.1", settings.get("usarsim.host"));
+        assertEquals("7435", settings.get("usarsim.port"));
+        assertEquals("50000", settings.get("wss.port"));
+    }
+}

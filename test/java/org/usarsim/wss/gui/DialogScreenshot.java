@@ -6,7 +6,6 @@ import java.awt.image.BufferedImage;
 import java.io.File;
 import java.util.LinkedHashMap;
 import java.util.Map;
-import java.util.UUID;
 import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
@@ -14,15 +13,18 @@ import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 
 /**
- * Takes a picture of the model dialog as a user sees it, for docs/images. Run under a display:
+ * Takes a picture of the model dialog as a user sees it, for docs/images. Run under a display,
+ * with a window manager for the title bar (a bare Xvfb has none; docs/images' picture was taken
+ * with openbox, {@code apt-get install openbox}):
  *
  * <pre>
  * mvn -B -q test-compile
- * xvfb-run -a java -cp target/classes:target/test-classes org.usarsim.wss.gui.DialogScreenshot \
- *     docs/images/distanceonly-dialog.png DistanceOnlyPropagationModel [readonly] [key=value ...] [ok]
+ * xvfb-run -a sh -c 'openbox &amp; sleep 1; java -cp target/classes:target/test-classes \
+ *     org.usarsim.wss.gui.DialogScreenshot docs/images/distanceonly-dialog.png \
+ *     DistanceOnlyPropagationModel [readonly] [key=value ...] [ok]'
  * </pre>
  *
- * A {@code key=value} argument types the value into the field of that name before the picture
+ * <p>A {@code key=value} argument types the value into the field of that name before the picture
  * ({@code cutoffDistance=55.6}); {@code ok} presses OK first (to show a refusal). The settings
  * come from a throw-away preferences node, removed afterwards.
  */
@@ -47,7 +49,7 @@ public final class DialogScreenshot {
                 typed.put(args[i].substring(0, eq), args[i].substring(eq + 1));
             }
         }
-        Preferences root = Preferences.userRoot().node("wss-screenshot-" + UUID.randomUUID());
+        Preferences root = TestPreferences.create();
         try {
             boolean finalEditable = editable;
             DistanceModelDialog[] dialog = new DistanceModelDialog[1];
@@ -71,8 +73,7 @@ public final class DialogScreenshot {
             Gui.run(() -> dialog[0].dispose());
             System.out.println(out + ": " + image.getWidth() + "x" + image.getHeight() + ", dialog " + bounds);
         } finally {
-            root.removeNode();
-            root.flush();
+            TestPreferences.remove(root);
             System.exit(0);
         }
     }

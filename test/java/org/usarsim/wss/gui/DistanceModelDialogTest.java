@@ -299,6 +299,8 @@ class DistanceModelDialogTest {
 
         type("usarsim.port", "7000");
         assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.port")::getBackground), "unmarked when fixed");
+        assertEquals(" ", label(DistanceModelDialog.MESSAGE), "the refusal goes with the next edit");
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.timeout")::getBackground), "the other mark stays");
         click(DistanceModelDialog.OK);
         assertTrue(Gui.onEdt(dialog::isShowing));
         assertTrue(label(DistanceModelDialog.MESSAGE).contains("Timeout (ms): '50' is not a whole number of milliseconds"),

@@ -296,9 +296,12 @@ final class DistanceModelDialog extends JDialog {
         boolean parameter = member == CUTOFF || member == N || member == PD0 || member == D0;
         field.getDocument().addDocumentListener(onChange(() -> {
             mark(field, Settings.problem(member.key(), field.getText()) != null);
-            if (parameter && !updating) {
-                distanceProblem = null;
-                showDistance();
+            if (!updating) {
+                message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
+                if (parameter) {
+                    distanceProblem = null;
+                    showDistance();
+                }
             }
         }));
         return field;
@@ -370,6 +373,7 @@ final class DistanceModelDialog extends JDialog {
         if (updating) {
             return;
         }
+        message.setText(" ");
         Double cutoff = parameter(CUTOFF);
         Double pd0 = parameter(PD0);
         Double d0 = parameter(D0);

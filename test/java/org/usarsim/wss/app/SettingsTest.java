@@ -37,10 +37,14 @@ class SettingsTest {
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
+            Map.entry("usarsim.interval", "1000"),
+            Map.entry("usarsim.timeout", "2000"),
             Map.entry("distance.cutoff", "-93"),
             Map.entry("distance.pd0", "-49.67"),
             Map.entry("distance.n", "1"),
             Map.entry("distance.d0", "2"),
+            Map.entry("distance.margin", "0"),
+            Map.entry("distance.holdTime", "0"),
             Map.entry("obstacle.attenuation", "6.325"),
             Map.entry("obstacle.cacheDistance", "1.0"));
 
@@ -168,6 +172,8 @@ class SettingsTest {
         "wss.port, 0", "wss.port, 65535",
         "wss.chunkSize, 1048576",
         "usarsim.port, 1",
+        "usarsim.interval, 100", "usarsim.interval, 60000", "usarsim.timeout, 100", "usarsim.timeout, 60000",
+        "distance.margin, 0", "distance.margin, 3.5", "distance.holdTime, 0", "distance.holdTime, 2.5",
         "distance.n, 0.001", "distance.d0, 1e-3",
         "obstacle.attenuation, 0", "obstacle.cacheDistance, 0",
         "distance.cutoff, -1e3", "distance.pd0, 10",
@@ -195,6 +201,54 @@ class SettingsTest {
         rejected("wss.pluginDir", "nul\u0000char");
     }
 
+    // ---- the checks the GUI reuses ----
+
+    @Test
+    void problemIsNullForAnAcceptedValue() {
+        assertEquals(null, Settings.problem("usarsim.port", "7435"));
+        assertEquals(null, Settings.problem("distance.holdTime", " 1.5 "), "stripped like a file's value");
+        assertEquals(null, Settings.problem("usarsim.interval", "100"));
+    }
+
+    @Test
+    void problemSaysWhatTheKeyExpects() {
+        assertEquals("a port number from 1 to 65535", Settings.problem("usarsim.port", "0"));
+        assertEquals("a number above 0", Settings.problem("distance.n", "0"));
+        assertEquals("a whole number of milliseconds from 100 to 60000", Settings.problem("usarsim.timeout", "99"));
+        assertEquals("a number of dB, 0 or more", Settings.problem("distance.margin", "-1"));
+        assertEquals("a number of seconds, 0 or more", Settings.problem("distance.holdTime", "x"));
+    }
+
+    @Test
+    void problemAgreesWithTheFileCheck() throws Exception {
+        // the same rule: what problem() accepts, a file accepts, and what it refuses, a file refuses
+        for (String key : Settings.modelDefaults().keySet()) {
+            for (String value : new String[] {"", "0", "-1", "1", "99", "100", "70000", "abc", "1.5", "NaN"}) {
+                boolean accepted = Settings.problem(key, value) == null;
+                try {
+                    Settings.of(props(key, value), "t");
+                    assertTrue(accepted, key + " = '" + value + "': the file accepts it, problem() does not");
+                } catch (SettingsException e) {
+                    assertFalse(accepted, key + " = '" + value + "': problem() accepts it, the file does not");
+                    assertTrue(e.getMessage().endsWith(Settings.problem(key, value)), e.getMessage());
+                }
+            }
+        }
+    }
+
+    @Test
+    void problemOfAnUnknownKey() {
+        assertThrows(IllegalArgumentException.class, () -> Settings.problem("distance.nonsense", "1"));
+    }
+
+    @Test
+    void modelDefaultsAreTheModelKeysOfTheDefaults() {
+        Map<String, String> expected = new TreeMap<>(DEFAULTS);
+        expected.keySet().removeIf(key -> key.startsWith("wss."));
+        assertEquals(expected, Settings.modelDefaults());
+        assertThrows(UnsupportedOperationException.class, () -> Settings.modelDefaults().put("distance.n", "2"));
+    }
+
     // ---- modelSettings() and hubConfig() ----
 
     @Test
@@ -210,15 +264,19 @@ class SettingsTest {
         assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
         assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("usarsim.") || key.startsWith("distance.")
                 || key.startsWith("obstacle.")), model.toString());
-        assertEquals(Map.of(
-                "usarsim.host", "10.0.0.7",
-                "usarsim.port", "7435",
-                "distance.cutoff", "-93",
-                "distance.pd0", "-49.67",
-                "distance.n", "1",
-                "distance.d0", "3.5",
-                "obstacle.attenuation", "6.325",
-                "obstacle.cacheDistance", "0.25"), model);
+        assertEquals(Map.ofEntries(
+                Map.entry("usarsim.host", "10.0.0.7"),
+                Map.entry("usarsim.port", "7435"),
+                Map.entry("usarsim.interval", "1000"),
+                Map.entry("usarsim.timeout", "2000"),
+                Map.entry("distance.cutoff", "-93"),
+                Map.entry("distance.pd0", "-49.67"),
+                Map.entry("distance.n", "1"),
+                Map.entry("distance.d0", "3.5"),
+                Map.entry("distance.margin", "0"),
+                Map.entry("distance.holdTime", "0"),
+                Map.entry("obstacle.attenuation", "6.325"),
+                Map.entry("obstacle.cacheDistance", "0.25")), model);
         assertEquals(3.5, Settings.of(properties, "t").modelSettings().getDouble("distance.d0", -1), 0);
     }
 
@@ -267,6 +325,8 @@ class SettingsTest {
         "distance.cutoff, low", "distance.pd0, '-49,67'", "distance.n, two",
         "distance.d0, 2m", "obstacle.attenuation, six", "obstacle.cacheDistance, one",
         "distance.cutoff, NaN", "distance.n, Infinity", "distance.pd0, -Infinity",
+        "usarsim.interval, often", "usarsim.interval, 1000.5", "usarsim.timeout, 2s",
+        "distance.margin, some", "distance.holdTime, 1s", "distance.holdTime, NaN",
     })
     void notANumber(String key, String value) {
         rejected(key, value);
@@ -280,6 +340,8 @@ class SettingsTest {
         "distance.n, 0", "distance.n, -1",
         "distance.d0, -1", "distance.d0, 0",
         "obstacle.attenuation, -1", "obstacle.cacheDistance, -0.5",
+        "usarsim.interval, 99", "usarsim.interval, 60001", "usarsim.timeout, 0", "usarsim.timeout, 60001",
+        "distance.margin, -0.1", "distance.holdTime, -1",
     })
     void outOfRange(String key, String value) {
         rejected(key, value);

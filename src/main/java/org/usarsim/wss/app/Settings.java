@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
@@ -24,7 +25,7 @@ import org.usarsim.wss.model.ModelSettings;
  * these rules. Headless mode reads the defaults and one properties file, nothing else, so a run
  * is reproducible. docs/headless.md documents each key.
  */
-final class Settings {
+public final class Settings {
 
     /** A property's rule: its default and a check of a value (stripped of surrounding whitespace). */
     private record Key(String defaultValue, String expected, Predicate<String> check) {
@@ -45,10 +46,14 @@ final class Settings {
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
         KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));
         KEYS.put("usarsim.port", new Key("7435", "a port number from 1 to 65535", v -> isInt(v, 1, 65535)));
+        KEYS.put("usarsim.interval", new Key("1000", "a whole number of milliseconds from 100 to 60000", v -> isInt(v, 100, 60000)));
+        KEYS.put("usarsim.timeout", new Key("2000", "a whole number of milliseconds from 100 to 60000", v -> isInt(v, 100, 60000)));
         KEYS.put("distance.cutoff", new Key("-93", "a number (dBm)", v -> isNumber(v, Double.NEGATIVE_INFINITY, false)));
         KEYS.put("distance.pd0", new Key("-49.67", "a number (dBm)", v -> isNumber(v, Double.NEGATIVE_INFINITY, false)));
         KEYS.put("distance.n", new Key("1", "a number above 0", v -> isNumber(v, 0, true)));
         KEYS.put("distance.d0", new Key("2", "a number of metres above 0", v -> isNumber(v, 0, true)));
+        KEYS.put("distance.margin", new Key("0", "a number of dB, 0 or more", v -> isNumber(v, 0, false)));
+        KEYS.put("distance.holdTime", new Key("0", "a number of seconds, 0 or more", v -> isNumber(v, 0, false)));
         KEYS.put("obstacle.attenuation", new Key("6.325", "a number of dB, 0 or more", v -> isNumber(v, 0, false)));
         KEYS.put("obstacle.cacheDistance", new Key("1.0", "a number of metres, 0 or more", v -> isNumber(v, 0, false)));
     }
@@ -93,6 +98,26 @@ final class Settings {
             settings.values.put(key, value);
         }
         return settings;
+    }
+
+    /**
+     * What is wrong with a value for a key, for the GUI's dialogs: null when the value (stripped of
+     * surrounding whitespace) is accepted, else the words for what the key expects, e.g.
+     * "a port number from 1 to 65535".
+     *
+     * @throws IllegalArgumentException for a key that is not a property
+     */
+    public static String problem(String key, String value) {
+        Key rule = KEYS.get(key);
+        if (rule == null) {
+            throw new IllegalArgumentException("unknown key " + key);
+        }
+        return rule.check().test(value.strip()) ? null : rule.expected();
+    }
+
+    /** The default of every key a model reads (usarsim.*, distance.*, obstacle.*), sorted by key. */
+    public static Map<String, String> modelDefaults() {
+        return Collections.unmodifiableMap(defaults().modelSettings().asMap());
     }
 
     String get(String key) {

@@ -1,0 +1,382 @@
+package org.usarsim.wss.gui;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.event.WindowEvent;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.prefs.Preferences;
+import javax.swing.JButton;
+import javax.swing.JLabel;
+import javax.swing.JTextField;
+import javax.swing.SwingUtilities;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.app.Settings;
+
+/** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */
+class DistanceModelDialogTest {
+
+    private static final String DISTANCE = "DistanceOnlyPropagationModel";
+    private static final String OBSTACLE = "ObstaclePropagationModel";
+
+    /** The keys the DistanceOnly dialog shows; the Obstacle dialog adds the obstacle.* keys. */
+    private static final List<String> DISTANCE_KEYS = List.of("usarsim.host", "usarsim.port", "usarsim.interval",
+            "usarsim.timeout", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0", "distance.margin",
+            "distance.holdTime");
+
+    /** Four decimals, as the fields show computed values. */
+    private static final double FOUR_DECIMALS = 0.5e-4 + 1e-9;
+
+    private Preferences root;
+    private ModelPreferences preferences;
+    private DistanceModelDialog dialog;
+
+    @BeforeAll
+    static void display() {
+        Gui.requireDisplay();
+    }
+
+    @BeforeEach
+    void setUp() {
+        root = TestPreferences.create();
+        preferences = new ModelPreferences(root);
+    }
+
+    @AfterEach
+    void tearDown() throws Exception {
+        if (dialog != null) {
+            Gui.run(() -> dialog.dispose());
+        }
+        TestPreferences.remove(root);
+    }
+
+    // ---- helpers ----
+
+    /** Opens the modal dialog without blocking the test: shown from invokeLater, then driven from here. */
+    private DistanceModelDialog open(String model, boolean editable) {
+        dialog = Gui.onEdt(() -> new DistanceModelDialog(null, model, editable, preferences));
+        SwingUtilities.invokeLater(() -> dialog.setVisible(true));
+        Gui.until("the dialog shows", () -> dialog.isShowing());
+        return dialog;
+    }
+
+    private JTextField field(String name) {
+        return Gui.onEdt(() -> Gui.find(dialog, JTextField.class, name));
+    }
+
+    private String text(String name) {
+        JTextField field = field(name);
+        return Gui.onEdt(field::getText);
+    }
+
+    private double number(String name) {
+        return Double.parseDouble(text(name));
+    }
+
+    private void type(String name, String value) {
+        JTextField field = field(name);
+        Gui.run(() -> field.setText(value));
+    }
+
+    private void click(String name) {
+        JButton button = Gui.onEdt(() -> Gui.find(dialog, JButton.class, name));
+        Gui.run(button::doClick);
+    }
+
+    private String label(String name) {
+        return Gui.onEdt(() -> Gui.find(dialog, JLabel.class, name).getText());
+    }
+
+    private void waitClosed() {
+        Gui.until("the dialog is closed", () -> !dialog.isDisplayable());
+    }
+
+    private static double distance(double cutoff, double pd0, double n, double d0) {
+        return d0 * Math.pow(10, (pd0 - cutoff) / (10 * n));
+    }
+
+    private static double exponent(double cutoff, double pd0, double d0, double distance) {
+        return (pd0 - cutoff) / (10 * Math.log10(distance / d0));
+    }
+
+    // ---- what it shows ----
+
+    @Test
+    void opensWithTheDefaultsAndTheirCutoffDistance() {
+        open(DISTANCE, true);
+        assertEquals("DistanceOnlyPropagationModel Configuration", Gui.onEdt(dialog::getTitle));
+        assertTrue(Gui.onEdt(dialog::isModal));
+        for (String key : DISTANCE_KEYS) {
+            assertEquals(Settings.modelDefaults().get(key), text(key), key);
+        }
+        // 2 * 10^(43.33 / 10): about 43055.6 m
+        assertEquals(distance(-93, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        assertEquals(" ", label(DistanceModelDialog.MESSAGE));
+    }
+
+    @Test
+    void theDistanceDialogHasNoObstacleFieldsAndTheObstacleDialogHasThem() {
+        open(DISTANCE, true);
+        List<String> names = Gui.onEdt(() -> Gui.all(dialog, JTextField.class).stream().map(f -> f.getName()).toList());
+        List<String> expected = new java.util.ArrayList<>(DISTANCE_KEYS);
+        expected.add(DistanceModelDialog.CUTOFF_DISTANCE);
+        assertEquals(expected.stream().sorted().toList(), names.stream().sorted().toList());
+        Gui.run(() -> dialog.dispose());
+
+        open(OBSTACLE, true);
+        assertEquals("ObstaclePropagationModel Configuration", Gui.onEdt(dialog::getTitle));
+        assertEquals("6.325", text("obstacle.attenuation"));
+        assertEquals("1.0", text("obstacle.cacheDistance"));
+        assertEquals(distance(-93, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+    }
+
+    @Test
+    void showsTheStoredValues() throws Exception {
+        preferences.store(OBSTACLE, Map.of("usarsim.host", "10.1.2.3", "distance.n", "2.5", "obstacle.attenuation", "4"));
+        open(OBSTACLE, true);
+        assertEquals("10.1.2.3", text("usarsim.host"));
+        assertEquals("2.5", text("distance.n"));
+        assertEquals("4", text("obstacle.attenuation"));
+        assertEquals(distance(-93, -49.67, 2.5, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+    }
+
+    // ---- the cutoff distance, both ways ----
+
+    @Test
+    void editingAParameterRecomputesTheDistance() {
+        open(DISTANCE, true);
+        type("distance.n", "2");
+        assertEquals(distance(-93, -49.67, 2, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        type("distance.pd0", "-40");
+        assertEquals(distance(-93, -40, 2, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        type("distance.d0", "1.5");
+        assertEquals(distance(-93, -40, 2, 1.5), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        type("distance.cutoff", "-85.5");
+        assertEquals(distance(-85.5, -40, 2, 1.5), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+    }
+
+    @Test
+    void editingTheDistanceRecomputesN() {
+        open(DISTANCE, true);
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "55.6");
+        double n = exponent(-93, -49.67, 2, 55.6);
+        assertEquals(n, number("distance.n"), FOUR_DECIMALS);
+        assertEquals("55.6", text(DistanceModelDialog.CUTOFF_DISTANCE), "the typed distance stays as typed");
+        assertEquals(" ", label(DistanceModelDialog.RANGE_NOTE));
+        // and back: the N shown gives the distance typed
+        assertEquals(55.6, distance(-93, -49.67, number("distance.n"), 2), 0.01);
+    }
+
+    @Test
+    void noRangeWhenTheCutoffIsNotBelowPd0() {
+        open(DISTANCE, true);
+        type("distance.cutoff", "-40");
+        assertEquals("no range", text(DistanceModelDialog.CUTOFF_DISTANCE));
+        assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("Pd0"), label(DistanceModelDialog.RANGE_NOTE));
+
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "100");
+        assertEquals("1", text("distance.n"), "N is not touched");
+        assertTrue(label(DistanceModelDialog.RANGE_NOTE).startsWith("no range"), label(DistanceModelDialog.RANGE_NOTE));
+    }
+
+    @Test
+    void noRangeForADistanceNotAboveD0() {
+        open(DISTANCE, true);
+        for (String value : new String[] {"2", "1.5"}) {
+            type(DistanceModelDialog.CUTOFF_DISTANCE, value);
+            assertEquals("1", text("distance.n"), "N is not touched by " + value);
+            assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("no range"), label(DistanceModelDialog.RANGE_NOTE));
+            assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("d0"), label(DistanceModelDialog.RANGE_NOTE));
+            assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
+        }
+        // OK refuses while the distance the user typed makes no range
+        click(DistanceModelDialog.OK);
+        assertTrue(Gui.onEdt(dialog::isShowing));
+        assertTrue(label(DistanceModelDialog.MESSAGE).contains("Cutoff distance"), label(DistanceModelDialog.MESSAGE));
+        // a parameter edit recomputes the distance, and with it the problem is gone
+        type("distance.n", "2");
+        assertEquals(distance(-93, -49.67, 2, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
+        click(DistanceModelDialog.OK);
+        waitClosed();
+        assertEquals("2", preferences.load(DISTANCE).get("distance.n"));
+    }
+
+    @Test
+    void noDistanceWhileAParameterIsBad() {
+        open(DISTANCE, true);
+        type("distance.d0", "0");
+        assertEquals("", text(DistanceModelDialog.CUTOFF_DISTANCE));
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("distance.d0")::getBackground));
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "100");
+        assertEquals("1", text("distance.n"));
+        type("distance.d0", "3");
+        assertEquals(distance(-93, -49.67, 1, 3), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+    }
+
+    // ---- OK, Cancel, read-only ----
+
+    @Test
+    void okStoresTheValues() throws Exception {
+        open(OBSTACLE, true);
+        type("usarsim.host", " 192.168.1.20 ");
+        type("usarsim.port", "7436");
+        type("usarsim.interval", "500");
+        type("distance.margin", "3");
+        type("distance.holdTime", "1.5");
+        type("obstacle.cacheDistance", "0.5");
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "55.6");
+        String n = text("distance.n");
+        click(DistanceModelDialog.OK);
+        waitClosed();
+        assertTrue(dialog.saved());
+
+        Map<String, String> stored = preferences.load(OBSTACLE);
+        assertEquals("192.168.1.20", stored.get("usarsim.host"));
+        assertEquals("7436", stored.get("usarsim.port"));
+        assertEquals("500", stored.get("usarsim.interval"));
+        assertEquals("3", stored.get("distance.margin"));
+        assertEquals("1.5", stored.get("distance.holdTime"));
+        assertEquals("0.5", stored.get("obstacle.cacheDistance"));
+        assertEquals(n, stored.get("distance.n"));
+        assertEquals("-93", stored.get("distance.cutoff"));
+        assertEquals(Map.of(), preferences.load(DISTANCE).entrySet().stream()
+                .filter(e -> !e.getValue().equals(Settings.modelDefaults().get(e.getKey())))
+                .collect(java.util.stream.Collectors.toMap(Map.Entry::getKey, Map.Entry::getValue)),
+                "the other model's node is untouched");
+
+        // opened again, it shows what was stored, and about the distance typed
+        open(OBSTACLE, true);
+        assertEquals("192.168.1.20", text("usarsim.host"));
+        assertEquals(n, text("distance.n"));
+        assertEquals(55.6, number(DistanceModelDialog.CUTOFF_DISTANCE), 0.01);
+    }
+
+    @Test
+    void cancelStoresNothing() throws Exception {
+        open(DISTANCE, true);
+        type("usarsim.port", "7436");
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "55.6");
+        click(DistanceModelDialog.CANCEL);
+        waitClosed();
+        assertFalse(dialog.saved());
+        assertEquals(0, root.node(DISTANCE).keys().length);
+        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
+    }
+
+    @Test
+    void closingTheWindowStoresNothing() throws Exception {
+        open(DISTANCE, true);
+        type("usarsim.port", "7436");
+        Gui.run(() -> dialog.dispatchEvent(new WindowEvent(dialog, WindowEvent.WINDOW_CLOSING)));
+        waitClosed();
+        assertFalse(dialog.saved());
+        assertEquals(0, root.node(DISTANCE).keys().length);
+    }
+
+    @Test
+    void aBadValueIsRefusedAndTheDialogStaysOpen() throws Exception {
+        open(DISTANCE, true);
+        type("usarsim.port", "abc");
+        type("usarsim.timeout", "50");
+        click(DistanceModelDialog.OK);
+        assertTrue(Gui.onEdt(dialog::isShowing));
+        assertFalse(dialog.saved());
+        String message = label(DistanceModelDialog.MESSAGE);
+        assertTrue(message.contains("Port: 'abc' is not a port number from 1 to 65535"), message);
+        assertTrue(message.contains("1 more"), "says another field is marked: " + message);
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.port")::getBackground));
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.timeout")::getBackground));
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.host")::getBackground));
+        assertEquals(0, root.node(DISTANCE).keys().length, "nothing stored");
+
+        type("usarsim.port", "7000");
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.port")::getBackground), "unmarked when fixed");
+        assertEquals(" ", label(DistanceModelDialog.MESSAGE), "the refusal goes with the next edit");
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("usarsim.timeout")::getBackground), "the other mark stays");
+        click(DistanceModelDialog.OK);
+        assertTrue(Gui.onEdt(dialog::isShowing));
+        assertTrue(label(DistanceModelDialog.MESSAGE).contains("Timeout (ms): '50' is not a whole number of milliseconds"),
+                label(DistanceModelDialog.MESSAGE));
+
+        type("usarsim.timeout", "5000");
+        click(DistanceModelDialog.OK);
+        waitClosed();
+        assertEquals("7000", preferences.load(DISTANCE).get("usarsim.port"));
+        assertEquals("5000", preferences.load(DISTANCE).get("usarsim.timeout"));
+    }
+
+    @Test
+    void everyRuleIsSettingsRule() {
+        open(OBSTACLE, true);
+        String[][] refused = {
+            {"usarsim.host", "my host"}, {"usarsim.port", "0"}, {"usarsim.interval", "99"}, {"usarsim.timeout", "60001"},
+            {"distance.cutoff", "NaN"}, {"distance.n", "0"}, {"distance.pd0", "-49,67"}, {"distance.d0", "-2"},
+            {"distance.margin", "-1"}, {"distance.holdTime", "1s"}, {"obstacle.attenuation", "-0.5"},
+            {"obstacle.cacheDistance", "far"},
+        };
+        for (String[] bad : refused) {
+            String before = text(bad[0]);
+            type(bad[0], bad[1]);
+            click(DistanceModelDialog.OK);
+            assertTrue(Gui.onEdt(dialog::isShowing), bad[0] + " = " + bad[1]);
+            assertTrue(label(DistanceModelDialog.MESSAGE).contains(Settings.problem(bad[0], bad[1])), label(DistanceModelDialog.MESSAGE));
+            type(bad[0], before);
+        }
+        click(DistanceModelDialog.OK);
+        waitClosed();
+    }
+
+    @Test
+    void readOnlyHasEveryFieldDisabledAndOnlyClose() throws Exception {
+        preferences.store(OBSTACLE, Map.of("usarsim.port", "7001"));
+        open(OBSTACLE, false);
+        List<JTextField> fields = Gui.onEdt(() -> Gui.all(dialog, JTextField.class));
+        assertEquals(DISTANCE_KEYS.size() + 3, fields.size());
+        for (JTextField field : fields) {
+            assertFalse(Gui.onEdt(field::isEnabled), field.getName() + " is enabled");
+        }
+        assertEquals("7001", text("usarsim.port"), "shows the values");
+        List<String> buttons = Gui.onEdt(() -> Gui.all(dialog, JButton.class).stream().map(JButton::getText).toList());
+        assertEquals(List.of("Close"), buttons);
+        click(DistanceModelDialog.CLOSE);
+        waitClosed();
+        assertFalse(dialog.saved());
+        assertEquals(List.of("usarsim.port"), List.of(root.node(OBSTACLE).keys()));
+    }
+
+    // ---- numbers ----
+
+    @Test
+    void computedNumbersHaveAtMostFourDecimalsAndAPointWhateverTheLocale() {
+        Locale before = Locale.getDefault();
+        try {
+            Locale.setDefault(Locale.GERMANY);
+            assertEquals("43055.6347", DistanceModelDialog.format(43055.634744));
+            assertEquals("3.0007", DistanceModelDialog.format(3.000712));
+            assertEquals("2", DistanceModelDialog.format(2.0000001));
+            assertEquals("0", DistanceModelDialog.format(-0.00001 * 0));
+            assertEquals("-93.5", DistanceModelDialog.format(-93.5));
+            // what four decimals would show as 0, and the very large: exponent notation, still a number
+            assertEquals(1.23457e-5, Double.parseDouble(DistanceModelDialog.format(0.0000123456789)), 1e-10);
+            assertTrue(Double.parseDouble(DistanceModelDialog.format(0.0000123456789)) > 0);
+            assertEquals(1.23457e43, Double.parseDouble(DistanceModelDialog.format(1.234567e43)), 1e38);
+        } finally {
+            Locale.setDefault(before);
+        }
+    }
+
+    @Test
+    void theFormulasAreEachOthersInverse() {
+        double d = DistanceModelDialog.cutoffDistance(-93, -49.67, 1, 2);
+        assertEquals(2 * Math.pow(10, 43.33 / 10), d, 1e-9);
+        assertEquals(1, DistanceModelDialog.exponent(-93, -49.67, 2, d), 1e-12);
+    }
+}

@@ -1,0 +1,155 @@
+package org.usarsim.wss.gui;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.logging.Handler;
+import java.util.logging.Level;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
+import java.util.prefs.Preferences;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.app.Settings;
+
+class ModelPreferencesTest {
+
+    private static final String DISTANCE = "DistanceOnlyPropagationModel";
+    private static final String OBSTACLE = "ObstaclePropagationModel";
+
+    /** A throw-away node, never the user's real preferences; removed after each test. */
+    private Preferences root;
+    private ModelPreferences preferences;
+
+    private final Logger log = Logger.getLogger(ModelPreferences.class.getName());
+    private final List<LogRecord> logged = new ArrayList<>();
+    private final Handler capture = new Handler() {
+        @Override
+        public void publish(LogRecord record) {
+            synchronized (logged) {
+                logged.add(record);
+            }
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+        }
+    };
+
+    @BeforeEach
+    void setUp() {
+        root = TestPreferences.create();
+        preferences = new ModelPreferences(root);
+        log.addHandler(capture);
+    }
+
+    @AfterEach
+    void tearDown() throws Exception {
+        log.removeHandler(capture);
+        TestPreferences.remove(root);
+    }
+
+    @Test
+    void nothingStoredGivesTheDefaults() {
+        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
+        assertEquals(Settings.modelDefaults(), preferences.settings(OBSTACLE).asMap());
+        assertTrue(logged.isEmpty(), "no warning for missing values: " + logged);
+    }
+
+    @Test
+    void storedValuesComeBack() throws Exception {
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put("usarsim.host", "10.0.0.7");
+        values.put("usarsim.port", "7000");
+        values.put("usarsim.interval", "250");
+        values.put("distance.n", "3.0007");
+        values.put("distance.holdTime", "1.5");
+        preferences.store(DISTANCE, values);
+
+        // a new instance over the same node, as at the next start
+        Map<String, String> loaded = new ModelPreferences(root).load(DISTANCE);
+        Map<String, String> expected = new LinkedHashMap<>(Settings.modelDefaults());
+        expected.putAll(values);
+        assertEquals(expected, loaded);
+        assertEquals(3.0007, preferences.settings(DISTANCE).getDouble("distance.n", -1), 0);
+        assertEquals(250, preferences.settings(DISTANCE).getInt("usarsim.interval", -1));
+    }
+
+    @Test
+    void storedInTheModelsOwnNodeAndWrittenOut() throws Exception {
+        preferences.store(DISTANCE, Map.of("usarsim.port", "7001"));
+        Preferences node = root.node(DISTANCE);
+        assertEquals(root.absolutePath() + "/" + DISTANCE, node.absolutePath());
+        assertArrayEquals(new String[] {"usarsim.port"}, node.keys());
+        assertEquals("7001", node.get("usarsim.port", null));
+    }
+
+    @Test
+    void eachModelHasItsOwnNode() throws Exception {
+        preferences.store(DISTANCE, Map.of("distance.cutoff", "-80"));
+        preferences.store(OBSTACLE, Map.of("distance.cutoff", "-70", "obstacle.attenuation", "3"));
+        assertEquals("-80", preferences.load(DISTANCE).get("distance.cutoff"));
+        assertEquals("6.325", preferences.load(DISTANCE).get("obstacle.attenuation"));
+        assertEquals("-70", preferences.load(OBSTACLE).get("distance.cutoff"));
+        assertEquals("3", preferences.load(OBSTACLE).get("obstacle.attenuation"));
+        assertEquals(Settings.modelDefaults(), preferences.load("SomeOtherModel"));
+    }
+
+    @Test
+    void valuesAreStoredStripped() throws Exception {
+        preferences.store(DISTANCE, Map.of("usarsim.host", "  sim.local "));
+        assertEquals("sim.local", root.node(DISTANCE).get("usarsim.host", null));
+    }
+
+    @Test
+    void aHandEditedBadValueGivesTheDefaultAndAWarning() {
+        Preferences node = root.node(DISTANCE);
+        node.put("distance.n", "zero");
+        node.put("usarsim.port", "3000");
+        node.put("usarsim.interval", "5");
+        Map<String, String> loaded = preferences.load(DISTANCE);
+        assertEquals("1", loaded.get("distance.n"));
+        assertEquals("3000", loaded.get("usarsim.port"), "a good value next to bad ones is kept");
+        assertEquals("1000", loaded.get("usarsim.interval"));
+
+        List<String> warnings = logged.stream().filter(r -> r.getLevel() == Level.WARNING).map(LogRecord::getMessage).toList();
+        assertEquals(2, warnings.size(), warnings.toString());
+        String n = warnings.stream().filter(m -> m.contains("distance.n")).findFirst().orElseThrow();
+        assertTrue(n.contains("'zero'") && n.contains("a number above 0") && n.contains("default 1")
+                && n.contains(node.absolutePath()), n);
+    }
+
+    @Test
+    void unknownStoredKeysAreIgnored() {
+        root.node(DISTANCE).put("distance.colour", "blue");
+        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
+    }
+
+    @Test
+    void storeRefusesABadValueAndStoresNothing() throws Exception {
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put("usarsim.port", "7001");
+        values.put("distance.d0", "0");
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, values));
+        assertTrue(e.getMessage().contains("distance.d0") && e.getMessage().contains("above 0"), e.getMessage());
+        assertEquals(0, root.node(DISTANCE).keys().length);
+    }
+
+    @Test
+    void storeRefusesAKeyThatIsNotAModelSetting() throws Exception {
+        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, Map.of("wss.port", "1")));
+        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, Map.of("distance.colour", "1")));
+        assertEquals(0, root.node(DISTANCE).keys().length);
+    }
+}

@@ -17,9 +17,9 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
- * A simulator model under test, for real: a {@link FakeSimulator}, the model polling it every
- * 100 ms (unless the settings say otherwise), a hub on 127.0.0.1, the hub's events and the
- * model's log lines as they happen.
+ * A simulator model under test, for real: a {@link FakeSimulator} (or another simulator), the
+ * model polling it every 100 ms (unless the settings say otherwise), a hub on 127.0.0.1, the hub's
+ * events and the model's log lines as they happen.
  */
 public final class ModelRig implements AutoCloseable {
 
@@ -29,6 +29,12 @@ public final class ModelRig implements AutoCloseable {
         public String toString() {
             return type + args;
         }
+    }
+
+    /** How a test makes a rig once it knows the simulator's port. */
+    @FunctionalInterface
+    public interface Factory {
+        ModelRig create(int simulatorPort) throws Exception;
     }
 
     public final FakeSimulator sim;
@@ -54,12 +60,22 @@ public final class ModelRig implements AutoCloseable {
         }
     };
 
+    /** The model polling a new {@link FakeSimulator}. */
     public ModelRig(SimulatorModel model, Map<String, String> settings) throws Exception {
+        this(model, settings, new FakeSimulator(), 0);
+    }
+
+    /** The model polling a simulator that already runs on 127.0.0.1 at {@code port} (no fake: {@link #sim} is null). */
+    public static ModelRig polling(int port, SimulatorModel model, Map<String, String> settings) throws Exception {
+        return new ModelRig(model, settings, null, port);
+    }
+
+    private ModelRig(SimulatorModel model, Map<String, String> settings, FakeSimulator fake, int port) throws Exception {
         this.model = model;
-        sim = new FakeSimulator();
+        sim = fake;
         Map<String, String> all = new LinkedHashMap<>();
         all.put("usarsim.host", "127.0.0.1");
-        all.put("usarsim.port", Integer.toString(sim.port()));
+        all.put("usarsim.port", Integer.toString(fake != null ? fake.port() : port));
         all.put("usarsim.interval", "100");
         all.put("usarsim.timeout", "300");
         all.putAll(settings);
@@ -106,9 +122,14 @@ public final class ModelRig implements AutoCloseable {
         return log.stream().filter(r -> r.getLevel().equals(level) && r.getMessage().contains(part)).count();
     }
 
-    /** Places the robot in the simulator and registers it, accepting connections on one port. */
+    /** Places the robot in the fake simulator and registers it, accepting connections on one port. */
     public TestRobot robot(String name, double x, double y, double z) throws Exception {
         sim.place(name, x, y, z);
+        return robot(name);
+    }
+
+    /** Registers a robot, accepting connections on one port. */
+    public TestRobot robot(String name) throws Exception {
         TestRobot robot = server.robot();
         toClose.add(robot);
         accepting.put(name, robot.initAccepting(name));
@@ -132,7 +153,9 @@ public final class ModelRig implements AutoCloseable {
             closeable.close();
         }
         server.close();
-        sim.close();
+        if (sim != null) {
+            sim.close();
+        }
         logger.removeHandler(handler);
     }
 }

@@ -37,6 +37,7 @@ public final class FakeSimulator implements AutoCloseable {
     private final int port;
     private volatile ServerSocket server;
     private volatile Mode mode = Mode.ANSWER;
+    private volatile long getobsDelayMs;
     private LongFunction<List<RobotState>> script;
     private long scriptBase;
 
@@ -72,6 +73,11 @@ public final class FakeSimulator implements AutoCloseable {
 
     public void obstacles(String a, String b, double count) {
         obstacles.put(NamePair.of(a, b), count);
+    }
+
+    /** Answers each GETOBS this much later: a slow simulator. */
+    public void delayGetobs(long ms) {
+        getobsDelayMs = ms;
     }
 
     public void mode(Mode mode) {
@@ -170,6 +176,13 @@ public final class FakeSimulator implements AutoCloseable {
             getobs.add(line);
             if (now != Mode.ANSWER) {
                 return null;
+            }
+            if (getobsDelayMs > 0) {
+                try {
+                    Thread.sleep(getobsDelayMs); // the slow simulator this fake plays
+                } catch (InterruptedException e) {
+                    return null;
+                }
             }
             String[] words = line.replace("{", " ").replace("}", " ").trim().split("\\s+");
             String from = words[2];

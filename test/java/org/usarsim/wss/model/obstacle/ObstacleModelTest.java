@@ -21,6 +21,7 @@ import org.usarsim.wss.model.distance.DataConnection;
 import org.usarsim.wss.model.distance.FakeSimulator;
 import org.usarsim.wss.model.distance.ModelRig;
 import org.usarsim.wss.model.distance.PathLoss;
+import org.usarsim.wss.model.distance.RobotState;
 import org.usarsim.wss.protocol.Replies;
 
 /** The Obstacle model for real: a fake simulator answering GETPOS and GETOBS, robots on a hub. */
@@ -78,6 +79,26 @@ class ObstacleModelTest {
         rig.polls(3);
         assertEquals(2, getobs(ask), "1.5 m is beyond it");
         assertEquals(List.of(ask, ask), rig.sim.getobsLines());
+    }
+
+    @Test
+    void aRobotMovingBetweenPollsNeverHasNaNStrengthWhileItsCountIsAskedAgain() throws Exception {
+        rig(Map.of());
+        TestRobot a = rig.robot("A", 0, 0, 0);
+        rig.robot("B", 10, 0, 0);
+        rig.sim.obstacles("A", "B", 1);
+        rig.polls(2);
+        rig.sim.delayGetobs(60);
+        RobotState still = new RobotState("A", 0, 0, 0, false);
+        rig.sim.script(k -> List.of(still, new RobotState("B", 10 + 2 * k, 0, 0, false)));
+        long until = rig.sim.getposCount() + 8;
+        int asked = 0;
+        while (rig.sim.getposCount() < until) {
+            String reply = a.ask("GETSS {Robot B}");
+            assertFalse(reply.contains("NaN"), "after " + asked + " replies: " + reply);
+            asked++;
+        }
+        assertTrue(rig.sim.getobsLines().size() >= 6, "B moved 2 m each poll: its count was asked again each time");
     }
 
     @Test

@@ -235,7 +235,6 @@ public abstract class SimulatorModel implements PropagationModel {
         RobotLinkModel hub = linkModel;
         List<String> registeredBefore = hub.getListOfRegisteredRobots();
         Map<String, RobotState> listed = simulator.positions();
-        positions = listed;
         boolean kickAbsent = kicksRobotsAbsentFrom(listed);
         for (String robot : registeredBefore) {
             RobotState state = listed.get(robot);
@@ -262,6 +261,8 @@ public abstract class SimulatorModel implements PropagationModel {
             }
         }
         beforeDecisions(listed, pairs, simulator);
+        // Only now: a GETSS meanwhile answers from the last positions with what goes with them.
+        positions = listed;
         LinkStates states = links;
         Set<String> presentSet = new HashSet<>(present);
         states.retainOnly(presentSet);

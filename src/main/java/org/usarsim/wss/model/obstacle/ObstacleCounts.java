@@ -7,8 +7,9 @@ import org.usarsim.wss.model.distance.NamePair;
 import org.usarsim.wss.model.distance.RobotState;
 
 /**
- * The obstacle counts the simulator gave per pair, each valid until either robot has moved more
- * than the cache distance from where it was when the count was asked.
+ * The latest obstacle count the simulator gave per pair, and where the two robots were when it was
+ * asked: a count is asked again once either robot has moved more than the cache distance from
+ * there, and at every poll while it is unknown.
  */
 final class ObstacleCounts {
 
@@ -22,20 +23,21 @@ final class ObstacleCounts {
         this.cacheDistance = cacheDistance;
     }
 
-    /** The count for these two robots at these positions, or NaN when none is known for them. */
-    double count(RobotState a, RobotState b) {
-        NamePair pair = NamePair.of(a.name(), b.name());
+    /** The pair's latest count; NaN when it was never asked or the simulator did not know it. */
+    double count(NamePair pair) {
         Entry entry = entries.get(pair);
-        if (entry == null) {
-            return Double.NaN;
-        }
-        RobotState first = pair.first().equals(a.name()) ? a : b;
-        RobotState second = first == a ? b : a;
-        boolean stayed = first.distanceTo(entry.first()) <= cacheDistance && second.distanceTo(entry.second()) <= cacheDistance;
-        return stayed ? entry.count() : Double.NaN;
+        return entry == null ? Double.NaN : entry.count();
     }
 
-    /** Remembers a known count, asked while the pair's robots were at these positions. */
+    /** Whether the pair's count must be asked (again) now that its robots are at {@code positions}. */
+    boolean stale(NamePair pair, Map<String, RobotState> positions) {
+        Entry entry = entries.get(pair);
+        return entry == null || Double.isNaN(entry.count())
+                || positions.get(pair.first()).distanceTo(entry.first()) > cacheDistance
+                || positions.get(pair.second()).distanceTo(entry.second()) > cacheDistance;
+    }
+
+    /** Remembers a count (NaN: unknown), asked while the pair's robots were at {@code positions}. */
     void put(NamePair pair, double count, Map<String, RobotState> positions) {
         entries.put(pair, new Entry(count, positions.get(pair.first()), positions.get(pair.second())));
     }

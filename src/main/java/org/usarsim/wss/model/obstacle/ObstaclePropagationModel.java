@@ -1,7 +1,6 @@
 package org.usarsim.wss.model.obstacle;
 
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -45,7 +44,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
 
     @Override
     protected double strength(RobotState a, RobotState b) {
-        return pathLoss().strength(a.distanceTo(b)) - counts.count(a, b) * attenuation;
+        return pathLoss().strength(a.distanceTo(b)) - counts.count(NamePair.of(a.name(), b.name())) * attenuation;
     }
 
     @Override
@@ -58,23 +57,14 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return !listed.isEmpty();
     }
 
-    /** Asks the simulator, in one batch, for the counts of the pairs whose cached count no longer holds. */
+    /** Asks the simulator, in one batch, for the counts of the pairs whose count is unknown or no longer holds. */
     @Override
     protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
             throws IOException {
         ObstacleCounts known = counts;
         Set<NamePair> current = new HashSet<>(pairs);
         known.retain(current::contains);
-        List<NamePair> missing = new ArrayList<>();
-        for (NamePair pair : pairs) {
-            if (Double.isNaN(known.count(listed.get(pair.first()), listed.get(pair.second())))) {
-                missing.add(pair);
-            }
-        }
-        simulator.obstacles(missing).forEach((pair, count) -> {
-            if (!Double.isNaN(count)) {
-                known.put(pair, count, listed);
-            }
-        });
+        List<NamePair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
+        simulator.obstacles(stale).forEach((pair, count) -> known.put(pair, count, listed));
     }
 }

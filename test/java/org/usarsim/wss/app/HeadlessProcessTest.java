@@ -4,12 +4,10 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
+import static org.usarsim.wss.hub.Sockets.readLine;
+import static org.usarsim.wss.hub.Sockets.send;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
 import java.net.ConnectException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
@@ -25,11 +23,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Predicate;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
@@ -47,10 +41,6 @@ import org.junit.jupiter.params.provider.CsvSource;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class HeadlessProcessTest {
 
-    /** How long to wait for anything the server should do at once (JVM start included). */
-    private static final Duration WAIT = Duration.ofSeconds(10);
-
-    private static final Pattern LISTENING = Pattern.compile("WSS listening for robots on 127\\.0\\.0\\.1:(\\d+) with (\\S+)");
     private static final Pattern TIMESTAMPED = Pattern.compile(
             "^(\\d{4}-\\d{2}-\\d{2} \\d{2}:\\d{2}:\\d{2}\\.\\d{3}) (SEVERE|WARNING|INFO|CONFIG|FINE|FINER|FINEST) \\S.*");
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS");
@@ -58,7 +48,7 @@ class HeadlessProcessTest {
     @TempDir
     Path dir;
 
-    private final List<Server> servers = new ArrayList<>();
+    private final List<ServerProcess> servers = new ArrayList<>();
     private final List<AutoCloseable> closeables = new ArrayList<>();
 
     @AfterEach
@@ -70,7 +60,7 @@ class HeadlessProcessTest {
                 // best effort
             }
         }
-        for (Server server : servers) {
+        for (ServerProcess server : servers) {
             server.kill();
         }
     }
@@ -79,7 +69,7 @@ class HeadlessProcessTest {
 
     @Test
     void startsAnswersInitAndLogsWithTimestamps() throws Exception {
-        Server server = start("--headless", "--config", config(Map.of()).toString());
+        ServerProcess server = start("--headless", "--config", config(Map.of()).toString());
         Matcher listening = server.awaitListening();
         assertEquals("NoopPropagationModel", listening.group(2));
         int port = Integer.parseInt(listening.group(1));
@@ -107,7 +97,7 @@ class HeadlessProcessTest {
     @Test
     void withTheEventLogOnEveryEventIsACsvLineInANewFile() throws Exception {
         Path logs = dir.resolve("event logs");
-        Server server = start("--headless", "--config",
+        ServerProcess server = start("--headless", "--config",
                 config(Map.of("wss.eventLog", "true", "wss.eventLogDir", logs.toString())).toString());
         int port = Integer.parseInt(server.awaitListening().group(1));
         try (Socket r1 = connect(port); Socket r2 = connect(port)) {
@@ -138,7 +128,7 @@ class HeadlessProcessTest {
 
     @Test
     void sigtermExitsZeroAndStopsListening() throws Exception {
-        Server server = start("--headless", "--config", config(Map.of()).toString());
+        ServerProcess server = start("--headless", "--config", config(Map.of()).toString());
         int port = Integer.parseInt(server.awaitListening().group(1));
         Socket robot = connect(port);
         send(robot, "INIT {Robot R1} {Port 5000}\r\n");
@@ -159,7 +149,7 @@ class HeadlessProcessTest {
     @Test
     void sigtermRightAfterTheListeningLineExitsZero() throws Exception {
         for (int attempt = 1; attempt <= 5; attempt++) {
-            Server server = start("--headless", "--config", config(Map.of()).toString());
+            ServerProcess server = start("--headless", "--config", config(Map.of()).toString());
             server.awaitListening();
             server.sigterm();
             int code = server.awaitExit();
@@ -177,7 +167,7 @@ class HeadlessProcessTest {
         "wss.model, NoSuchModel",
     })
     void badConfigExitsTwoBeforeBinding(String key, String value) throws Exception {
-        Server server = start("--headless", "--config", config(Map.of(key, value)).toString());
+        ServerProcess server = start("--headless", "--config", config(Map.of(key, value)).toString());
         assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
         String error = server.stderr().strip();
         assertFalse(error.isEmpty(), "an error on standard error");
@@ -195,7 +185,7 @@ class HeadlessProcessTest {
         Map<String, String> overrides = new LinkedHashMap<>();
         overrides.put("wss.port", String.valueOf(taken.getLocalPort()));
         overrides.put("wss.model", "NoSuchModel");
-        Server server = start("--headless", "--config", config(overrides).toString());
+        ServerProcess server = start("--headless", "--config", config(overrides).toString());
         assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
         assertTrue(server.stderr().contains("NoSuchModel"), server.stderr());
     }
@@ -204,7 +194,7 @@ class HeadlessProcessTest {
     void controlPortInUseExitsOne() throws Exception {
         ServerSocket taken = holdPort();
         int port = taken.getLocalPort();
-        Server server = start("--headless", "--config", config(Map.of("wss.port", String.valueOf(port))).toString());
+        ServerProcess server = start("--headless", "--config", config(Map.of("wss.port", String.valueOf(port))).toString());
         assertEquals(1, server.awaitExit(), "exit code; stderr: " + server.stderr() + "; stdout: " + server.stdoutSoFar());
         String error = server.stderr().strip();
         assertFalse(error.contains("\n"), "a one-line error: " + error);
@@ -216,7 +206,7 @@ class HeadlessProcessTest {
 
     @Test
     void unknownArgumentExitsTwo() throws Exception {
-        Server server = start("--headless", "--verbose", "--config", config(Map.of()).toString());
+        ServerProcess server = start("--headless", "--verbose", "--config", config(Map.of()).toString());
         assertEquals(2, server.awaitExit());
         assertTrue(server.stderr().contains("--verbose"), "names the argument: " + server.stderr());
         assertTrue(server.stderr().contains("usage"), "shows the usage: " + server.stderr());
@@ -225,7 +215,7 @@ class HeadlessProcessTest {
 
     @Test
     void configWithoutAFileExitsTwo() throws Exception {
-        Server server = start("--headless", "--config");
+        ServerProcess server = start("--headless", "--config");
         assertEquals(2, server.awaitExit());
         assertTrue(server.stderr().contains("--config"), server.stderr());
     }
@@ -233,7 +223,7 @@ class HeadlessProcessTest {
     @Test
     void missingConfigFileExitsTwo() throws Exception {
         Path absent = dir.resolve("absent.properties");
-        Server server = start("--headless", "--config", absent.toString());
+        ServerProcess server = start("--headless", "--config", absent.toString());
         assertEquals(2, server.awaitExit());
         String error = server.stderr().strip();
         assertTrue(error.contains(absent.toString()), "names the file: " + error);
@@ -242,7 +232,7 @@ class HeadlessProcessTest {
 
     @Test
     void helpPrintsUsageAndExitsZero() throws Exception {
-        Server server = start("--help");
+        ServerProcess server = start("--help");
         assertEquals(0, server.awaitExit());
         assertTrue(String.join("\n", server.stdoutSoFar()).contains("usage"), server.stdoutSoFar().toString());
     }
@@ -271,157 +261,14 @@ class HeadlessProcessTest {
     private Socket connect(int port) throws IOException {
         Socket socket = new Socket();
         closeables.add(socket);
-        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), (int) WAIT.toMillis());
-        socket.setSoTimeout((int) WAIT.toMillis());
+        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), (int) ServerProcess.WAIT.toMillis());
+        socket.setSoTimeout((int) ServerProcess.WAIT.toMillis());
         return socket;
     }
 
-    static void send(Socket socket, String text) throws IOException {
-        OutputStream out = socket.getOutputStream();
-        out.write(text.getBytes(StandardCharsets.US_ASCII));
-        out.flush();
-    }
-
-    /** One reply line, its CR LF included (the socket's timeout bounds the wait). */
-    static String readLine(Socket socket) throws IOException {
-        InputStream in = socket.getInputStream();
-        ByteArrayOutputStream line = new ByteArrayOutputStream();
-        int b;
-        while ((b = in.read()) != -1) {
-            line.write(b);
-            if (b == '\n') {
-                break;
-            }
-        }
-        return line.toString(StandardCharsets.US_ASCII);
-    }
-
-    private Server start(String... args) throws Exception {
-        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classes.toString(), Main.class.getName()));
-        command.addAll(List.of(args));
-        Server server = new Server(new ProcessBuilder(command).start());
+    private ServerProcess start(String... args) throws Exception {
+        ServerProcess server = ServerProcess.start(args);
         servers.add(server);
         return server;
-    }
-
-    /** A child server process, its standard output read line by line and its standard error collected. */
-    static final class Server {
-
-        /** Put on the queue when standard output ends. */
-        private static final String END = new String("<end of standard output>");
-
-        final Process process;
-        private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
-        private final List<String> stdout = new CopyOnWriteArrayList<>();
-        private final ByteArrayOutputStream stderr = new ByteArrayOutputStream();
-        private final Thread outReader;
-        private final Thread errReader;
-
-        Server(Process process) {
-            this.process = process;
-            try {
-                process.getOutputStream().close();
-            } catch (IOException e) {
-                // the child reads nothing from standard input anyway
-            }
-            outReader = new Thread(this::readStdout, "stdout of " + process.pid());
-            errReader = new Thread(this::readStderr, "stderr of " + process.pid());
-            outReader.setDaemon(true);
-            errReader.setDaemon(true);
-            outReader.start();
-            errReader.start();
-        }
-
-        private void readStdout() {
-            try (var reader = process.inputReader(StandardCharsets.UTF_8)) {
-                String line;
-                while ((line = reader.readLine()) != null) {
-                    stdout.add(line);
-                    lines.add(line);
-                }
-            } catch (IOException e) {
-                // the process ended
-            } finally {
-                lines.add(END);
-            }
-        }
-
-        private void readStderr() {
-            try (InputStream in = process.getErrorStream()) {
-                byte[] buffer = new byte[4096];
-                int read;
-                while ((read = in.read(buffer)) != -1) {
-                    synchronized (stderr) {
-                        stderr.write(buffer, 0, read);
-                    }
-                }
-            } catch (IOException e) {
-                // the process ended
-            }
-        }
-
-        List<String> stdoutSoFar() {
-            return List.copyOf(stdout);
-        }
-
-        String stderr() {
-            synchronized (stderr) {
-                return stderr.toString(StandardCharsets.UTF_8);
-            }
-        }
-
-        /** The next line of standard output that matches, waiting at most {@link #WAIT}. */
-        String awaitLine(Predicate<String> wanted) throws InterruptedException {
-            long deadline = System.nanoTime() + WAIT.toNanos();
-            while (true) {
-                long left = deadline - System.nanoTime();
-                String line = left > 0 ? lines.poll(left, TimeUnit.NANOSECONDS) : null;
-                if (line == null) {
-                    fail("timed out waiting for a line on standard output; stdout: " + stdoutSoFar() + "; stderr: " + stderr());
-                }
-                if (line == END) {
-                    lines.add(END);
-                    fail("standard output ended (the server exited?) before the line came; stdout: " + stdoutSoFar()
-                            + "; stderr: " + stderr());
-                }
-                if (wanted.test(line)) {
-                    return line;
-                }
-            }
-        }
-
-        Matcher awaitListening() throws InterruptedException {
-            Matcher matcher = LISTENING.matcher(awaitLine(line -> LISTENING.matcher(line).find()));
-            assertTrue(matcher.find());
-            return matcher;
-        }
-
-        /** The exit code, waiting at most {@link #WAIT}; then all output has been read. */
-        int awaitExit() throws InterruptedException {
-            if (!process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS)) {
-                fail("the server did not exit; stdout: " + stdoutSoFar() + "; stderr: " + stderr());
-            }
-            outReader.join(WAIT.toMillis());
-            errReader.join(WAIT.toMillis());
-            return process.exitValue();
-        }
-
-        /**
-         * Sends SIGTERM. Not with {@link Process#destroy()}: that also closes our ends of the
-         * child's standard output and error, losing whatever it logs while it stops.
-         */
-        void sigterm() {
-            assertTrue(process.toHandle().destroy(), "SIGTERM sent");
-        }
-
-        void kill() throws InterruptedException {
-            if (process.isAlive()) {
-                process.destroyForcibly();
-                process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS);
-            }
-        }
     }
 }

@@ -3,6 +3,8 @@ package org.usarsim.wss.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.hub.Sockets.readLine;
+import static org.usarsim.wss.hub.Sockets.send;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -20,7 +22,6 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import org.usarsim.wss.app.HeadlessProcessTest.Server;
 import org.usarsim.wss.model.PluginJars;
 
 /**
@@ -30,8 +31,6 @@ import org.usarsim.wss.model.PluginJars;
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class PluginProcessTest {
 
-    private static final int WAIT_MS = 10_000;
-
     @TempDir
     static Path compiled;
 
@@ -40,7 +39,7 @@ class PluginProcessTest {
     @TempDir
     Path dir;
 
-    private final List<Server> servers = new ArrayList<>();
+    private final List<ServerProcess> servers = new ArrayList<>();
     private final List<Socket> sockets = new ArrayList<>();
 
     @BeforeAll
@@ -53,7 +52,7 @@ class PluginProcessTest {
         for (Socket socket : sockets) {
             socket.close();
         }
-        for (Server server : servers) {
+        for (ServerProcess server : servers) {
             server.kill();
         }
     }
@@ -62,7 +61,7 @@ class PluginProcessTest {
     void aPluginFromPluginDirIsSelectedAndAnswers() throws Exception {
         Path plugins = dir.resolve("my plugins");
         Path jar = PluginJars.fixedStrengthJar(plugins.resolve("fixed.jar"), classes);
-        Server server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
                 config("wss.pluginDir = " + plugins, "wss.model = FixedStrength"));
 
         Matcher listening = server.awaitListening();
@@ -79,7 +78,7 @@ class PluginProcessTest {
         Path jar = PluginJars.fixedStrengthJar(app.resolve("plugins").resolve("fixed.jar"), classes);
         Path broken = PluginJars.jar(app.resolve("plugins").resolve("broken.jar"), classes, List.of("Base", "ConstructorThrows"),
                 List.of("ConstructorThrows"));
-        Server server = start(List.of("-jar", wssJar.toString()), config("wss.model = " + PluginJars.FIXED));
+        ServerProcess server = start(List.of("-jar", wssJar.toString()), config("wss.model = " + PluginJars.FIXED));
 
         Matcher listening = server.awaitListening();
         assertEquals("FixedStrength", listening.group(2));
@@ -93,7 +92,7 @@ class PluginProcessTest {
     @Test
     void aPluginDirThatDoesNotExistExitsTwoBeforeBinding() throws Exception {
         Path absent = dir.resolve("no such folder");
-        Server server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
                 config("wss.pluginDir = " + absent));
         assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
         String error = server.stderr().strip();
@@ -108,12 +107,12 @@ class PluginProcessTest {
     private void assertStrength(int port, String strength) throws Exception {
         Socket a = connect(port);
         Socket b = connect(port);
-        HeadlessProcessTest.send(a, "INIT {Robot A} {Port 5000}\r\n");
-        assertEquals("INITREPLY {Status OK}\r\n", HeadlessProcessTest.readLine(a));
-        HeadlessProcessTest.send(b, "INIT {Robot B} {Port 5001}\r\n");
-        assertEquals("INITREPLY {Status OK}\r\n", HeadlessProcessTest.readLine(b));
-        HeadlessProcessTest.send(a, "GETSS {Robot B}\r\n");
-        assertEquals("SS {Robot B} {Strength " + strength + "}\r\n", HeadlessProcessTest.readLine(a));
+        send(a, "INIT {Robot A} {Port 5000}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", readLine(a));
+        send(b, "INIT {Robot B} {Port 5001}\r\n");
+        assertEquals("INITREPLY {Status OK}\r\n", readLine(b));
+        send(a, "GETSS {Robot B}\r\n");
+        assertEquals("SS {Robot B} {Strength " + strength + "}\r\n", readLine(a));
     }
 
     private Path config(String... lines) throws IOException {
@@ -124,11 +123,10 @@ class PluginProcessTest {
         return Files.write(Files.createTempFile(dir, "wss", ".properties"), all, StandardCharsets.UTF_8);
     }
 
-    private Server start(List<String> javaArguments, Path config) throws IOException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
-        command.addAll(javaArguments);
-        command.addAll(List.of("--headless", "--config", config.toString()));
-        Server server = new Server(new ProcessBuilder(command).start());
+    private ServerProcess start(List<String> javaArguments, Path config) throws IOException {
+        List<String> arguments = new ArrayList<>(javaArguments);
+        arguments.addAll(List.of("--headless", "--config", config.toString()));
+        ServerProcess server = ServerProcess.startJava(arguments);
         servers.add(server);
         return server;
     }
@@ -136,8 +134,8 @@ class PluginProcessTest {
     private Socket connect(int port) throws IOException {
         Socket socket = new Socket();
         sockets.add(socket);
-        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), WAIT_MS);
-        socket.setSoTimeout(WAIT_MS);
+        socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), (int) ServerProcess.WAIT.toMillis());
+        socket.setSoTimeout((int) ServerProcess.WAIT.toMillis());
         return socket;
     }
 }

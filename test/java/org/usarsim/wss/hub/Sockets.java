@@ -3,8 +3,10 @@ package org.usarsim.wss.hub;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.fail;
 
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
+import java.io.OutputStream;
 import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
@@ -31,6 +33,30 @@ public final class Sockets {
         byte[] data = in.readNBytes(length);
         assertEquals(length, data.length, "bytes before end of stream");
         return data;
+    }
+
+    /** Writes the text (a command line with its CR LF, say) and flushes. */
+    public static void send(Socket socket, String text) throws IOException {
+        OutputStream out = socket.getOutputStream();
+        out.write(text.getBytes(StandardCharsets.UTF_8));
+        out.flush();
+    }
+
+    /**
+     * One reply line with its line end, read byte by byte up to LF (or what came before end of
+     * stream); the socket's timeout bounds the wait.
+     */
+    public static String readLine(Socket socket) throws IOException {
+        InputStream in = socket.getInputStream();
+        ByteArrayOutputStream line = new ByteArrayOutputStream();
+        int b;
+        while ((b = in.read()) != -1) {
+            line.write(b);
+            if (b == '\n') {
+                break;
+            }
+        }
+        return line.toString(StandardCharsets.UTF_8);
     }
 
     /** The other end closed: the next read is end of stream or a reset, well before the read timeout. */

@@ -4,10 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.hub.Sockets.readLine;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
 import java.net.ConnectException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
@@ -27,6 +26,7 @@ import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.usarsim.wss.app.ServerProcess;
 
 /** {@code Main --world FILE --bind 127.0.0.1 --port 0} as a user runs it, in a child process. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
@@ -170,18 +170,5 @@ class WorldProcessTest {
         socket.connect(new InetSocketAddress(InetAddress.getByName("127.0.0.1"), port), (int) ServerProcess.WAIT.toMillis());
         socket.setSoTimeout((int) ServerProcess.WAIT.toMillis());
         return socket;
-    }
-
-    private static String readLine(Socket socket) throws IOException {
-        InputStream in = socket.getInputStream();
-        ByteArrayOutputStream line = new ByteArrayOutputStream();
-        int b;
-        while ((b = in.read()) != -1) {
-            line.write(b);
-            if (b == '\n') {
-                break;
-            }
-        }
-        return line.toString(StandardCharsets.US_ASCII);
     }
 }

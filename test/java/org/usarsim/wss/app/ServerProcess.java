@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.app;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
@@ -16,33 +16,45 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
-import org.usarsim.wss.app.Main;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 /**
- * The real server as a child process, {@code java -cp <classes> org.usarsim.wss.app.Main ARGS},
- * its standard output read line by line and its standard error collected.
+ * The real server as a child process, as a user runs it: {@code java -cp <classes>
+ * org.usarsim.wss.app.Main ARGS} ({@link #start}) or any other {@code java} command line
+ * ({@link #startJava}, e.g. {@code -jar wss.jar}). Its standard output is read line by line and
+ * its standard error collected.
  */
-final class ServerProcess {
+public final class ServerProcess {
 
     /** How long to wait for anything the server should do at once (JVM start included). */
-    static final Duration WAIT = Duration.ofSeconds(10);
+    public static final Duration WAIT = Duration.ofSeconds(10);
+
+    /** The headless server's "listening" line: group 1 the control port, group 2 the propagation model. */
+    private static final Pattern LISTENING = Pattern.compile("WSS listening for robots on 127\\.0\\.0\\.1:(\\d+) with (\\S+)");
 
     /** Put on the queue when standard output ends. */
     private static final String END = new String("<end of standard output>");
 
-    final Process process;
+    public final Process process;
     private final BlockingQueue<String> lines = new LinkedBlockingQueue<>();
     private final List<String> stdout = new CopyOnWriteArrayList<>();
     private final ByteArrayOutputStream stderr = new ByteArrayOutputStream();
     private final Thread outReader;
     private final Thread errReader;
 
-    static ServerProcess start(String... args) throws Exception {
+    /** {@code java -cp <the server's classes> org.usarsim.wss.app.Main ARGS}. */
+    public static ServerProcess start(String... args) throws Exception {
         Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
-        List<String> command = new ArrayList<>(List.of(
-                Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classes.toString(), Main.class.getName()));
-        command.addAll(List.of(args));
+        List<String> arguments = new ArrayList<>(List.of("-cp", classes.toString(), Main.class.getName()));
+        arguments.addAll(List.of(args));
+        return startJava(arguments);
+    }
+
+    /** {@code java ARGUMENTS}, with the java of the JVM running the tests. */
+    public static ServerProcess startJava(List<String> arguments) throws IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(arguments);
         return new ServerProcess(new ProcessBuilder(command).start());
     }
 
@@ -89,18 +101,18 @@ final class ServerProcess {
         }
     }
 
-    List<String> stdoutSoFar() {
+    public List<String> stdoutSoFar() {
         return List.copyOf(stdout);
     }
 
-    String stderr() {
+    public String stderr() {
         synchronized (stderr) {
             return stderr.toString(StandardCharsets.UTF_8);
         }
     }
 
     /** The next line of standard output that matches, waiting at most {@link #WAIT}. */
-    String awaitLine(Predicate<String> wanted) throws InterruptedException {
+    public String awaitLine(Predicate<String> wanted) throws InterruptedException {
         long deadline = System.nanoTime() + WAIT.toNanos();
         while (true) {
             long left = deadline - System.nanoTime();
@@ -119,8 +131,18 @@ final class ServerProcess {
         }
     }
 
+    /**
+     * The headless server's "WSS listening for robots on 127.0.0.1:PORT with MODEL" line, waiting
+     * at most {@link #WAIT}: group 1 is the control port, group 2 the propagation model.
+     */
+    public Matcher awaitListening() throws InterruptedException {
+        Matcher matcher = LISTENING.matcher(awaitLine(line -> LISTENING.matcher(line).find()));
+        assertTrue(matcher.find());
+        return matcher;
+    }
+
     /** The exit code, waiting at most {@link #WAIT}; then all output has been read. */
-    int awaitExit() throws InterruptedException {
+    public int awaitExit() throws InterruptedException {
         if (!process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS)) {
             fail("the server did not exit; stdout: " + stdoutSoFar() + "; stderr: " + stderr());
         }
@@ -129,12 +151,15 @@ final class ServerProcess {
         return process.exitValue();
     }
 
-    /** SIGTERM, leaving our ends of the child's output open (unlike {@link Process#destroy()}). */
-    void sigterm() {
+    /**
+     * Sends SIGTERM. Not with {@link Process#destroy()}: that also closes our ends of the
+     * child's standard output and error, losing whatever it logs while it stops.
+     */
+    public void sigterm() {
         assertTrue(process.toHandle().destroy(), "SIGTERM sent");
     }
 
-    void kill() throws InterruptedException {
+    public void kill() throws InterruptedException {
         if (process.isAlive()) {
             process.destroyForcibly();
             process.waitFor(WAIT.toMillis(), TimeUnit.MILLISECONDS);

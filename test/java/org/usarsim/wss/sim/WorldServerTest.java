@@ -3,17 +3,16 @@ package org.usarsim.wss.sim;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
+import static org.usarsim.wss.hub.Sockets.readLine;
+import static org.usarsim.wss.hub.Sockets.send;
 
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
 import java.net.ConnectException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketException;
-import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -28,6 +27,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.hub.Wait;
 
 /** The world server over real sockets on 127.0.0.1, its clock set by the test. */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
@@ -173,7 +173,7 @@ class WorldServerTest {
         } catch (SocketException e) {
             // the server may close before all of it is written
         }
-        assertClosedByServer(flooding);
+        assertClosedByPeer(flooding, "the flooding client");
         send(staying, "GETPOS\r\n");
         assertEquals(AT_10, readLine(staying));
     }
@@ -212,7 +212,7 @@ class WorldServerTest {
             send(client, "WHERE {Robot Robot1}\r\nGETPOS\r\n");
             assertEquals(AT_10, readLine(client));
             client.close();
-            Eventually.until("the server logs that the client left", () -> has(records, Level.INFO, peer + " left"));
+            Wait.until("the server logs that the client left", () -> has(records, Level.INFO, peer + " left"));
             assertTrue(has(records, Level.INFO, peer + " connected"), messages(records));
             assertTrue(has(records, Level.FINE, peer + ": no answer to 'WHERE {Robot Robot1}'"), messages(records));
         } finally {
@@ -228,7 +228,7 @@ class WorldServerTest {
         assertEquals(AT_10, readLine(client));
         int port = server.port();
         server.close();
-        assertClosedByServer(client);
+        assertClosedByPeer(client, "the client");
         assertThrows(ConnectException.class, () -> new Socket(InetAddress.getLoopbackAddress(), port).close());
         server.close(); // twice is harmless
     }
@@ -250,34 +250,5 @@ class WorldServerTest {
         socket.setSoTimeout(TIMEOUT_MS);
         socket.setTcpNoDelay(true);
         return socket;
-    }
-
-    private static void send(Socket socket, String text) throws IOException {
-        OutputStream out = socket.getOutputStream();
-        out.write(text.getBytes(StandardCharsets.UTF_8));
-        out.flush();
-    }
-
-    /** One reply line with its line end (the socket's timeout bounds the wait). */
-    private static String readLine(Socket socket) throws IOException {
-        InputStream in = socket.getInputStream();
-        ByteArrayOutputStream line = new ByteArrayOutputStream();
-        int b;
-        while ((b = in.read()) != -1) {
-            line.write(b);
-            if (b == '\n') {
-                break;
-            }
-        }
-        return line.toString(StandardCharsets.UTF_8);
-    }
-
-    /** The server closed the connection: end of stream or a reset, well before the timeout. */
-    private static void assertClosedByServer(Socket socket) throws IOException {
-        try {
-            assertEquals(-1, socket.getInputStream().read(), "end of stream");
-        } catch (SocketException reset) {
-            // a reset: closed all the same
-        }
     }
 }

@@ -26,7 +26,7 @@ final class EventFanOut implements WssEventListener {
         for (WssEventListener listener : listeners) {
             try {
                 call.accept(listener);
-            } catch (RuntimeException e) {
+            } catch (RuntimeException | LinkageError | AssertionError e) {
                 LOG.log(Level.WARNING, "an event listener failed: " + e, e);
             }
         }
@@ -73,7 +73,7 @@ final class EventFanOut implements WssEventListener {
         for (WssEventListener listener : listeners) {
             try {
                 listener.dataSent(from, to, bytes);
-            } catch (RuntimeException e) {
+            } catch (RuntimeException | LinkageError | AssertionError e) {
                 LOG.log(Level.WARNING, "an event listener failed: " + e, e);
             }
         }

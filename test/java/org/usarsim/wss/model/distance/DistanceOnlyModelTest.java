@@ -122,7 +122,7 @@ class DistanceOnlyModelTest {
         TestRobot source = a;
         Wait.until("the WSS port refuses", () -> refuses(source, port));
         long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - moved);
-        assertTrue(tookMs < 200 + 1500, "closed and refused " + tookMs + " ms after the move, with a 200 ms poll interval");
+        assertTrue(tookMs < 200 + 1800, "closed and refused " + tookMs + " ms after the move, with a 200 ms poll interval");
         assertEquals(port, a.dns("B", 0), "the number is kept while out of range");
         assertEquals(Replies.signal("B", new PathLoss(-49.67, 3, 2, -93).strength(100)), a.ask("GETSS {Robot B}"));
 
@@ -328,8 +328,11 @@ class DistanceOnlyModelTest {
     @Test
     void aHoldTimeKeepsEachLinkStateAtLeastThatLong() throws Exception {
         rig(Map.of("distance.holdTime", "0.4"));
+        long started = System.nanoTime();
         List<ModelRig.Event> changes = oscillate(14);
-        assertTrue(changes.size() >= 2 && changes.size() <= 4, "at most one change per 0.4 s over about 1.4 s: " + changes);
+        long tookMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - started);
+        assertTrue(changes.size() >= 2, "14 polls at the edge change the link more than once: " + changes);
+        assertTrue(changes.size() <= tookMs / 400 + 1, "at most one change per 0.4 s over " + tookMs + " ms: " + changes);
         for (int i = 1; i < changes.size(); i++) {
             long gapMs = TimeUnit.NANOSECONDS.toMillis(changes.get(i).nanos() - changes.get(i - 1).nanos());
             assertTrue(gapMs >= 350, "changes " + gapMs + " ms apart: " + changes);

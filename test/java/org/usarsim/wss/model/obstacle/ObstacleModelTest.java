@@ -138,6 +138,7 @@ class ObstacleModelTest {
         assertFalse(rig.model.connectionIsPossibleForPair("A", "B"));
         assertEquals(List.of("A", "B"), rig.server.hub.getListOfRegisteredRobots());
         assertEquals(0, rig.logLines(Level.WARNING, "lost the simulator"), "GETPOS is still answered");
+        assertEquals(1, rig.logLines(Level.WARNING, "the simulator answers no GETOBS"), "said once: " + rig.log.size() + " lines");
         rig.sim.remove("B");
         assertClosedByPeer(b.control, "B, no longer listed, is kicked");
         a.close();

@@ -29,6 +29,8 @@ public final class SimulatorConnection implements Closeable {
     private final OutputStream out;
     private final int timeoutMs;
     private final byte[] buffer = new byte[8192];
+    /** The start of a line whose end has not come yet; kept across a timeout, so the line is whole when it comes. */
+    private final ByteArrayOutputStream partial = new ByteArrayOutputStream();
     private int bufferStart;
     private int bufferEnd;
 
@@ -71,7 +73,8 @@ public final class SimulatorConnection implements Closeable {
 
     /**
      * Sends one {@code GETOBS} per pair in a single write and collects the answers that come
-     * within the timeout. A pair without an answer, or with a negative count, maps to NaN.
+     * within the timeout: the count per answered pair, NaN where the simulator answered a negative
+     * count. A pair without an answer is absent from the result (a simulator may not know GETOBS).
      */
     public Map<NamePair, Double> obstacles(Collection<NamePair> pairs) throws IOException {
         Map<NamePair, Double> counts = new HashMap<>();
@@ -97,10 +100,7 @@ public final class SimulatorConnection implements Closeable {
                 }
             }
         } catch (SocketTimeoutException e) {
-            // Unanswered pairs stay unknown: a simulator may not know GETOBS at all.
-        }
-        for (NamePair pair : pairs) {
-            counts.putIfAbsent(pair, Double.NaN);
+            // The rest stay unanswered; a late answer is skipped when it comes.
         }
         return counts;
     }
@@ -112,17 +112,17 @@ public final class SimulatorConnection implements Closeable {
 
     /** The next line (CR LF or LF), waiting until the deadline at most. */
     private String readLine(long deadline, String request) throws IOException {
-        ByteArrayOutputStream line = new ByteArrayOutputStream();
+        ByteArrayOutputStream line = partial;
         while (true) {
             for (int i = bufferStart; i < bufferEnd; i++) {
                 if (buffer[i] == '\n') {
                     line.write(buffer, bufferStart, i - bufferStart);
                     bufferStart = i + 1;
                     String text = line.toString(StandardCharsets.UTF_8).strip();
+                    line.reset();
                     if (!text.isEmpty()) {
                         return text;
                     }
-                    line.reset();
                     continue; // a blank line: skipped
                 }
             }

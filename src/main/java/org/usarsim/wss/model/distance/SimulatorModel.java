@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -43,13 +42,8 @@ public abstract class SimulatorModel implements PropagationModel {
     };
     private volatile Map<String, RobotState> positions = Map.of();
     private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
-    private volatile Thread poller;
-    private volatile boolean active;
-    /** The poller's connection; null while there is none. */
-    private volatile SimulatorConnection connection;
-    /** Why the simulator is unusable since {@link #troubleSince}; null while it answers. */
-    private String trouble;
-    private long troubleSince;
+    /** The polling of the current run, from a start to its shutdown; null while stopped. */
+    private volatile Poller poller;
 
     @Override
     public void configure(ModelSettings settings) {
@@ -76,7 +70,7 @@ public abstract class SimulatorModel implements PropagationModel {
     /** Checks the settings, connects to the simulator and starts polling it. */
     @Override
     public synchronized void start() throws ModelStartException {
-        if (active) {
+        if (poller != null) {
             return;
         }
         check(pathLoss.n() > 0 && Double.isFinite(pathLoss.n()), "distance.n must be above 0, not " + pathLoss.n());
@@ -86,6 +80,7 @@ public abstract class SimulatorModel implements PropagationModel {
         check(intervalMs > 0 && timeoutMs > 0, "usarsim.interval and usarsim.timeout must be above 0");
         check(port > 0 && port < 65536, "usarsim.port must be from 1 to 65535, not " + port);
         check(linkModel != null, "no server to act on (setRobotLinkModel was not called)");
+        SimulatorConnection connection;
         try {
             connection = SimulatorConnection.open(host, port, timeoutMs);
         } catch (IOException | RuntimeException e) {
@@ -93,15 +88,11 @@ public abstract class SimulatorModel implements PropagationModel {
         }
         positions = Map.of();
         links = new LinkStates(pathLoss.cutoff(), margin, holdSeconds);
-        trouble = null;
-        active = true;
+        started();
         log.info(name() + " polls the simulator at " + where() + " every " + intervalMs + " ms; range " + metres(pathLoss.range())
                 + " (cutoff " + pathLoss.cutoff() + " dBm" + (margin > 0 ? ", margin " + margin + " dB" : "")
                 + (holdSeconds > 0 ? ", hold time " + holdSeconds + " s" : "") + ")");
-        Thread thread = new Thread(this::run, name() + " poller");
-        thread.setDaemon(true);
-        poller = thread;
-        thread.start();
+        poller = new Poller(connection);
     }
 
     private static void check(boolean ok, String message) throws ModelStartException {
@@ -110,28 +101,22 @@ public abstract class SimulatorModel implements PropagationModel {
         }
     }
 
+    /** Stops polling; a poll under way is abandoned (its connection closed) and acts on nothing more. */
     @Override
     public void shutdown() {
-        Thread thread;
+        Poller stopping;
         synchronized (this) {
-            active = false;
-            thread = poller;
+            stopping = poller;
             poller = null;
         }
-        if (thread != null) {
-            thread.interrupt();
-            closeConnection();
-            try {
-                thread.join(TimeUnit.SECONDS.toMillis(5));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
+        if (stopping != null) {
+            stopping.stop();
         }
     }
 
     @Override
     public boolean isActive() {
-        return active;
+        return poller != null;
     }
 
     @Override
@@ -180,132 +165,187 @@ public abstract class SimulatorModel implements PropagationModel {
             throws IOException {
     }
 
+    /** Called at every start, before the first poll: a subclass forgets what the last run learned. */
+    protected void started() {
+    }
+
     protected final PathLoss pathLoss() {
         return pathLoss;
     }
 
     // ---- the poller ----
 
-    private void run() {
-        long backoffMs = intervalMs;
-        long next = System.nanoTime();
-        try {
-            while (pause(next)) {
-                long started = System.nanoTime();
-                next = started + intervalMs * 1_000_000L;
-                try {
-                    if (connection == null) {
-                        connection = SimulatorConnection.open(host, port, timeoutMs);
-                    }
-                    poll(connection);
-                    back();
-                    backoffMs = intervalMs;
-                } catch (IOException e) {
-                    if (!active) {
-                        return;
-                    }
-                    lost(e);
-                    closeConnection();
-                    next = started + backoffMs * 1_000_000L;
-                    backoffMs = Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
-                } catch (RuntimeException e) {
-                    log.log(Level.WARNING, name() + ": a poll failed: " + e, e);
-                }
-            }
-        } finally {
-            closeConnection();
-        }
-    }
+    /**
+     * One run of polling, from a start to its shutdown: its own thread, connection and trouble
+     * state, so that a run that is slow to stop can never touch the next one's.
+     */
+    private final class Poller implements Runnable {
 
-    /** Waits until {@code deadline}; false when the model stopped meanwhile. */
-    private boolean pause(long deadline) {
-        long left;
-        while (active && (left = deadline - System.nanoTime()) > 0) {
+        private final Thread thread;
+        private volatile boolean stopped;
+        private volatile SimulatorConnection connection;
+        /** Why the simulator is unusable since {@link #troubleSince}; null while it answers. */
+        private String trouble;
+        private long troubleSince;
+        /** A failure that is not the simulator's, already logged; null after a good poll. */
+        private String failure;
+
+        Poller(SimulatorConnection connection) {
+            this.connection = connection;
+            thread = new Thread(this, name() + " poller");
+            thread.setDaemon(true);
+            thread.start();
+        }
+
+        void stop() {
+            stopped = true;
+            thread.interrupt();
+            close();
             try {
-                TimeUnit.NANOSECONDS.sleep(left);
+                thread.join(TimeUnit.SECONDS.toMillis(5));
             } catch (InterruptedException e) {
-                return false;
+                Thread.currentThread().interrupt();
             }
         }
-        return active;
-    }
 
-    /** One poll: positions, kicks, then every pair of listed robots broken or resumed. */
-    private void poll(SimulatorConnection simulator) throws IOException {
-        RobotLinkModel hub = linkModel;
-        List<String> registeredBefore = hub.getListOfRegisteredRobots();
-        Map<String, RobotState> listed = simulator.positions();
-        boolean kickAbsent = kicksRobotsAbsentFrom(listed);
-        for (String robot : registeredBefore) {
-            RobotState state = listed.get(robot);
-            if (state == null && kickAbsent) {
-                log.info("kicking " + robot + ": the simulator does not list it");
-                hub.kickOutRobot(robot);
-            } else if (state != null && state.batteryEmpty()) {
-                log.info("kicking " + robot + ": its battery is empty");
-                listener.robotOutOfBattery(robot);
-                hub.kickOutRobot(robot);
-            }
-        }
-        List<String> present = new ArrayList<>();
-        for (String robot : hub.getListOfRegisteredRobots()) {
-            RobotState state = listed.get(robot);
-            if (state != null && !state.batteryEmpty()) {
-                present.add(robot);
-            }
-        }
-        List<NamePair> pairs = new ArrayList<>();
-        for (int i = 0; i < present.size(); i++) {
-            for (int j = i + 1; j < present.size(); j++) {
-                pairs.add(NamePair.of(present.get(i), present.get(j)));
-            }
-        }
-        beforeDecisions(listed, pairs, simulator);
-        // Only now: a GETSS meanwhile answers from the last positions with what goes with them.
-        positions = listed;
-        LinkStates states = links;
-        Set<String> presentSet = new HashSet<>(present);
-        states.retainOnly(presentSet);
-        long now = System.nanoTime();
-        for (NamePair pair : pairs) {
-            RobotState a = listed.get(pair.first());
-            RobotState b = listed.get(pair.second());
-            double strength = strength(a, b);
-            if (states.decide(pair, strength, now)) {
-                if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {
-                    log.fine(pair + " in range: " + strength + " dBm");
-                    listener.connectionInRange(pair.first(), pair.second());
+        @Override
+        public void run() {
+            long backoffMs = intervalMs;
+            long next = System.nanoTime();
+            try {
+                while (pause(next)) {
+                    next = System.nanoTime() + intervalMs * 1_000_000L;
+                    try {
+                        SimulatorConnection simulator = connection;
+                        if (simulator == null) {
+                            simulator = SimulatorConnection.open(host, port, timeoutMs);
+                            connection = simulator;
+                        }
+                        poll(simulator);
+                        back();
+                        backoffMs = intervalMs;
+                    } catch (IOException e) {
+                        if (stopped) {
+                            return;
+                        }
+                        lost(e);
+                        close();
+                        next = System.nanoTime() + backoffMs * 1_000_000L;
+                        backoffMs = Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
+                    } catch (RuntimeException | Error e) {
+                        failed(e);
+                    }
                 }
-            } else if (hub.breakConnectionsForPair(pair.first(), pair.second())) {
-                log.fine(pair + " out of range: " + strength + " dBm at " + metres(a.distanceTo(b)));
-                listener.connectionOutOfRange(pair.first(), pair.second(), strength, a.distanceTo(b));
+            } finally {
+                close();
             }
         }
-    }
 
-    private void lost(IOException e) {
-        String reason = e.getMessage() == null ? e.toString() : e.getMessage();
-        if (trouble == null) {
-            troubleSince = System.nanoTime();
-            log.warning("lost the simulator at " + where() + ": " + reason + "; keeping the last known link state and reconnecting");
-        } else if (!reason.equals(trouble)) {
-            log.fine("the simulator at " + where() + " is still unusable: " + reason);
+        /** Waits until {@code deadline}; false when the run was stopped meanwhile. */
+        private boolean pause(long deadline) {
+            long left;
+            while (!stopped && (left = deadline - System.nanoTime()) > 0) {
+                try {
+                    TimeUnit.NANOSECONDS.sleep(left);
+                } catch (InterruptedException e) {
+                    return false;
+                }
+            }
+            return !stopped;
         }
-        trouble = reason;
-    }
 
-    private void back() {
-        if (trouble != null) {
-            long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - troubleSince);
-            log.info("the simulator at " + where() + " answers again after " + seconds + " s");
-            trouble = null;
+        /** One poll: positions, kicks, then every pair of listed robots broken or resumed. */
+        private void poll(SimulatorConnection simulator) throws IOException {
+            RobotLinkModel hub = linkModel;
+            List<String> registeredBefore = hub.getListOfRegisteredRobots();
+            Map<String, RobotState> listed = simulator.positions();
+            if (stopped) {
+                return;
+            }
+            boolean kickAbsent = kicksRobotsAbsentFrom(listed);
+            for (String robot : registeredBefore) {
+                RobotState state = listed.get(robot);
+                if (state == null && kickAbsent) {
+                    log.info("kicking " + robot + ": the simulator does not list it");
+                    hub.kickOutRobot(robot);
+                } else if (state != null && state.batteryEmpty()) {
+                    log.info("kicking " + robot + ": its battery is empty");
+                    listener.robotOutOfBattery(robot);
+                    hub.kickOutRobot(robot);
+                }
+            }
+            List<String> present = new ArrayList<>();
+            for (String robot : hub.getListOfRegisteredRobots()) {
+                RobotState state = listed.get(robot);
+                if (state != null && !state.batteryEmpty()) {
+                    present.add(robot);
+                }
+            }
+            List<NamePair> pairs = new ArrayList<>();
+            for (int i = 0; i < present.size(); i++) {
+                for (int j = i + 1; j < present.size(); j++) {
+                    pairs.add(NamePair.of(present.get(i), present.get(j)));
+                }
+            }
+            beforeDecisions(listed, pairs, simulator);
+            if (stopped) {
+                return;
+            }
+            // Only now: a GETSS meanwhile answers from the last positions with what goes with them.
+            positions = listed;
+            LinkStates states = links;
+            states.retainOnly(new HashSet<>(present));
+            long now = System.nanoTime();
+            for (NamePair pair : pairs) {
+                RobotState a = listed.get(pair.first());
+                RobotState b = listed.get(pair.second());
+                double strength = strength(a, b);
+                if (states.decide(pair, strength, now)) {
+                    if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {
+                        log.fine(pair + " in range: " + strength + " dBm");
+                        listener.connectionInRange(pair.first(), pair.second());
+                    }
+                } else if (hub.breakConnectionsForPair(pair.first(), pair.second())) {
+                    log.fine(pair + " out of range: " + strength + " dBm at " + metres(a.distanceTo(b)));
+                    listener.connectionOutOfRange(pair.first(), pair.second(), strength, a.distanceTo(b));
+                }
+            }
+            failure = null;
         }
-    }
 
-    private synchronized void closeConnection() {
-        if (connection != null) {
-            connection.close();
+        private void lost(IOException e) {
+            String reason = e.getMessage() == null ? e.toString() : e.getMessage();
+            if (trouble == null) {
+                troubleSince = System.nanoTime();
+                log.warning("lost the simulator at " + where() + ": " + reason + "; keeping the last known link state and reconnecting");
+            } else if (!reason.equals(trouble)) {
+                log.fine("the simulator at " + where() + " is still unusable: " + reason);
+            }
+            trouble = reason;
+        }
+
+        private void back() {
+            if (trouble != null) {
+                long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - troubleSince);
+                log.info("the simulator at " + where() + " answers again after " + seconds + " s");
+                trouble = null;
+            }
+        }
+
+        /** A failure that is not the simulator's (a bug, a listener that throws): logged once, then polling goes on. */
+        private void failed(Throwable e) {
+            if (failure == null) {
+                log.log(Level.WARNING, name() + ": a poll failed (" + e + "); polling goes on", e);
+            }
+            failure = e.toString();
+        }
+
+        private void close() {
+            SimulatorConnection open = connection;
             connection = null;
+            if (open != null) {
+                open.close();
+            }
         }
     }
 

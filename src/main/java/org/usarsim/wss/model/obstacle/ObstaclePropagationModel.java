@@ -5,6 +5,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.distance.NamePair;
@@ -22,9 +23,13 @@ import org.usarsim.wss.model.distance.SimulatorModel;
  */
 public final class ObstaclePropagationModel extends SimulatorModel {
 
+    private static final Logger LOG = Logger.getLogger(ObstaclePropagationModel.class.getName());
+
     private double attenuation = 6.325;
     private double cacheDistance = 1.0;
     private volatile ObstacleCounts counts = new ObstacleCounts(cacheDistance);
+    /** Whether the last batch of GETOBS went unanswered (used by the poller only). */
+    private boolean getobsUnanswered;
 
     @Override
     public void configure(ModelSettings settings) {
@@ -38,8 +43,13 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         if (!(attenuation >= 0 && cacheDistance >= 0)) {
             throw new ModelStartException("obstacle.attenuation and obstacle.cacheDistance must be 0 or more");
         }
-        counts = new ObstacleCounts(cacheDistance);
         super.start();
+    }
+
+    @Override
+    protected void started() {
+        counts = new ObstacleCounts(cacheDistance);
+        getobsUnanswered = false;
     }
 
     @Override
@@ -57,7 +67,11 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return !listed.isEmpty();
     }
 
-    /** Asks the simulator, in one batch, for the counts of the pairs whose count is unknown or no longer holds. */
+    /**
+     * Asks the simulator, in one batch, for the counts of the pairs whose count is unknown or no
+     * longer holds; an unanswered pair's count is unknown. A simulator that answers none of a
+     * batch is reported once, and again once it answers.
+     */
     @Override
     protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
             throws IOException {
@@ -65,6 +79,19 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         Set<NamePair> current = new HashSet<>(pairs);
         known.retain(current::contains);
         List<NamePair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
-        simulator.obstacles(stale).forEach((pair, count) -> known.put(pair, count, listed));
+        if (stale.isEmpty()) {
+            return;
+        }
+        Map<NamePair, Double> answers = simulator.obstacles(stale);
+        for (NamePair pair : stale) {
+            known.put(pair, answers.getOrDefault(pair, Double.NaN), listed);
+        }
+        if (answers.isEmpty() && !getobsUnanswered) {
+            LOG.warning("the simulator answers no GETOBS (" + stale.size() + " asked): pairs whose obstacle count is unknown"
+                    + " cannot connect");
+        } else if (!answers.isEmpty() && getobsUnanswered) {
+            LOG.info("the simulator answers GETOBS again");
+        }
+        getobsUnanswered = answers.isEmpty();
     }
 }

@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.event.WindowEvent;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
@@ -19,6 +20,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.app.Settings;
+import org.usarsim.wss.model.distance.PathLoss;
 
 /** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */
 class DistanceModelDialogTest {
@@ -175,38 +177,89 @@ class DistanceModelDialogTest {
     }
 
     @Test
-    void noRangeWhenTheCutoffIsNotBelowPd0() {
+    void aCutoffAbovePd0GivesADistanceWithinD0() {
         open(DISTANCE, true);
         type("distance.cutoff", "-40");
-        assertEquals("no range", text(DistanceModelDialog.CUTOFF_DISTANCE));
-        assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("Pd0"), label(DistanceModelDialog.RANGE_NOTE));
+        // 2 * 10^(-9.67 / 10): about 0.2157 m
+        assertEquals(distance(-40, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
+        assertTrue(number(DistanceModelDialog.CUTOFF_DISTANCE) < 2);
+        assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("within d0"), label(DistanceModelDialog.RANGE_NOTE));
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
 
-        type(DistanceModelDialog.CUTOFF_DISTANCE, "100");
-        assertEquals("1", text("distance.n"), "N is not touched");
-        assertTrue(label(DistanceModelDialog.RANGE_NOTE).startsWith("no range"), label(DistanceModelDialog.RANGE_NOTE));
+        type("distance.cutoff", "-49.67");
+        assertEquals("2", text(DistanceModelDialog.CUTOFF_DISTANCE), "exactly d0 when Cutoff = Pd0");
+        assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("any N"), label(DistanceModelDialog.RANGE_NOTE));
     }
 
     @Test
-    void noRangeForADistanceNotAboveD0() {
+    void aDistanceWithinD0IsAcceptedWhenTheCutoffIsAbovePd0() throws Exception {
         open(DISTANCE, true);
-        for (String value : new String[] {"2", "1.5"}) {
-            type(DistanceModelDialog.CUTOFF_DISTANCE, value);
-            assertEquals("1", text("distance.n"), "N is not touched by " + value);
-            assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("no range"), label(DistanceModelDialog.RANGE_NOTE));
-            assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("d0"), label(DistanceModelDialog.RANGE_NOTE));
-            assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
+        type("distance.cutoff", "-40");
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "0.5");
+        assertEquals(exponent(-40, -49.67, 2, 0.5), number("distance.n"), FOUR_DECIMALS);
+        assertEquals("0.5", text(DistanceModelDialog.CUTOFF_DISTANCE), "the typed distance stays as typed");
+        assertEquals(" ", label(DistanceModelDialog.RANGE_NOTE));
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
+        // and back: the N shown gives the distance typed
+        assertEquals(0.5, distance(-40, -49.67, number("distance.n"), 2), 0.001);
+
+        String n = text("distance.n");
+        click(DistanceModelDialog.OK);
+        waitClosed();
+        assertEquals(n, preferences.load(DISTANCE).get("distance.n"));
+        assertEquals("-40", preferences.load(DISTANCE).get("distance.cutoff"));
+    }
+
+    @Test
+    void aDistanceNoNGivesIsRefusedAndTheDialogSaysWhy() {
+        open(DISTANCE, true);
+        // {cutoff, pd0, typed distance, why}; d0 is 2 and N is 1 throughout
+        String[][] refused = {
+            {"-93", "-49.67", "1.5", "with Cutoff below Pd0 it must be beyond d0 (2 m)"},
+            {"-93", "-49.67", "2", "it is d0, which needs Cutoff = Pd0"},
+            {"-40", "-49.67", "3", "with Cutoff above Pd0 it must be within d0 (2 m)"},
+            {"-40", "-49.67", "2", "it is d0, which needs Cutoff = Pd0"},
+            {"-49.67", "-49.67", "3", "with Cutoff = Pd0 it is d0 (2 m)"},
+            {"-49.67", "-49.67", "0.5", "with Cutoff = Pd0 it is d0 (2 m)"},
+            {"-1e308", "1e308", "100", "N too large or too small for a double"},
+        };
+        for (String[] bad : refused) {
+            String what = "cutoff " + bad[0] + ", Pd0 " + bad[1] + ", distance " + bad[2];
+            type("distance.cutoff", bad[0]);
+            type("distance.pd0", bad[1]);
+            type(DistanceModelDialog.CUTOFF_DISTANCE, bad[2]);
+            assertEquals("1", text("distance.n"), "N is not touched: " + what);
+            assertEquals("no N > 0 gives this distance: " + bad[3], label(DistanceModelDialog.RANGE_NOTE), what);
+            assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground), what);
+            // in full under the groups at once, as the note beside the field is cut short
+            assertTrue(label(DistanceModelDialog.MESSAGE).contains("Cutoff distance (m): '" + bad[2] + "': no N > 0 gives this distance: "
+                    + bad[3]), label(DistanceModelDialog.MESSAGE));
         }
-        // OK refuses while the distance the user typed makes no range
+        // OK refuses while no N gives the distance the user typed
         click(DistanceModelDialog.OK);
         assertTrue(Gui.onEdt(dialog::isShowing));
-        assertTrue(label(DistanceModelDialog.MESSAGE).contains("Cutoff distance"), label(DistanceModelDialog.MESSAGE));
+        assertTrue(label(DistanceModelDialog.MESSAGE).contains("Cutoff distance (m): '100': no N > 0 gives this distance"),
+                label(DistanceModelDialog.MESSAGE));
         // a parameter edit recomputes the distance, and with it the problem is gone
+        type("distance.pd0", "-49.67");
+        type("distance.cutoff", "-93");
         type("distance.n", "2");
         assertEquals(distance(-93, -49.67, 2, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
         assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
         click(DistanceModelDialog.OK);
         waitClosed();
         assertEquals("2", preferences.load(DISTANCE).get("distance.n"));
+    }
+
+    @Test
+    void theDistanceOfCutoffEqualToPd0IsD0ForAnyNAndTypingItKeepsN() {
+        open(DISTANCE, true);
+        type("distance.cutoff", "-49.67");
+        type("distance.n", "2.5");
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "2");
+        assertEquals("2.5", text("distance.n"));
+        assertTrue(label(DistanceModelDialog.RANGE_NOTE).contains("any N"), label(DistanceModelDialog.RANGE_NOTE));
+        assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
     }
 
     @Test
@@ -374,9 +427,21 @@ class DistanceModelDialogTest {
     }
 
     @Test
-    void theFormulasAreEachOthersInverse() {
-        double d = DistanceModelDialog.cutoffDistance(-93, -49.67, 1, 2);
-        assertEquals(2 * Math.pow(10, 43.33 / 10), d, 1e-9);
-        assertEquals(1, DistanceModelDialog.exponent(-93, -49.67, 2, d), 1e-12);
+    void theDialogsFormulasArePathLossRangeAndItsInverse() {
+        PathLoss defaults = new PathLoss(-49.67, 1, 2, -93);
+        assertEquals(2 * Math.pow(10, 43.33 / 10), defaults.range(), 1e-9);
+        assertEquals(1, PathLoss.exponentFor(-49.67, 2, -93, defaults.range()), 1e-12);
+        PathLoss above = new PathLoss(-49.67, 2.5, 2, -40);
+        assertTrue(above.range() < 2, "a cutoff above Pd0: within d0");
+        assertEquals(2.5, PathLoss.exponentFor(-49.67, 2, -40, above.range()), 1e-12);
+        assertEquals(2, new PathLoss(-50, 3, 2, -50).range(), "a cutoff equal to Pd0: d0");
+        // no N above 0 gives these
+        double[][] none = {
+            {-49.67, 2, -93, 1.5}, {-49.67, 2, -93, 2}, {-49.67, 2, -40, 3}, {-49.67, 2, -40, 2},
+            {-50, 2, -50, 3}, {-50, 2, -50, 2}, {1e308, 2, -1e308, 100}, {-49.67, 2, -93, 0}, {-49.67, 2, -93, -5},
+        };
+        for (double[] c : none) {
+            assertTrue(Double.isNaN(PathLoss.exponentFor(c[0], c[1], c[2], c[3])), Arrays.toString(c));
+        }
     }
 }

@@ -27,6 +27,7 @@ import javax.swing.UIManager;
 import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
 import org.usarsim.wss.app.Settings;
+import org.usarsim.wss.model.distance.PathLoss;
 
 /**
  * The configuration dialog of DistanceOnlyPropagationModel and ObstaclePropagationModel, laid
@@ -342,7 +343,7 @@ final class DistanceModelDialog extends JDialog {
         return Settings.problem(member.key(), text) == null ? Double.valueOf(text.strip()) : null;
     }
 
-    /** distance = d0 * 10^((Pd0 - cutoff) / (10 N)), shown after a parameter changed. */
+    /** distance = d0 * 10^((Pd0 - cutoff) / (10 N)) ({@link PathLoss#range}), shown after a parameter changed. */
     private void showDistance() {
         Double cutoff = parameter(CUTOFF);
         Double n = parameter(N);
@@ -353,13 +354,17 @@ final class DistanceModelDialog extends JDialog {
         if (cutoff == null || n == null || pd0 == null || d0 == null) {
             text = "";
             note = "needs valid Cutoff, N, Pd0, d0";
-        } else if (cutoff >= pd0) {
-            text = "no range";
-            note = "Cutoff \u2265 Pd0: no link beyond d0";
         } else {
-            double value = cutoffDistance(cutoff, pd0, n, d0);
-            text = Double.isFinite(value) ? format(value) : "unlimited";
-            note = Double.isFinite(value) ? " " : "N too small to compute a distance";
+            double value = new PathLoss(pd0, n, d0, cutoff).range();
+            if (Double.isInfinite(value) || value == 0) {
+                // Beyond a double: 10^x overflows to infinity, or underflows to 0.
+                text = value == 0 ? "0" : "unlimited";
+                note = "N too small to compute a distance";
+            } else {
+                text = format(value);
+                note = cutoff > pd0 ? "Cutoff > Pd0: within d0"
+                        : cutoff.doubleValue() == pd0 ? "Cutoff = Pd0: d0, any N" : " ";
+            }
         }
         updating = true;
         distance.setText(text);
@@ -368,7 +373,10 @@ final class DistanceModelDialog extends JDialog {
         note(note, false);
     }
 
-    /** N = (Pd0 - cutoff) / (10 log10(distance / d0)), after the user edited the distance. */
+    /**
+     * N = (Pd0 - cutoff) / (10 log10(distance / d0)) ({@link PathLoss#exponentFor}), after the user
+     * edited the distance.
+     */
     private void distanceEdited() {
         if (updating) {
             return;
@@ -378,22 +386,51 @@ final class DistanceModelDialog extends JDialog {
         Double pd0 = parameter(PD0);
         Double d0 = parameter(D0);
         double value = parseDistance(distance.getText());
+        String remark = " ";
         if (Double.isNaN(value)) {
             distanceProblem = "not a number of metres above 0";
         } else if (cutoff == null || pd0 == null || d0 == null) {
             distanceProblem = "N needs valid Cutoff, Pd0, d0";
-        } else if (cutoff >= pd0) {
-            distanceProblem = "no range: Cutoff \u2265 Pd0";
-        } else if (value <= d0) {
-            distanceProblem = "no range: not above d0 (" + format(d0) + " m)";
-        } else {
+        } else if (cutoff.doubleValue() == pd0 && value == d0) {
+            // Every N gives it: N keeps its value.
             distanceProblem = null;
-            updating = true;
-            fields.get(N.key()).setText(format(exponent(cutoff, pd0, d0, value)));
-            updating = false;
+            remark = "Cutoff = Pd0: d0, any N";
+        } else {
+            double n = PathLoss.exponentFor(pd0, d0, cutoff, value);
+            distanceProblem = Double.isNaN(n) ? "no N > 0 gives this distance: " + why(cutoff, pd0, d0, value) : null;
+            if (distanceProblem == null) {
+                updating = true;
+                fields.get(N.key()).setText(format(n));
+                updating = false;
+            }
         }
         mark(distance, distanceProblem != null);
-        note(distanceProblem == null ? " " : distanceProblem, distanceProblem != null);
+        note(distanceProblem == null ? remark : distanceProblem, distanceProblem != null);
+        if (distanceProblem != null) {
+            show(distanceRefusal()); // in full: the note beside the field is cut short
+        }
+    }
+
+    private String distanceRefusal() {
+        return "Cutoff distance (m): '" + distance.getText().strip() + "': " + distanceProblem;
+    }
+
+    /** Why no N above 0 gives the distance: the sides of d0 each cutoff allows. */
+    private static String why(double cutoff, double pd0, double d0, double distance) {
+        String metres = format(d0) + " m";
+        if (cutoff == pd0) {
+            return "with Cutoff = Pd0 it is d0 (" + metres + ")";
+        }
+        if (distance == d0) {
+            return "it is d0, which needs Cutoff = Pd0";
+        }
+        if (cutoff < pd0 && distance < d0) {
+            return "with Cutoff below Pd0 it must be beyond d0 (" + metres + ")";
+        }
+        if (cutoff > pd0 && distance > d0) {
+            return "with Cutoff above Pd0 it must be within d0 (" + metres + ")";
+        }
+        return "N too large or too small for a double";
     }
 
     /** Beside the distance: why there is none, or what is wrong with the one typed (in red). */
@@ -410,14 +447,6 @@ final class DistanceModelDialog extends JDialog {
         } catch (NumberFormatException e) {
             return Double.NaN;
         }
-    }
-
-    static double cutoffDistance(double cutoff, double pd0, double n, double d0) {
-        return d0 * Math.pow(10, (pd0 - cutoff) / (10 * n));
-    }
-
-    static double exponent(double cutoff, double pd0, double d0, double distance) {
-        return (pd0 - cutoff) / (10 * Math.log10(distance / d0));
     }
 
     /**
@@ -458,7 +487,7 @@ final class DistanceModelDialog extends JDialog {
             refused++;
             if (first == null) {
                 first = distance;
-                refusal = "Cutoff distance (m): '" + distance.getText().strip() + "': " + distanceProblem;
+                refusal = distanceRefusal();
             }
         }
         if (first != null) {

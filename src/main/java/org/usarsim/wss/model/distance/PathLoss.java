@@ -15,4 +15,15 @@ public record PathLoss(double pd0, double n, double d0, double cutoff) {
     public double range() {
         return d0 * Math.pow(10, (pd0 - cutoff) / (10 * n));
     }
+
+    /**
+     * The inverse of {@link #range()}: the N that gives this range, (pd0 - cutoff) / (10 log10(range
+     * / d0)). NaN when no N above 0 does: when the range is on the wrong side of d0 (beyond it needs
+     * a cutoff below pd0, within it a cutoff above), when it is d0 itself (that range comes with any
+     * N when cutoff = pd0, with none otherwise), or when the N would not be a finite double.
+     */
+    public static double exponentFor(double pd0, double d0, double cutoff, double range) {
+        double n = (pd0 - cutoff) / (10 * Math.log10(range / d0));
+        return n > 0 && Double.isFinite(n) ? n : Double.NaN;
+    }
 }

@@ -11,6 +11,9 @@ import javax.imageio.ImageIO;
 import javax.swing.JButton;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
  * Takes a picture of the model dialog as a user sees it, for docs/images. Run under a display,
@@ -21,7 +24,7 @@ import javax.swing.SwingUtilities;
  * mvn -B -q test-compile
  * xvfb-run -a sh -c 'openbox &amp; sleep 1; java -cp target/classes:target/test-classes \
  *     org.usarsim.wss.gui.DialogScreenshot docs/images/distanceonly-dialog.png \
- *     DistanceOnlyPropagationModel [readonly] [key=value ...] [ok]'
+ *     DistanceOnlyPropagationModel|ObstaclePropagationModel [readonly] [key=value ...] [ok]'
  * </pre>
  *
  * <p>A {@code key=value} argument types the value into the field of that name before the picture
@@ -53,7 +56,9 @@ public final class DialogScreenshot {
         try {
             boolean finalEditable = editable;
             DistanceModelDialog[] dialog = new DistanceModelDialog[1];
-            SwingUtilities.invokeAndWait(() -> dialog[0] = new DistanceModelDialog(null, model, finalEditable,
+            SimulatorModel simulatorModel = model.equals("ObstaclePropagationModel") ? new ObstaclePropagationModel()
+                    : new DistanceOnlyPropagationModel();
+            SwingUtilities.invokeAndWait(() -> dialog[0] = new DistanceModelDialog(null, simulatorModel, finalEditable,
                     new ModelPreferences(root)));
             SwingUtilities.invokeLater(() -> dialog[0].setVisible(true));
             Gui.until("the dialog shows", () -> dialog[0].isShowing());

@@ -20,11 +20,15 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.app.Settings;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.distance.PathLoss;
+import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */
 class DistanceModelDialogTest {
 
+    /** The preferences nodes of the real models the dialogs are opened for. */
     private static final String DISTANCE = "DistanceOnlyPropagationModel";
     private static final String OBSTACLE = "ObstaclePropagationModel";
 
@@ -62,7 +66,7 @@ class DistanceModelDialogTest {
     // ---- helpers ----
 
     /** Opens the modal dialog without blocking the test: shown from invokeLater, then driven from here. */
-    private DistanceModelDialog open(String model, boolean editable) {
+    private DistanceModelDialog open(SimulatorModel model, boolean editable) {
         dialog = Gui.onEdt(() -> new DistanceModelDialog(null, model, editable, preferences));
         SwingUtilities.invokeLater(() -> dialog.setVisible(true));
         Gui.until("the dialog shows", () -> dialog.isShowing());
@@ -112,7 +116,7 @@ class DistanceModelDialogTest {
 
     @Test
     void opensWithTheDefaultsAndTheirCutoffDistance() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         assertEquals("DistanceOnlyPropagationModel Configuration", Gui.onEdt(dialog::getTitle));
         assertTrue(Gui.onEdt(dialog::isModal));
         for (String key : DISTANCE_KEYS) {
@@ -125,14 +129,14 @@ class DistanceModelDialogTest {
 
     @Test
     void theDistanceDialogHasNoObstacleFieldsAndTheObstacleDialogHasThem() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         List<String> names = Gui.onEdt(() -> Gui.all(dialog, JTextField.class).stream().map(f -> f.getName()).toList());
         List<String> expected = new java.util.ArrayList<>(DISTANCE_KEYS);
         expected.add(DistanceModelDialog.CUTOFF_DISTANCE);
         assertEquals(expected.stream().sorted().toList(), names.stream().sorted().toList());
         Gui.run(() -> dialog.dispose());
 
-        open(OBSTACLE, true);
+        open(new ObstaclePropagationModel(), true);
         assertEquals("ObstaclePropagationModel Configuration", Gui.onEdt(dialog::getTitle));
         assertEquals("6.325", text("obstacle.attenuation"));
         assertEquals("1.0", text("obstacle.cacheDistance"));
@@ -142,7 +146,7 @@ class DistanceModelDialogTest {
     @Test
     void showsTheStoredValues() throws Exception {
         preferences.store(OBSTACLE, Map.of("usarsim.host", "10.1.2.3", "distance.n", "2.5", "obstacle.attenuation", "4"));
-        open(OBSTACLE, true);
+        open(new ObstaclePropagationModel(), true);
         assertEquals("10.1.2.3", text("usarsim.host"));
         assertEquals("2.5", text("distance.n"));
         assertEquals("4", text("obstacle.attenuation"));
@@ -153,7 +157,7 @@ class DistanceModelDialogTest {
 
     @Test
     void editingAParameterRecomputesTheDistance() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("distance.n", "2");
         assertEquals(distance(-93, -49.67, 2, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
         type("distance.pd0", "-40");
@@ -166,7 +170,7 @@ class DistanceModelDialogTest {
 
     @Test
     void editingTheDistanceRecomputesN() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type(DistanceModelDialog.CUTOFF_DISTANCE, "55.6");
         double n = exponent(-93, -49.67, 2, 55.6);
         assertEquals(n, number("distance.n"), FOUR_DECIMALS);
@@ -178,7 +182,7 @@ class DistanceModelDialogTest {
 
     @Test
     void aCutoffAbovePd0GivesADistanceWithinD0() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("distance.cutoff", "-40");
         // 2 * 10^(-9.67 / 10): about 0.2157 m
         assertEquals(distance(-40, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
@@ -193,7 +197,7 @@ class DistanceModelDialogTest {
 
     @Test
     void aDistanceWithinD0IsAcceptedWhenTheCutoffIsAbovePd0() throws Exception {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("distance.cutoff", "-40");
         type(DistanceModelDialog.CUTOFF_DISTANCE, "0.5");
         assertEquals(exponent(-40, -49.67, 2, 0.5), number("distance.n"), FOUR_DECIMALS);
@@ -212,7 +216,7 @@ class DistanceModelDialogTest {
 
     @Test
     void aDistanceNoNGivesIsRefusedAndTheDialogSaysWhy() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         // {cutoff, pd0, typed distance, why}; d0 is 2 and N is 1 throughout
         String[][] refused = {
             {"-93", "-49.67", "1.5", "with Cutoff below Pd0 it must be beyond d0 (2 m)"},
@@ -253,7 +257,7 @@ class DistanceModelDialogTest {
 
     @Test
     void theDistanceOfCutoffEqualToPd0IsD0ForAnyNAndTypingItKeepsN() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("distance.cutoff", "-49.67");
         type("distance.n", "2.5");
         type(DistanceModelDialog.CUTOFF_DISTANCE, "2");
@@ -264,7 +268,7 @@ class DistanceModelDialogTest {
 
     @Test
     void noDistanceWhileAParameterIsBad() {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("distance.d0", "0");
         assertEquals("", text(DistanceModelDialog.CUTOFF_DISTANCE));
         assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("distance.d0")::getBackground));
@@ -278,7 +282,7 @@ class DistanceModelDialogTest {
 
     @Test
     void okStoresTheValues() throws Exception {
-        open(OBSTACLE, true);
+        open(new ObstaclePropagationModel(), true);
         type("usarsim.host", " 192.168.1.20 ");
         type("usarsim.port", "7436");
         type("usarsim.interval", "500");
@@ -306,7 +310,7 @@ class DistanceModelDialogTest {
                 "the other model's node is untouched");
 
         // opened again, it shows what was stored, and about the distance typed
-        open(OBSTACLE, true);
+        open(new ObstaclePropagationModel(), true);
         assertEquals("192.168.1.20", text("usarsim.host"));
         assertEquals(n, text("distance.n"));
         assertEquals(55.6, number(DistanceModelDialog.CUTOFF_DISTANCE), 0.01);
@@ -314,7 +318,7 @@ class DistanceModelDialogTest {
 
     @Test
     void cancelStoresNothing() throws Exception {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("usarsim.port", "7436");
         type(DistanceModelDialog.CUTOFF_DISTANCE, "55.6");
         click(DistanceModelDialog.CANCEL);
@@ -326,7 +330,7 @@ class DistanceModelDialogTest {
 
     @Test
     void closingTheWindowStoresNothing() throws Exception {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("usarsim.port", "7436");
         Gui.run(() -> dialog.dispatchEvent(new WindowEvent(dialog, WindowEvent.WINDOW_CLOSING)));
         waitClosed();
@@ -336,7 +340,7 @@ class DistanceModelDialogTest {
 
     @Test
     void aBadValueIsRefusedAndTheDialogStaysOpen() throws Exception {
-        open(DISTANCE, true);
+        open(new DistanceOnlyPropagationModel(), true);
         type("usarsim.port", "abc");
         type("usarsim.timeout", "50");
         click(DistanceModelDialog.OK);
@@ -368,7 +372,7 @@ class DistanceModelDialogTest {
 
     @Test
     void everyRuleIsSettingsRule() {
-        open(OBSTACLE, true);
+        open(new ObstaclePropagationModel(), true);
         String[][] refused = {
             {"usarsim.host", "my host"}, {"usarsim.port", "0"}, {"usarsim.interval", "99"}, {"usarsim.timeout", "60001"},
             {"distance.cutoff", "NaN"}, {"distance.n", "0"}, {"distance.pd0", "-49,67"}, {"distance.d0", "-2"},
@@ -390,7 +394,7 @@ class DistanceModelDialogTest {
     @Test
     void readOnlyHasEveryFieldDisabledAndOnlyClose() throws Exception {
         preferences.store(OBSTACLE, Map.of("usarsim.port", "7001"));
-        open(OBSTACLE, false);
+        open(new ObstaclePropagationModel(), false);
         List<JTextField> fields = Gui.onEdt(() -> Gui.all(dialog, JTextField.class));
         assertEquals(DISTANCE_KEYS.size() + 3, fields.size());
         for (JTextField field : fields) {

@@ -28,20 +28,20 @@ import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
 import org.usarsim.wss.app.Settings;
 import org.usarsim.wss.model.distance.PathLoss;
+import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
- * The configuration dialog of DistanceOnlyPropagationModel and ObstaclePropagationModel, laid
- * out as the original's (its manual's figure 2) with two groups it did not have: "Link
- * Stability" and, for the Obstacle model, "Obstacles". Fields hold the model keys' values as
+ * The configuration dialog of the simulator models ({@link SimulatorModel}: DistanceOnlyPropagationModel
+ * and ObstaclePropagationModel), laid out as the original's (its manual's figure 2) with two
+ * groups it did not have: "Link Stability" and, for an {@link ObstaclePropagationModel},
+ * "Obstacles". The values are those of the model's preferences node, named by its {@code name()}. Fields hold the model keys' values as
  * text; every check is {@link Settings#problem}. The cutoff distance is derived, both ways:
  * editing Cutoff, N, Pd0 or d0 recomputes it, editing it recomputes N. OK stores the values with
  * {@link ModelPreferences}; in read-only mode (the server runs) every field is disabled and the
  * only button is Close. Modal; build and show it on the Swing event thread.
  */
 final class DistanceModelDialog extends JDialog {
-
-    static final String DISTANCE_MODEL = "DistanceOnlyPropagationModel";
-    static final String OBSTACLE_MODEL = "ObstaclePropagationModel";
 
     /** Component names, for tests and accessibility tools; each value field is named by its key. */
     static final String CUTOFF_DISTANCE = "cutoffDistance";
@@ -86,6 +86,7 @@ final class DistanceModelDialog extends JDialog {
             "How far a robot moves before the obstacles between it and the others are counted again");
 
     private final String modelName;
+    private final boolean obstacles;
     private final boolean editable;
     private final ModelPreferences preferences;
 
@@ -104,17 +105,11 @@ final class DistanceModelDialog extends JDialog {
     private String distanceProblem;
     private boolean saved;
 
-    /** Whether this dialog configures the model of that name. */
-    static boolean handles(String modelName) {
-        return DISTANCE_MODEL.equals(modelName) || OBSTACLE_MODEL.equals(modelName);
-    }
-
-    DistanceModelDialog(Window owner, String modelName, boolean editable, ModelPreferences preferences) {
-        super(owner, modelName + " Configuration", ModalityType.APPLICATION_MODAL);
-        if (!handles(modelName)) {
-            throw new IllegalArgumentException(modelName + " is not configured by this dialog");
-        }
-        this.modelName = modelName;
+    /** Shows, and OK stores, the values of {@code model.name()}'s preferences; it does not touch the model itself. */
+    DistanceModelDialog(Window owner, SimulatorModel model, boolean editable, ModelPreferences preferences) {
+        super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
+        this.modelName = model.name();
+        this.obstacles = model instanceof ObstaclePropagationModel;
         this.editable = editable;
         this.preferences = preferences;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
@@ -130,7 +125,7 @@ final class DistanceModelDialog extends JDialog {
         content.add(group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), c);
         content.add(distanceGroup(), c);
         content.add(group("Link Stability", MARGIN, HOLD_TIME), c);
-        if (OBSTACLE_MODEL.equals(modelName)) {
+        if (obstacles) {
             content.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE), c);
         }
         message.setName(MESSAGE);
@@ -198,7 +193,7 @@ final class DistanceModelDialog extends JDialog {
     private JPanel distanceGroup() {
         JPanel panel = titled("Easy Parameter Setting by Cutoff Distance");
         String tip = "The distance at which the signal strength falls to the cutoff"
-                + (OBSTACLE_MODEL.equals(modelName) ? " with no obstacle in between" : "")
+                + (obstacles ? " with no obstacle in between" : "")
                 + ": d0 * 10^((Pd0 - Cutoff) / (10 N)). Editing it recomputes N.";
         distance.setName(CUTOFF_DISTANCE);
         distance.setToolTipText(tip);

@@ -19,6 +19,8 @@ import java.util.List;
 import java.util.OptionalDouble;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
@@ -190,20 +192,7 @@ class WorldServerTest {
         Logger logger = Logger.getLogger("org.usarsim.wss.sim");
         Level before = logger.getLevel();
         List<LogRecord> records = new CopyOnWriteArrayList<>();
-        Handler handler = new Handler() {
-            @Override
-            public void publish(LogRecord record) {
-                records.add(record);
-            }
-
-            @Override
-            public void flush() {
-            }
-
-            @Override
-            public void close() {
-            }
-        };
+        Handler handler = collect(records);
         logger.setLevel(Level.FINE);
         logger.addHandler(handler);
         try {
@@ -233,7 +222,89 @@ class WorldServerTest {
         server.close(); // twice is harmless
     }
 
+    @Test
+    void aClientWhoseThreadCannotStartIsDroppedAndTheNextIsServed() throws IOException {
+        AtomicBoolean failedOnce = new AtomicBoolean();
+        List<LogRecord> records = new CopyOnWriteArrayList<>();
+        Handler handler = collect(records);
+        Logger logger = Logger.getLogger("org.usarsim.wss.sim");
+        logger.addHandler(handler);
+        try (WorldServer failing = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), () -> seconds,
+                client -> {
+                    if (failedOnce.compareAndSet(false, true)) {
+                        throw new OutOfMemoryError("unable to create native thread");
+                    }
+                    client.start();
+                })) {
+            Socket dropped = connect(failing.port());
+            assertClosedByPeer(dropped, "the client whose thread could not start");
+            String warning = "cannot serve client 127.0.0.1:" + dropped.getLocalPort()
+                    + " (java.lang.OutOfMemoryError: unable to create native thread): dropped it; accepting the next";
+            Wait.until("the server logs the dropped client", () -> has(records, Level.WARNING, warning));
+            assertEquals(0, failing.clientCount(), "the dropped client is forgotten");
+
+            Socket next = connect(failing.port());
+            send(next, "GETPOS\r\n");
+            assertEquals(AT_10, readLine(next), "the acceptor goes on");
+            assertEquals(1, failing.clientCount());
+        } finally {
+            logger.removeHandler(handler);
+        }
+    }
+
+    @Test
+    void anotherVirtualMachineErrorStopsListeningAndCloseStillClosesTheClients() throws IOException {
+        AtomicInteger starts = new AtomicInteger();
+        WorldServer failing = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), () -> seconds,
+                client -> {
+                    if (starts.incrementAndGet() == 2) {
+                        throw new InternalError("a test's");
+                    }
+                    client.start();
+                });
+        try {
+            int port = failing.port();
+            Socket served = connect(port);
+            send(served, "GETPOS\r\n");
+            assertEquals(AT_10, readLine(served));
+            Socket dropped = connect(port);
+            assertClosedByPeer(dropped, "the client whose start failed");
+            Wait.until("the server stops listening", () -> refuses(port));
+            send(served, "GETPOS\r\n");
+            assertEquals(AT_10, readLine(served), "a client already served still is");
+            failing.close();
+            assertClosedByPeer(served, "the served client, at close()");
+        } finally {
+            failing.close();
+        }
+    }
+
     // ---- helpers ----
+
+    private static boolean refuses(int port) {
+        try (Socket probe = new Socket(InetAddress.getLoopbackAddress(), port)) {
+            return false;
+        } catch (IOException e) {
+            return e instanceof ConnectException;
+        }
+    }
+
+    private static Handler collect(List<LogRecord> records) {
+        return new Handler() {
+            @Override
+            public void publish(LogRecord record) {
+                records.add(record);
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+    }
 
     private static boolean has(List<LogRecord> records, Level level, String message) {
         return records.stream().anyMatch(r -> r.getLevel().equals(level) && r.getMessage().equals(message));
@@ -244,9 +315,13 @@ class WorldServerTest {
     }
 
     private Socket connect() throws IOException {
+        return connect(server.port());
+    }
+
+    private Socket connect(int port) throws IOException {
         Socket socket = new Socket();
         sockets.add(socket);
-        socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), server.port()), TIMEOUT_MS);
+        socket.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), TIMEOUT_MS);
         socket.setSoTimeout(TIMEOUT_MS);
         socket.setTcpNoDelay(true);
         return socket;

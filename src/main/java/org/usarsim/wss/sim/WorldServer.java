@@ -8,6 +8,8 @@ import java.net.Socket;
 import java.nio.file.Path;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.function.Consumer;
 import java.util.function.DoubleSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -25,7 +27,10 @@ public final class WorldServer implements AutoCloseable {
     private final DoubleSupplier clock;
     private final ServerSocket server;
     private final Set<WorldClient> clients = ConcurrentHashMap.newKeySet();
+    /** Starts a client's thread: {@link WorldClient#start}, or what a test puts in its place. */
+    private final Consumer<WorldClient> starter;
     private final Thread acceptor;
+    private final AtomicBoolean closed = new AtomicBoolean();
 
     /**
      * Reads the world file, then listens on the address and port (0: any free port) and serves
@@ -46,8 +51,14 @@ public final class WorldServer implements AutoCloseable {
 
     /** Binds and starts accepting; {@code clock} gives the seconds the world has run. */
     WorldServer(World world, InetSocketAddress address, DoubleSupplier clock) throws IOException {
+        this(world, address, clock, WorldClient::start);
+    }
+
+    /** As above, with each client's thread started by {@code starter} (tests make it fail). */
+    WorldServer(World world, InetSocketAddress address, DoubleSupplier clock, Consumer<WorldClient> starter) throws IOException {
         this.world = world;
         this.clock = clock;
+        this.starter = starter;
         this.server = new ServerSocket();
         try {
             server.setReuseAddress(true);
@@ -73,7 +84,8 @@ public final class WorldServer implements AutoCloseable {
     /** Stops listening, at once, and closes every client connection. */
     @Override
     public void close() {
-        if (server.isClosed()) {
+        // Not server.isClosed(): the acceptor closes the socket itself when it gives up (serve).
+        if (!closed.compareAndSet(false, true)) {
             return;
         }
         try {
@@ -95,6 +107,11 @@ public final class WorldServer implements AutoCloseable {
         clients.remove(client);
     }
 
+    /** The clients being served. */
+    int clientCount() {
+        return clients.size();
+    }
+
     private void accept() {
         while (!server.isClosed()) {
             Socket socket;
@@ -109,12 +126,46 @@ public final class WorldServer implements AutoCloseable {
                 pause();
                 continue;
             }
-            WorldClient client = new WorldClient(this, socket);
+            serve(socket);
+        }
+    }
+
+    /**
+     * Gives the client its thread. When that fails (an OutOfMemoryError "unable to create native
+     * thread", say) only this client is dropped: its connection is closed, it is forgotten, and
+     * the acceptor goes on with the next. A VirtualMachineError other than an OutOfMemoryError
+     * leaves the JVM in doubt: then the server also stops listening, so that clients are refused
+     * rather than left waiting on a bound port, and the error goes on up.
+     */
+    private void serve(Socket socket) {
+        WorldClient client = null;
+        try {
+            client = new WorldClient(this, socket);
             clients.add(client);
             if (server.isClosed()) {
                 client.close();
             }
-            client.start();
+            starter.accept(client);
+        } catch (Throwable e) {
+            String peer = socket.getInetAddress().getHostAddress() + ":" + socket.getPort();
+            if (client != null) {
+                clients.remove(client);
+            }
+            try {
+                socket.close();
+            } catch (IOException closing) {
+                e.addSuppressed(closing);
+            }
+            if (e instanceof VirtualMachineError && !(e instanceof OutOfMemoryError)) {
+                LOG.log(Level.SEVERE, "cannot serve client " + peer + " (" + e + "): the world server stops listening", e);
+                try {
+                    server.close();
+                } catch (IOException closing) {
+                    e.addSuppressed(closing);
+                }
+                throw (VirtualMachineError) e;
+            }
+            LOG.log(Level.WARNING, "cannot serve client " + peer + " (" + e + "): dropped it; accepting the next", e);
         }
     }
 

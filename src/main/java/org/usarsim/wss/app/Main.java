@@ -122,8 +122,7 @@ public final class Main {
             hub.addListener(eventLog);
         }
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
-        Signal.handle(new Signal("TERM"), signal -> stop(hub, eventLog));
-        Signal.handle(new Signal("INT"), signal -> stop(hub, eventLog));
+        onStopSignal(() -> stop(hub, eventLog));
         try {
             model.configure(settings.modelSettings());
             hub.start();
@@ -133,11 +132,7 @@ public final class Main {
         } catch (ModelStartException | RuntimeException e) {
             fail(1, model.name() + " did not start: " + e.getMessage());
         }
-        try {
-            new CountDownLatch(1).await();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        waitForStopSignal();
     }
 
     private static CsvEventLog openEventLog(Path directory) {
@@ -190,8 +185,7 @@ public final class Main {
             }
         };
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
-        Signal.handle(new Signal("TERM"), signal -> stop.run());
-        Signal.handle(new Signal("INT"), signal -> stop.run());
+        onStopSignal(stop);
         try {
             running.set(WorldServer.start(file, address, port));
         } catch (WorldFileException e) {
@@ -199,6 +193,17 @@ public final class Main {
         } catch (IOException e) {
             fail(1, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
         }
+        waitForStopSignal();
+    }
+
+    /** What SIGTERM and Ctrl-C (SIGINT) do; it ends with System.exit. */
+    private static void onStopSignal(Runnable stop) {
+        Signal.handle(new Signal("TERM"), signal -> stop.run());
+        Signal.handle(new Signal("INT"), signal -> stop.run());
+    }
+
+    /** Keeps the main thread until a stop signal's handler exits the JVM. */
+    private static void waitForStopSignal() {
         try {
             new CountDownLatch(1).await();
         } catch (InterruptedException e) {

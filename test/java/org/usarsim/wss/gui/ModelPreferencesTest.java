@@ -5,18 +5,16 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import java.util.prefs.Preferences;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.app.Settings;
 
 class ModelPreferencesTest {
@@ -28,35 +26,20 @@ class ModelPreferencesTest {
     private Preferences root;
     private ModelPreferences preferences;
 
-    private final Logger log = Logger.getLogger(ModelPreferences.class.getName());
-    private final List<LogRecord> logged = new ArrayList<>();
-    private final Handler capture = new Handler() {
-        @Override
-        public void publish(LogRecord record) {
-            synchronized (logged) {
-                logged.add(record);
-            }
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
+    private LogCapture log;
+    private List<LogRecord> logged;
 
     @BeforeEach
     void setUp() {
         root = TestPreferences.create();
         preferences = new ModelPreferences(root);
-        log.addHandler(capture);
+        log = LogCapture.of(ModelPreferences.class.getName(), null);
+        logged = log.records;
     }
 
     @AfterEach
     void tearDown() throws Exception {
-        log.removeHandler(capture);
+        log.close();
         TestPreferences.remove(root);
     }
 

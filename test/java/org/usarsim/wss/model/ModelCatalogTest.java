@@ -13,16 +13,14 @@ import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /** Built-in models and plugin jars, good and bad, as the catalog finds them. */
@@ -39,23 +37,8 @@ class ModelCatalogTest {
     Path dir;
 
     /** What the model package logs during a test. */
-    private final List<LogRecord> records = new CopyOnWriteArrayList<>();
-    private final Logger logger = Logger.getLogger("org.usarsim.wss.model");
-    private Level levelBefore;
-    private final Handler collector = new Handler() {
-        @Override
-        public void publish(LogRecord record) {
-            records.add(record);
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
+    private LogCapture log;
+    private List<LogRecord> records;
 
     @BeforeAll
     static void compilePlugins() throws IOException {
@@ -64,19 +47,17 @@ class ModelCatalogTest {
 
     @BeforeEach
     void collectTheLog() {
-        levelBefore = logger.getLevel();
-        logger.setLevel(Level.ALL);
-        logger.addHandler(collector);
+        log = LogCapture.of("org.usarsim.wss.model", Level.ALL);
+        records = log.records;
     }
 
     @AfterEach
     void stopCollecting() {
-        logger.removeHandler(collector);
-        logger.setLevel(levelBefore);
+        log.close();
     }
 
     private List<String> messages(Level level) {
-        return records.stream().filter(r -> r.getLevel().equals(level)).map(LogRecord::getMessage).toList();
+        return log.messages(level);
     }
 
     /** The one warning that mentions all of these; fails unless there is exactly one. */

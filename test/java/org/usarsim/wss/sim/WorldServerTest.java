@@ -17,18 +17,16 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.OptionalDouble;
-import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
-import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.Wait;
 
 /** The world server over real sockets on 127.0.0.1, its clock set by the test. */
@@ -189,13 +187,8 @@ class WorldServerTest {
 
     @Test
     void logsClientsComingAndGoingAndLinesWithNoAnswer() throws Exception {
-        Logger logger = Logger.getLogger("org.usarsim.wss.sim");
-        Level before = logger.getLevel();
-        List<LogRecord> records = new CopyOnWriteArrayList<>();
-        Handler handler = collect(records);
-        logger.setLevel(Level.FINE);
-        logger.addHandler(handler);
-        try {
+        try (LogCapture log = LogCapture.of("org.usarsim.wss.sim", Level.FINE)) {
+            List<LogRecord> records = log.records;
             Socket client = connect();
             String peer = "client 127.0.0.1:" + client.getLocalPort();
             send(client, "WHERE {Robot Robot1}\r\nGETPOS\r\n");
@@ -204,9 +197,6 @@ class WorldServerTest {
             Wait.until("the server logs that the client left", () -> has(records, Level.INFO, peer + " left"));
             assertTrue(has(records, Level.INFO, peer + " connected"), messages(records));
             assertTrue(has(records, Level.FINE, peer + ": no answer to 'WHERE {Robot Robot1}'"), messages(records));
-        } finally {
-            logger.removeHandler(handler);
-            logger.setLevel(before);
         }
     }
 
@@ -225,11 +215,8 @@ class WorldServerTest {
     @Test
     void aClientWhoseThreadCannotStartIsDroppedAndTheNextIsServed() throws IOException {
         AtomicBoolean failedOnce = new AtomicBoolean();
-        List<LogRecord> records = new CopyOnWriteArrayList<>();
-        Handler handler = collect(records);
-        Logger logger = Logger.getLogger("org.usarsim.wss.sim");
-        logger.addHandler(handler);
-        try (WorldServer failing = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), () -> seconds,
+        try (LogCapture log = LogCapture.of("org.usarsim.wss.sim", null);
+                WorldServer failing = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), () -> seconds,
                 client -> {
                     if (failedOnce.compareAndSet(false, true)) {
                         throw new OutOfMemoryError("unable to create native thread");
@@ -240,15 +227,13 @@ class WorldServerTest {
             assertClosedByPeer(dropped, "the client whose thread could not start");
             String warning = "cannot serve client 127.0.0.1:" + dropped.getLocalPort()
                     + " (java.lang.OutOfMemoryError: unable to create native thread): dropped it; accepting the next";
-            Wait.until("the server logs the dropped client", () -> has(records, Level.WARNING, warning));
+            Wait.until("the server logs the dropped client", () -> has(log.records, Level.WARNING, warning));
             assertEquals(0, failing.clientCount(), "the dropped client is forgotten");
 
             Socket next = connect(failing.port());
             send(next, "GETPOS\r\n");
             assertEquals(AT_10, readLine(next), "the acceptor goes on");
             assertEquals(1, failing.clientCount());
-        } finally {
-            logger.removeHandler(handler);
         }
     }
 
@@ -287,23 +272,6 @@ class WorldServerTest {
         } catch (IOException e) {
             return e instanceof ConnectException;
         }
-    }
-
-    private static Handler collect(List<LogRecord> records) {
-        return new Handler() {
-            @Override
-            public void publish(LogRecord record) {
-                records.add(record);
-            }
-
-            @Override
-            public void flush() {
-            }
-
-            @Override
-            public void close() {
-            }
-        };
     }
 
     private static boolean has(List<LogRecord> records, Level level, String message) {

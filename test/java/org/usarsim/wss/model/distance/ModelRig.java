@@ -6,10 +6,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.logging.Handler;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
-import java.util.logging.Logger;
+import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
@@ -41,24 +40,10 @@ public final class ModelRig implements AutoCloseable {
     public final SimulatorModel model;
     public final TestHub server;
     public final List<Event> events = new CopyOnWriteArrayList<>();
-    public final List<LogRecord> log = new CopyOnWriteArrayList<>();
+    public final List<LogRecord> log;
     private final List<AutoCloseable> toClose = new ArrayList<>();
     private final Map<String, ServerSocket> accepting = new java.util.concurrent.ConcurrentHashMap<>();
-    private final Logger logger;
-    private final Handler handler = new Handler() {
-        @Override
-        public void publish(LogRecord record) {
-            log.add(record);
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
+    private final LogCapture capture;
 
     /** The model polling a new {@link FakeSimulator}. */
     public ModelRig(SimulatorModel model, Map<String, String> settings) throws Exception {
@@ -80,9 +65,8 @@ public final class ModelRig implements AutoCloseable {
         all.put("usarsim.timeout", "300");
         all.putAll(settings);
         model.configure(new ModelSettings(all));
-        logger = Logger.getLogger(model.getClass().getName());
-        logger.setLevel(Level.FINE);
-        logger.addHandler(handler);
+        capture = LogCapture.of(model.getClass().getName(), Level.FINE);
+        log = capture.records;
         server = new TestHub(model, true, 65536);
         server.hub.addListener(new WssEventListener() {
             @Override
@@ -119,7 +103,7 @@ public final class ModelRig implements AutoCloseable {
 
     /** The model's log lines at this level whose text contains {@code part}. */
     public long logLines(Level level, String part) {
-        return log.stream().filter(r -> r.getLevel().equals(level) && r.getMessage().contains(part)).count();
+        return capture.count(level, part);
     }
 
     /** Places the robot in the fake simulator and registers it, accepting connections on one port. */
@@ -156,6 +140,6 @@ public final class ModelRig implements AutoCloseable {
         if (sim != null) {
             sim.close();
         }
-        logger.removeHandler(handler);
+        capture.close();
     }
 }

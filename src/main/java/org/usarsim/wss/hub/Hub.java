@@ -45,6 +45,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final PropagationModel model;
     private final EventFanOut events = new EventFanOut();
     private final SocketBuffers socketBuffers;
+    /** Every WARNING a client can cause goes through it (docs/reliability.md). */
+    final WarningLimiter warnings = WarningLimiter.standard();
     private final Object lock = new Object();
     private final Map<String, Robot> robots = new HashMap<>();
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
@@ -127,6 +129,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.clear();
         }
         links.forEach(Link::close);
+        warnings.close();
         LOG.info("WSS stopped");
     }
 
@@ -273,7 +276,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 refusal = model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
             }
             if (refusal != null) {
-                LOG.warning(port + ": refused a connection: " + refusal);
+                warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
                 Closing.quietly(socket);
                 return;
             }
@@ -281,7 +284,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 link = new Link(this, port, socket, new InetSocketAddress(target.address(), key.targetPort()),
                         config.chunkSize(), socketBuffers, events);
             } catch (IOException e) {
-                LOG.warning(port + ": could not open a socket to the target: " + e.getMessage());
+                warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
                 Closing.quietly(socket);
                 return;
             }

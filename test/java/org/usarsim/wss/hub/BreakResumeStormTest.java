@@ -2,6 +2,7 @@ package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.hub.Sockets.portThreads;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -11,8 +12,6 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
@@ -25,7 +24,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
-import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
@@ -103,7 +101,7 @@ class BreakResumeStormTest {
             warmUp(r1, toR2, r1ToR2);
             Wait.until("the warm-up's links ended", () -> Sockets.linkThreads() == 0);
             long threadsBefore = serverThreads();
-            long descriptorsBefore = Wait.settle("descriptors settle", BreakResumeStormTest::openDescriptors, n -> true);
+            long descriptorsBefore = Wait.settle("descriptors settle", Sockets::openDescriptors, n -> true);
             tasks.add(pool.submit(() -> write(r2, toR1, r2ToR1)));
             tasks.add(pool.submit(() -> write(r1, toR2, r1ToR2)));
             Wait.until("bytes flow both ways", () -> r2ToR1.received.get() > 0 && r1ToR2.received.get() > 0);
@@ -150,7 +148,7 @@ class BreakResumeStormTest {
             assertTrue(threadsAfter <= threadsBefore, "server threads before " + threadsBefore + ", after " + threadsAfter);
             assertEquals(1, portThreads(toR1), "one accepting thread for R2 -> R1");
             assertEquals(1, portThreads(toR2), "one accepting thread for R1 -> R2");
-            long descriptorsAfter = Wait.settle("descriptors return to their level", BreakResumeStormTest::openDescriptors,
+            long descriptorsAfter = Wait.settle("descriptors return to their level", Sockets::openDescriptors,
                     n -> n <= descriptorsBefore);
             assertTrue(descriptorsAfter <= descriptorsBefore + 2,
                     "open descriptors before " + descriptorsBefore + ", after " + descriptorsAfter);
@@ -263,18 +261,5 @@ class BreakResumeStormTest {
     private static long serverThreads() {
         return Thread.getAllStackTraces().keySet().stream().map(Thread::getName)
                 .filter(n -> n.startsWith("link ") || n.startsWith("wss-port ") || n.startsWith("control ")).count();
-    }
-
-    private static long portThreads(int port) {
-        String name = "wss-port " + port;
-        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals(name)).count();
-    }
-
-    private static long openDescriptors() {
-        try (Stream<Path> entries = Files.list(Path.of("/proc/self/fd"))) {
-            return entries.count();
-        } catch (IOException e) {
-            throw new AssertionError("cannot list /proc/self/fd", e);
-        }
     }
 }

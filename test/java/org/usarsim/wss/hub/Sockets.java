@@ -11,7 +11,10 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Random;
+import java.util.stream.Stream;
 
 /** What the socket tests do with the bytes and ends of a connection. */
 public final class Sockets {
@@ -72,6 +75,21 @@ public final class Sockets {
             return;
         }
         assertEquals(-1, read, what + ": end of stream");
+    }
+
+    /** Threads accepting on a WSS port. */
+    public static long portThreads(int port) {
+        String name = "wss-port " + port;
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals(name)).count();
+    }
+
+    /** This process's open descriptors. */
+    public static long openDescriptors() {
+        try (Stream<Path> entries = Files.list(Path.of("/proc/self/fd"))) {
+            return entries.count();
+        } catch (IOException e) {
+            throw new AssertionError("cannot list /proc/self/fd", e);
+        }
     }
 
     /** The server's threads that forward a connection. */

@@ -159,7 +159,7 @@ class BreakResumeStormTest {
     private static void warmUp(TestRobot from, int port, Flow flow) throws IOException {
         try (Socket socket = from.connect(port)) {
             byte[] block = new byte[1024];
-            fill(block, 0);
+            Sockets.sequence(block, 0);
             socket.getOutputStream().write(block);
         }
         Wait.until("the warm-up stream arrived", () -> flow.received.get() >= 1024);
@@ -197,7 +197,7 @@ class BreakResumeStormTest {
             try (socket) {
                 OutputStream out = socket.getOutputStream();
                 for (long position = 0; !stopping; position += block.length) {
-                    fill(block, position);
+                    Sockets.sequence(block, position);
                     out.write(block);
                 }
             } catch (SocketException broken) {
@@ -231,7 +231,7 @@ class BreakResumeStormTest {
             socket.setSoTimeout((int) TimeUnit.SECONDS.toMillis(30));
             int read;
             while ((read = in.read(block)) >= 0) {
-                fill(expected, position);
+                Sockets.sequence(expected, position);
                 for (int i = 0; i < read; i++) {
                     if (block[i] != expected[i]) {
                         problems.add("byte " + (position + i) + " of a stream: " + block[i] + " where " + expected[i] + " was sent");
@@ -249,13 +249,6 @@ class BreakResumeStormTest {
         return null;
     }
 
-    /** The stream's bytes from {@code position} on: each 8-byte sequence number in turn, big-endian. */
-    private static void fill(byte[] bytes, long position) {
-        for (int i = 0; i < bytes.length; i++) {
-            long at = position + i;
-            bytes[i] = (byte) ((at / 8) >>> (8 * (7 - at % 8)));
-        }
-    }
 
     /** The server's own threads: links, WSS port listeners, control connections. */
     private static long serverThreads() {

@@ -28,6 +28,17 @@ public final class Sockets {
         return data;
     }
 
+    /**
+     * A stream of sequence numbers, for checking order: the bytes from {@code position} on, each
+     * 8-byte big-endian number in turn (0, 1, 2 ...).
+     */
+    public static void sequence(byte[] bytes, long position) {
+        for (int i = 0; i < bytes.length; i++) {
+            long at = position + i;
+            bytes[i] = (byte) ((at / 8) >>> (8 * (7 - at % 8)));
+        }
+    }
+
     public static String readExactly(InputStream in, int length) throws IOException {
         return new String(readExactlyBytes(in, length), StandardCharsets.UTF_8);
     }

@@ -26,6 +26,8 @@ import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -45,7 +47,7 @@ class LoadTest {
     /** Robot i sends to robots i + 1, i + 7 and i + 31: 600 streams between 600 different pairs. */
     private static final int[] PEERS = {1, 7, 31};
     /** Each stream's payload, after its 8-byte header. */
-    private static final int BYTES = SOAK ? 4 * 1024 * 1024 : 128 * 1024;
+    private static final int BYTES = SOAK ? 1024 * 1024 : 128 * 1024;
     /** How many times every robot opens its streams again, one round after the other. */
     private static final int ROUNDS = SOAK ? 10 : 1;
     private static final long GETSS_EVERY_MS = 100;
@@ -122,6 +124,8 @@ class LoadTest {
             }, i % GETSS_EVERY_MS, GETSS_EVERY_MS, TimeUnit.MILLISECONDS);
         }
 
+        AtomicLong stallMs = new AtomicLong();
+        pool.submit(() -> watchStalls(stallMs));
         long started = System.nanoTime();
         Map<Long, String> sent = new ConcurrentHashMap<>();
         ExecutorService senders = Executors.newFixedThreadPool(32);
@@ -161,8 +165,9 @@ class LoadTest {
         }
         long[] ms = replyMs.stream().mapToLong(Long::longValue).sorted().toArray();
         System.out.printf("load: %d robots, %d streams of %d KiB (%d MiB) in %d ms; %d GETSS in %d ms (%.0f a second),"
-                + " reply ms p50 %d, p99 %d, max %d%n", ROBOTS, expected, BYTES / 1024, expected * BYTES >> 20, streamsMs,
-                ms.length, askedMs, ms.length * 1000.0 / askedMs, percentile(ms, 50), percentile(ms, 99), ms[ms.length - 1]);
+                + " reply ms p50 %d, p99 %d, max %d; the longest a test thread waited to wake up: %d ms%n", ROBOTS, expected,
+                BYTES / 1024, expected * BYTES >> 20, streamsMs, ms.length, askedMs, ms.length * 1000.0 / askedMs,
+                percentile(ms, 50), percentile(ms, 99), ms[ms.length - 1], stallMs.get());
         assertEquals(List.of(), List.copyOf(wrongReplies), "every GETSS answered rightly");
         long late = Arrays.stream(ms).filter(m -> m >= REPLY_WITHIN_MS).count();
         assertEquals(0, late, late + " of " + ms.length + " GETSS replies took " + REPLY_WITHIN_MS + " ms or more");
@@ -172,6 +177,20 @@ class LoadTest {
         }
         toClose.clear();
         Wait.until("every link thread ended", () -> Sockets.linkThreads() == 0);
+    }
+
+    /**
+     * How late a thread that sleeps 10 ms at a time wakes up, at worst, until the test ends: what
+     * the machine (other processes, the JVM's pauses) adds to every time measured here.
+     */
+    private static Void watchStalls(AtomicLong worstMs) {
+        while (!Thread.currentThread().isInterrupted()) {
+            long start = System.nanoTime();
+            LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(10));
+            long lateMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start) - 10;
+            worstMs.accumulateAndGet(lateMs, Math::max);
+        }
+        return null;
     }
 
     private static String name(int i) {

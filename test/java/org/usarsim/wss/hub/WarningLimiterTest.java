@@ -136,6 +136,27 @@ class WarningLimiterTest {
     }
 
     @Test
+    void theServersTimerWritesTheSummaryOnItsOwnThenItsThreadEnds() throws Exception {
+        long before = warningsThreads();
+        WarningLimiter real = new WarningLimiter(2, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
+        for (int i = 0; i < 5; i++) {
+            real.warn(log, "refused connections", address("127.0.0.5"), "refused " + i);
+        }
+        assertEquals(before + 1, warningsThreads(), "a thread while a summary is due");
+        Wait.until("the summary", () -> capture.count(Level.WARNING, "3 more like this from 127.0.0.5") == 1);
+        Wait.until("the timer's thread ended", () -> warningsThreads() == before);
+        real.close();
+        for (int i = 0; i < 3; i++) {
+            real.warn(log, "refused connections", address("127.0.0.5"), "after the close");
+        }
+        assertEquals(2, capture.count(Level.WARNING, "after the close"), "limited still, though no summary can be scheduled");
+    }
+
+    private static long warningsThreads() {
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals("wss-warnings")).count();
+    }
+
+    @Test
     void theWarningKeepsItsException() throws Exception {
         IllegalStateException bug = new IllegalStateException("a bug");
         limiter.warn(log, "failed answers", address("127.0.0.2"), "failed", bug);

@@ -6,6 +6,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
@@ -60,8 +61,13 @@ final class WarningLimiter implements AutoCloseable {
         this.timer = timer;
     }
 
-    /** The server's: {@link #FIRST} a minute, summaries written by a daemon thread that lives only while one is due. */
+    /** The server's: {@link #FIRST} a minute, the summaries written by a {@link #daemonTimer()}. */
     static WarningLimiter standard() {
+        return new WarningLimiter(FIRST, INTERVAL_NS, System::nanoTime, daemonTimer());
+    }
+
+    /** A timer whose one daemon thread, {@code wss-warnings}, lives only while a task waits (and a second more). */
+    static Timer daemonTimer() {
         ScheduledThreadPoolExecutor executor = new ScheduledThreadPoolExecutor(1, task -> {
             Thread thread = new Thread(task, "wss-warnings");
             thread.setDaemon(true);
@@ -69,17 +75,21 @@ final class WarningLimiter implements AutoCloseable {
         });
         executor.setKeepAliveTime(1, TimeUnit.SECONDS);
         executor.allowCoreThreadTimeOut(true);
-        return new WarningLimiter(FIRST, INTERVAL_NS, System::nanoTime, new Timer() {
+        return new Timer() {
             @Override
             public void after(long delayNs, Runnable task) {
-                executor.schedule(task, delayNs, TimeUnit.NANOSECONDS);
+                try {
+                    executor.schedule(task, delayNs, TimeUnit.NANOSECONDS);
+                } catch (RejectedExecutionException stopped) {
+                    // The server has stopped: the summary goes with the next warning, if one comes.
+                }
             }
 
             @Override
             public void stop() {
                 executor.shutdownNow();
             }
-        });
+        };
     }
 
     void warn(Logger log, String kind, InetAddress source, String message) {

@@ -13,6 +13,7 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
@@ -81,6 +82,8 @@ class BreakResumeStormTest {
         final AtomicInteger connections = new AtomicInteger();
         final AtomicLong received = new AtomicLong();
         final AtomicInteger streams = new AtomicInteger();
+        /** Connects that failed otherwise than refused (a timeout, no local port free): tried again. */
+        final ConcurrentLinkedQueue<String> failedConnects = new ConcurrentLinkedQueue<>();
     }
 
     @Test
@@ -106,6 +109,18 @@ class BreakResumeStormTest {
             tasks.add(pool.submit(() -> write(r1, toR2, r1ToR2)));
             Wait.until("bytes flow both ways", () -> r2ToR1.received.get() > 0 && r1ToR2.received.get() > 0);
 
+            ConcurrentLinkedQueue<Long> replyMs = new ConcurrentLinkedQueue<>();
+            ScheduledExecutorService asking = Executors.newSingleThreadScheduledExecutor();
+            asking.scheduleAtFixedRate(() -> {
+                long start = System.nanoTime();
+                try {
+                    String reply = r1.ask("GETSS {Robot R2}");
+                    replyMs.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start));
+                    check(reply.equals("SS {Robot R2} {Strength 0}"), "GETSS during the storm: " + reply);
+                } catch (IOException e) {
+                    problems.add("GETSS during the storm: " + e);
+                }
+            }, 0, 100, TimeUnit.MILLISECONDS);
             CountDownLatch stormOver = new CountDownLatch(1);
             AtomicInteger toggles = new AtomicInteger();
             storm.scheduleAtFixedRate(() -> {
@@ -124,6 +139,8 @@ class BreakResumeStormTest {
             }, TOGGLE_MS, TOGGLE_MS, TimeUnit.MILLISECONDS);
             assertTrue(stormOver.await(TOGGLES * TOGGLE_MS * 20, TimeUnit.MILLISECONDS), "the storm ended");
             storm.shutdown();
+            asking.shutdown();
+            assertTrue(asking.awaitTermination(10, TimeUnit.SECONDS));
 
             long before1 = r2ToR1.received.get();
             long before2 = r1ToR2.received.get();
@@ -133,12 +150,17 @@ class BreakResumeStormTest {
             for (Future<?> task : tasks) {
                 task.get(10, TimeUnit.SECONDS);
             }
+            long[] ms = replyMs.stream().mapToLong(Long::longValue).sorted().toArray();
             System.out.printf("break/resume storm: %d breaks and resumes in %d ms; R2 -> R1 %d connections, %d streams,"
-                    + " %d bytes; R1 -> R2 %d connections, %d streams, %d bytes; %d links established (probes included)%n",
+                    + " %d bytes; R1 -> R2 %d connections, %d streams, %d bytes; %d links established (probes included);"
+                    + " connects failed otherwise than refused %s %s; %d GETSS meanwhile, ms p50 %d, p99 %d, max %d%n",
                     TOGGLES / 2, TOGGLES * TOGGLE_MS,
                     r2ToR1.connections.get(), r2ToR1.streams.get(), r2ToR1.received.get(),
-                    r1ToR2.connections.get(), r1ToR2.streams.get(), r1ToR2.received.get(), established.get());
+                    r1ToR2.connections.get(), r1ToR2.streams.get(), r1ToR2.received.get(), established.get(),
+                    r2ToR1.failedConnects, r1ToR2.failedConnects, ms.length, ms[ms.length / 2], ms[ms.length * 99 / 100],
+                    ms[ms.length - 1]);
             assertEquals(List.of(), List.copyOf(problems));
+            assertEquals(0, Arrays.stream(ms).filter(m -> m >= 1000).count(), "GETSS answered within 1 s during the storm");
             assertTrue(r2ToR1.connections.get() > TOGGLES / 4 && r1ToR2.connections.get() > TOGGLES / 4,
                     "the writers reconnected after (nearly) every break");
 
@@ -192,6 +214,10 @@ class BreakResumeStormTest {
             } catch (ConnectException refused) {
                 LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(1)); // broken: try again in a moment
                 continue;
+            } catch (IOException e) {
+                flow.failedConnects.add(e.toString());
+                LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(1));
+                continue;
             }
             flow.connections.incrementAndGet();
             try (socket) {
@@ -202,6 +228,8 @@ class BreakResumeStormTest {
                 }
             } catch (SocketException broken) {
                 // the break closed this connection: connect again
+            } catch (IOException e) {
+                problems.add("writing a stream: " + e);
             }
         }
         return null;

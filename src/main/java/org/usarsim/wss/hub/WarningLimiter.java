@@ -125,21 +125,21 @@ final class WarningLimiter implements AutoCloseable {
 
     /** Writes the summary of every interval that has ended. */
     void flush() {
-        List<Runnable> toWrite = new ArrayList<>();
-        synchronized (this) {
-            endWindows(clock.getAsLong(), false, toWrite);
-        }
-        toWrite.forEach(Runnable::run);
+        end(false);
     }
 
     /** Writes the summary of every interval, ended or not, and stops the timer. */
     @Override
     public void close() {
+        timer.stop();
+        end(true);
+    }
+
+    private void end(boolean all) {
         List<Runnable> toWrite = new ArrayList<>();
         synchronized (this) {
-            endWindows(clock.getAsLong(), true, toWrite);
+            endWindows(clock.getAsLong(), all, toWrite);
         }
-        timer.stop();
         toWrite.forEach(Runnable::run);
     }
 

@@ -11,10 +11,12 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Collections;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Properties;
+import java.util.Set;
 import java.util.function.Predicate;
 import java.util.logging.Level;
 import org.usarsim.wss.hub.HubConfig;
@@ -59,6 +61,8 @@ public final class Settings {
     }
 
     private final Map<String, String> values;
+    /** The keys a file set (the window lets only these override what it stored). */
+    private final Set<String> given = new HashSet<>();
 
     private Settings(Map<String, String> values) {
         this.values = values;
@@ -96,6 +100,7 @@ public final class Settings {
                 throw new SettingsException(source + ": " + key + " = '" + value + "' is not " + rule.expected());
             }
             settings.values.put(key, value);
+            settings.given.add(key);
         }
         return settings;
     }
@@ -118,6 +123,11 @@ public final class Settings {
     /** The default of every key a model reads (usarsim.*, distance.*, obstacle.*), sorted by key. */
     public static Map<String, String> modelDefaults() {
         return Collections.unmodifiableMap(defaults().modelSettings().asMap());
+    }
+
+    /** Whether the file set this key (rather than leaving the default). */
+    boolean given(String key) {
+        return given.contains(key);
     }
 
     String get(String key) {

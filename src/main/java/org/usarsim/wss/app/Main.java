@@ -1,5 +1,6 @@
 package org.usarsim.wss.app;
 
+import java.awt.GraphicsEnvironment;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
@@ -10,7 +11,6 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import java.awt.GraphicsEnvironment;
 import javax.swing.SwingUtilities;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;

@@ -34,7 +34,7 @@ import org.usarsim.wss.model.PropagationModel;
 public final class MainWindow {
 
     static final String TITLE = "WSS";
-    static final int REFRESH_MS = 150;
+    static final int REFRESH_MS = 250;
     private static final Logger LOG = Logger.getLogger(MainWindow.class.getName());
 
     private final JFrame frame = new JFrame(TITLE);
@@ -172,7 +172,6 @@ public final class MainWindow {
         String port = bar.port.getText().strip();
         PropagationModel model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
-        settings.storeRun(port, model.name(), eventLog);
         try {
             if (runSettings != null) {
                 model.configure(runSettings);
@@ -205,6 +204,7 @@ public final class MainWindow {
                 } catch (InterruptedException e) {
                     throw new IllegalStateException("the event thread was interrupted", e);
                 }
+                settings.storeRun(port, model.name(), eventLog);
                 view.attach(running);
                 setState(ControlBar.State.RUNNING);
                 if (closing) {

@@ -16,6 +16,8 @@ import java.net.ConnectException;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
@@ -24,6 +26,7 @@ import java.util.logging.Logger;
 import java.util.prefs.Preferences;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
+import java.util.stream.Stream;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
@@ -36,6 +39,7 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.gui.Gui;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
@@ -56,6 +60,9 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
 class WindowTest {
 
     private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");
+
+    @TempDir
+    Path eventLogs;
 
     private final ScriptedModel model = new ScriptedModel();
     private final CountDownLatch closed = new CountDownLatch(1);
@@ -79,6 +86,7 @@ class WindowTest {
     private JFrame openWindow(Launch launch) throws Exception {
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
+        properties.setProperty("wss.eventLogDir", eventLogs.toString());
         WindowServers servers = new WindowServers(Settings.of(properties, "test"));
         return onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel(), model),
                 new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
@@ -262,6 +270,25 @@ class WindowTest {
             assertEquals(-1, robot.control.getInputStream().read(), "the robot's control connection is closed");
         }
         assertThrows(IOException.class, () -> new Socket("127.0.0.1", port).close(), "nothing listens after closing");
+    }
+
+    @Test
+    void enableLoggingWritesTheCsvEventLog() throws Exception {
+        run(() -> component(JCheckBox.class, "eventLog").setSelected(true));
+        int port = start();
+        try (TestRobot robot = new TestRobot(port, "127.0.0.2")) {
+            robot.init("r1");
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "")));
+        }
+        waitForTable("robots", List.of());
+        stop();
+        try (Stream<Path> files = Files.list(eventLogs)) {
+            List<Path> logs = files.toList();
+            assertEquals(1, logs.size(), logs.toString());
+            List<String> lines = Files.readAllLines(logs.get(0));
+            assertTrue(lines.get(0).startsWith("REGISTERED,") && lines.get(0).contains(",r1,127.0.0.2,"), lines.toString());
+            assertTrue(lines.get(1).startsWith("DEREGISTERED,") && lines.get(1).endsWith(",r1"), lines.toString());
+        }
     }
 
     @Test

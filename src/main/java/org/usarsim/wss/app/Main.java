@@ -97,8 +97,11 @@ public final class Main {
                     fail(2, "unknown argument " + args[i] + "\n" + USAGE);
             }
         }
-        if (world != null && (headless || config != null || start)) {
-            fail(2, "--world runs the world server alone, without --headless, --config or --start\n" + USAGE);
+        if (world != null && (headless || config != null)) {
+            fail(2, "--world runs the world server alone, without --headless or --config\n" + USAGE);
+        }
+        if (world != null && start) {
+            fail(2, "--start presses the window's Start; the world server starts at once\n" + USAGE);
         }
         if (headless && start) {
             fail(2, "--start is for the window; headless, the server starts at once\n" + USAGE);

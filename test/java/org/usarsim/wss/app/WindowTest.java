@@ -13,12 +13,15 @@ import static org.usarsim.wss.gui.Gui.until;
 import java.awt.event.WindowEvent;
 import java.io.IOException;
 import java.net.ConnectException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -49,7 +52,11 @@ import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
 import org.usarsim.wss.hub.ScriptedModel;
 import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.sim.WorldServer;
 
 /**
  * The main window, for real: opened under a display, driven through its components (buttons
@@ -65,7 +72,7 @@ class WindowTest {
     Path eventLogs;
 
     private final ScriptedModel model = new ScriptedModel();
-    private final CountDownLatch closed = new CountDownLatch(1);
+    private CountDownLatch closed;
     private Preferences preferences;
     private WindowLog windowLog;
     private JFrame frame;
@@ -84,13 +91,19 @@ class WindowTest {
     }
 
     private JFrame openWindow(Launch launch) throws Exception {
+        return openWindow(launch, List.of(new NoopPropagationModel(), model));
+    }
+
+    private JFrame openWindow(Launch launch, List<PropagationModel> models) throws Exception {
+        CountDownLatch windowClosed = new CountDownLatch(1);
+        closed = windowClosed;
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", eventLogs.toString());
         WindowServers servers = new WindowServers(Settings.of(properties, "test"));
-        return onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel(), model),
+        return onEdt(() -> MainWindow.open(servers, models,
                 new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
-                windowLog, launch, closed::countDown).frame());
+                windowLog, launch, windowClosed::countDown).frame());
     }
 
     @AfterEach
@@ -258,6 +271,41 @@ class WindowTest {
         model.failStarts(null);
         int port = start();
         new Socket("127.0.0.1", port).close();
+    }
+
+    @Test
+    void aSimulatorThatCannotBeReachedIsSaidAndStartWorksOnceItRuns() throws Exception {
+        closeWindow();
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        Map<String, String> settings = new HashMap<>(Settings.modelDefaults());
+        settings.put("usarsim.host", "127.0.0.1");
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.timeout", "500");
+        // As --config gives them: the file's model settings for this session's starts.
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(settings), false),
+                List.of(new NoopPropagationModel(), new DistanceOnlyPropagationModel()));
+        assertTrue(onEdt(() -> component(JButton.class, "configure").isEnabled()), "DistanceOnly has settings");
+        run(() -> component(JButton.class, "start").doClick());
+        String message = Gui.closeMessage("WSS");
+        assertTrue(message.startsWith("DistanceOnlyPropagationModel did not start: cannot reach the simulator at 127.0.0.1:"
+                + simulatorPort), message);
+        assertEquals("Start", button());
+
+        WorldServer world = WorldServer.start(Path.of("docs/examples/corridor.world"), InetAddress.getByName("127.0.0.1"), simulatorPort);
+        try {
+            int port = start();
+            try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
+                base.init("Base");
+                scout.init("Scout");
+                waitForTable("robots", List.of(List.of("Base", "127.0.0.2", ""), List.of("Scout", "127.0.0.3", "")));
+            }
+            stop();
+        } finally {
+            world.close();
+        }
     }
 
     @Test

@@ -59,6 +59,22 @@ class WindowProcessTest {
     }
 
     @Test
+    void startWithHeadlessIsAMistake() throws Exception {
+        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--headless", "--start");
+        assertEquals(2, server.awaitExit());
+        assertTrue(server.stderr().startsWith("wss: --start is for the window; headless, the server starts at once"), server.stderr());
+    }
+
+    @Test
+    void helpNamesTheWindowAndStart() throws Exception {
+        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--help");
+        assertEquals(0, server.awaitExit());
+        String help = String.join("\n", server.stdoutSoFar());
+        assertTrue(help.contains("java -jar wss.jar [--config FILE] [--start]"), help);
+        assertTrue(help.contains("--start             in the window, press Start at once"), help);
+    }
+
+    @Test
     void withoutADisplayItSaysSoInOneLineAndRunsHeadless() throws Exception {
         Map<String, String> noDisplay = new HashMap<>();
         noDisplay.put("DISPLAY", null);

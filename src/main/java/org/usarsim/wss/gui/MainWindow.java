@@ -198,7 +198,8 @@ public final class MainWindow {
                     if (closing) {
                         finishClosing();
                     } else {
-                        failed(e.getCause().getMessage());
+                        Throwable cause = e.getCause();
+                        failed(cause.getMessage() != null ? cause.getMessage() : cause.toString());
                     }
                     return;
                 } catch (InterruptedException e) {

@@ -87,7 +87,7 @@ class ControlSessionTest {
             assertEquals("SS {Robot R1} {Strength INF} {Error SS.To.Self}", r1.ask("GETSS {Robot R1}"));
             assertEquals("SS {Robot X} {Strength NaN} {Error Robot.Does.Not.Exist}", r1.ask("GETSS {Robot X}"));
             assertEquals("SS {Robot XR} {Strength NaN} {Error Robot.Does.Not.Exist}", r1.ask("GETSS {Robot XR}"), "exact names");
-            assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("GETSS"));
+            assertEquals("ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}", r1.ask("GETSS"));
             assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("GETSS {Robot }"));
         }
     }
@@ -105,7 +105,7 @@ class ControlSessionTest {
             assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("DNS {Robot R2} {Port six}"));
             assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("DNS {Port 6000}"));
             assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS {Port x}"));
-            assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS"));
+            assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS {Robot R2}"));
             assertEquals("REVERSEDNSREPLY {Port 1234} {Error UnknownOrIllegalPort}", r1.ask("REVERSEDNS {Port 1234}"));
             assertEquals("ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}", r1.ask("FLY {To Moon}"));
         }

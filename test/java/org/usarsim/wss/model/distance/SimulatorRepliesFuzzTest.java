@@ -49,32 +49,29 @@ class SimulatorRepliesFuzzTest {
         for (int i = 0; i < lines; i++) {
             String line = fuzzed(random);
             try {
-                SimulatorReplies.type(line);
-                try {
+                // As SimulatorConnection does: the type word picks the reader; any other type is refused.
+                String type = SimulatorReplies.type(line);
+                if (type.equals(SimulatorReplies.POSITIONS)) {
                     Map<String, RobotState> robots = SimulatorReplies.positions(line);
                     for (RobotState robot : robots.values()) {
                         assertTrue(Double.isFinite(robot.x()) && Double.isFinite(robot.y()) && Double.isFinite(robot.z()),
                                 () -> "a position that is not finite from '" + line + "'" + replay);
                     }
                     read++;
-                } catch (SimulatorReplyException e) {
-                    assertOneLine(e, line);
-                    refused++;
-                }
-                try {
+                } else if (type.equals(SimulatorReplies.NUMOBS)) {
                     double count = SimulatorReplies.obstacles(line).count();
                     assertTrue(Double.isNaN(count) || count >= 0 && Double.isFinite(count),
                             () -> "count " + count + " from '" + line + "'" + replay);
                     read++;
-                } catch (SimulatorReplyException e) {
-                    assertOneLine(e, line);
-                    refused++;
                 }
+            } catch (SimulatorReplyException e) {
+                assertOneLine(e, line);
+                refused++;
             } catch (RuntimeException e) {
                 throw new AssertionError("'" + line + "' threw " + e + replay, e);
             }
         }
-        assertTrue(read > lines / 100 && refused > lines, "both kinds were tried: " + read + " read, " + refused + " refused" + replay);
+        assertTrue(read > lines / 100 && refused > lines / 10, "both kinds were tried: " + read + " read, " + refused + " refused" + replay);
     }
 
     @Test

@@ -6,6 +6,7 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
@@ -74,8 +75,10 @@ public final class Settings {
     /** The defaults overridden by a properties file. */
     static Settings load(Path file) throws SettingsException {
         Properties properties = new Properties();
-        try (InputStream in = Files.newInputStream(file); Reader reader = new InputStreamReader(in, StandardCharsets.UTF_8)) {
+        try (InputStream in = Files.newInputStream(file); Reader reader = new InputStreamReader(in, StandardCharsets.UTF_8.newDecoder())) {
             properties.load(reader);
+        } catch (CharacterCodingException e) {
+            throw new SettingsException("cannot read " + file + ": it is not UTF-8 text (write it in UTF-8, or use \\uXXXX escapes)");
         } catch (IOException | IllegalArgumentException e) {
             throw new SettingsException("cannot read " + file + ": " + e.getMessage());
         }

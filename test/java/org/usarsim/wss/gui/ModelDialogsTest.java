@@ -24,15 +24,12 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.usarsim.wss.app.Settings;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.RobotState;
-import org.usarsim.wss.model.distance.SimulatorModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
@@ -104,24 +101,6 @@ class ModelDialogsTest {
         @Override
         public boolean connectionIsPossibleForPair(String from, String to) {
             return true;
-        }
-    }
-
-    /** A plugin's simulator model: a {@link SimulatorModel} that is neither of the built-in ones. */
-    private static final class MySimulatorModel extends SimulatorModel {
-        @Override
-        protected double strength(RobotState a, RobotState b) {
-            return 0;
-        }
-
-        @Override
-        protected boolean allowsUnknownRobots() {
-            return true;
-        }
-
-        @Override
-        protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
-            return false;
         }
     }
 
@@ -254,7 +233,7 @@ class ModelDialogsTest {
         click(dialog, DistanceModelDialog.OK);
 
         assertTrue(shown.get(5, TimeUnit.SECONDS));
-        assertEquals(String.valueOf(port), preferences.load("DistanceOnlyPropagationModel").get("usarsim.port"));
+        assertEquals(String.valueOf(port), preferences.load(model).get("usarsim.port"));
         assertStartFailsNaming(model, port);
     }
 
@@ -298,7 +277,7 @@ class ModelDialogsTest {
         click(dialog, DistanceModelDialog.OK);
 
         assertTrue(shown.get(5, TimeUnit.SECONDS));
-        assertEquals(String.valueOf(port), preferences.load("MySimulatorModel").get("usarsim.port"));
+        assertEquals(String.valueOf(port), preferences.load(model).get("usarsim.port"));
         assertEquals(0, root.node("DistanceOnlyPropagationModel").keys().length);
         assertStartFailsNaming(model, port);
     }
@@ -322,14 +301,14 @@ class ModelDialogsTest {
     @Test
     void configureFromPreferencesHandsTheModelItsStoredValues() throws Exception {
         int[] ports = closedPorts(2);
-        preferences.store("ObstaclePropagationModel", Map.of("usarsim.port", String.valueOf(ports[0])));
-        preferences.store("DistanceOnlyPropagationModel", Map.of("usarsim.port", String.valueOf(ports[1])));
+        preferences.store(new ObstaclePropagationModel(), Map.of("usarsim.port", String.valueOf(ports[0])));
+        preferences.store(new DistanceOnlyPropagationModel(), Map.of("usarsim.port", String.valueOf(ports[1])));
         ObstaclePropagationModel model = new ObstaclePropagationModel();
         ModelDialogs.configureFromPreferences(model, preferences);
         assertStartFailsNaming(model, ports[0]);
 
         Recorder nothingStored = new Recorder("MyModel", false);
         ModelDialogs.configureFromPreferences(nothingStored, preferences);
-        assertEquals(Settings.modelDefaults(), nothingStored.configured.asMap(), "the defaults");
+        assertEquals(Map.of(), nothingStored.configured.asMap(), "it declares no setting");
     }
 }

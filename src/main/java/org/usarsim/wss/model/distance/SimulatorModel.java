@@ -12,6 +12,7 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -26,6 +27,27 @@ import org.usarsim.wss.model.WssEventListener;
 public abstract class SimulatorModel implements PropagationModel {
 
     private static final long MAX_BACKOFF_MS = 10_000;
+
+    /** The settings of every simulator model: the simulator's connection, the path loss, the link stability. */
+    static final List<Setting> SETTINGS = List.of(
+            Setting.host("usarsim.host", "Host", "127.0.0.1")
+                    .help("The machine of the simulator's position socket: a host name or an IP address"),
+            Setting.integer("usarsim.port", "Port", 7435).from(1).to(65535).noun("a port number")
+                    .help("The simulator's position port, 7435 as a rule; not 3000, which is USARSim's robot port"),
+            Setting.integer("usarsim.interval", "Poll interval", 1000).from(100).to(60000).unit("ms")
+                    .help("Milliseconds between two requests for the robots' positions (GETPOS)"),
+            Setting.integer("usarsim.timeout", "Timeout", 2000).from(100).to(60000).unit("ms")
+                    .help("Milliseconds to wait for the simulator's answer"),
+            Setting.number("distance.cutoff", "Cutoff", "-93").unit("dBm")
+                    .help("Below this signal strength two robots cannot talk; -93 dBm is a property of the channel, best left as it is"),
+            Setting.number("distance.pd0", "Pd0", "-49.67").unit("dBm").help("The signal strength at distance d0"),
+            Setting.number("distance.n", "N", "1").above(0)
+                    .help("The attenuation factor of the environment: how fast the signal fades with distance"),
+            Setting.number("distance.d0", "d0", "2").above(0).unit("m").help("The distance at which the strength is Pd0"),
+            Setting.number("distance.margin", "Margin", "0").from(0).unit("dB")
+                    .help("A broken link resumes only when the strength is above Cutoff + Margin, so that a pair at the edge does not flap"),
+            Setting.number("distance.holdTime", "Hold time", "0").from(0).unit("s")
+                    .help("A link stays broken, or resumed, at least this many seconds before it changes again"));
 
     private final Logger log = Logger.getLogger(getClass().getName());
 
@@ -44,6 +66,12 @@ public abstract class SimulatorModel implements PropagationModel {
     private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile Poller poller;
+
+    /** The simulator's connection (usarsim.*), the path loss (distance.*) and the link stability (distance.margin, distance.holdTime). */
+    @Override
+    public List<Setting> settings() {
+        return SETTINGS;
+    }
 
     @Override
     public void configure(ModelSettings settings) {
@@ -117,11 +145,6 @@ public abstract class SimulatorModel implements PropagationModel {
     @Override
     public boolean isActive() {
         return poller != null;
-    }
-
-    @Override
-    public boolean isConfigurable() {
-        return true;
     }
 
     /** The strength from the last known positions: NaN while either robot's position is unknown. */

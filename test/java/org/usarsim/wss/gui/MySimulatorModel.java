@@ -1,0 +1,39 @@
+package org.usarsim.wss.gui;
+
+import java.util.Map;
+import org.usarsim.wss.model.distance.RobotState;
+import org.usarsim.wss.model.distance.SimulatorModel;
+
+/** A plugin's simulator model: a {@link SimulatorModel} that is neither of the built-in ones, under a name of its own. */
+final class MySimulatorModel extends SimulatorModel {
+
+    private final String name;
+
+    MySimulatorModel() {
+        this("MySimulatorModel");
+    }
+
+    MySimulatorModel(String name) {
+        this.name = name;
+    }
+
+    @Override
+    public String name() {
+        return name;
+    }
+
+    @Override
+    protected double strength(RobotState a, RobotState b) {
+        return 0;
+    }
+
+    @Override
+    protected boolean allowsUnknownRobots() {
+        return true;
+    }
+
+    @Override
+    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+        return false;
+    }
+}

@@ -11,6 +11,7 @@ import java.net.InetAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.Properties;
 import java.util.TreeMap;
@@ -302,6 +303,75 @@ class SettingsTest {
         properties.setProperty("wss.socketBuffer", "0");
         assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false),
                 Settings.of(properties, "t").hubConfig());
+    }
+
+    // ---- the chosen model's keys and the others' ----
+
+    @Test
+    void theChosenModelIsHandedItsOwnKeysOnlyAndTheOthersAreNoted() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.model", "DistanceOnlyPropagationModel");
+        properties.setProperty("distance.n", "2");
+        properties.setProperty("obstacle.attenuation", "3");
+        Settings settings = Settings.of(properties, "t");
+        Map<String, String> model = settings.modelSettings().asMap();
+        assertEquals("2", model.get("distance.n"));
+        assertEquals(10, model.size(), "usarsim.* and distance.*: " + model);
+        assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
+        assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
+        assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");
+        rejected("obstacle.attenuation", "-3");
+    }
+
+    @Test
+    void aModelNotInTheCatalogIsReportedLaterAndItsKeysAreIgnored() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.model", "Nowhere");
+        properties.setProperty("usarsim.port", "7000");
+        Settings settings = Settings.of(properties, "t");
+        assertEquals(Map.of(), settings.modelSettings().asMap());
+        assertEquals(List.of("usarsim.port"), settings.ignoredKeys());
+    }
+
+    @Test
+    void theUnknownKeyErrorListsTheServersAndEveryModelsKeys() {
+        SettingsException e = rejected("distance.nonsense", "1");
+        assertTrue(e.getMessage().endsWith("known keys: " + String.join(", ", DEFAULTS.keySet().stream()
+                .sorted(java.util.Comparator.comparingInt(SettingsTest::order)).toList())), e.getMessage());
+    }
+
+    /** The order the keys are declared in: the server's, then the models' in catalog order. */
+    private static int order(String key) {
+        return allDeclared().stream().map(Setting::key).toList().indexOf(key);
+    }
+
+    @Test
+    void helpListsEveryKeyWithItsDefaultAndRule() {
+        String help = Settings.help(Settings.defaults().catalog());
+        for (Setting setting : allDeclared()) {
+            assertTrue(help.contains("  " + setting.key() + " = " + setting.defaultValue() + "\n      " + setting.expected()),
+                    setting.key() + " in:\n" + help);
+        }
+        assertTrue(help.contains("model NoopPropagationModel: no settings"), help);
+    }
+
+    @Test
+    void docsHeadlessListEveryDeclaredKeyWithItsDefault() throws IOException {
+        String docs = Files.readString(Path.of("docs/headless.md"), StandardCharsets.UTF_8);
+        for (Setting setting : allDeclared()) {
+            String row = "| `" + setting.key() + "` | ";
+            assertTrue(docs.contains(row), setting.key() + " has a row in docs/headless.md");
+            String defaultCell = docs.substring(docs.indexOf(row) + row.length()).split(" \\| ")[0];
+            assertTrue(defaultCell.contains(setting.defaultValue().isEmpty() ? "empty" : "`" + setting.defaultValue() + "`"),
+                    setting.key() + ": docs say " + defaultCell + ", the code " + setting.defaultValue());
+        }
+    }
+
+    /** The server's settings and every built-in model's. */
+    private static List<Setting> allDeclared() {
+        List<Setting> all = new java.util.ArrayList<>(Settings.SERVER);
+        all.addAll(new ObstaclePropagationModel().settings());
+        return all;
     }
 
     // ---- bad values ----

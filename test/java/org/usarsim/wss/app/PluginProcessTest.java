@@ -153,6 +153,20 @@ class PluginProcessTest {
         assertTrue(error.contains("unknown key tuned.gain (value '1'); known keys: wss.port, "), error);
     }
 
+    @Test
+    void helpListsThePluginsSettings() throws Exception {
+        Path app = dir.resolve("app");
+        Path wssJar = PluginJars.serverJar(app.resolve("wss.jar"));
+        PluginJars.tunedJar(app.resolve("plugins").resolve("tuned.jar"), classes);
+        ServerProcess server = ServerProcess.startJava(List.of("-jar", wssJar.toString(), "--help"));
+        servers.add(server);
+        assertEquals(0, server.awaitExit(), "stderr: " + server.stderr());
+        String help = String.join("\n", server.stdoutSoFar());
+        assertTrue(help.contains("  wss.port = 50000\n      a port number from 0 to 65535 (0: any free port). "), help);
+        assertTrue(help.contains("model Tuned:\n  tuned.level = 3\n      a whole number from 1 to 10. How many steps of 10 dB"), help);
+        assertTrue(help.contains("  tuned.gain = 2.5\n      a number of dB, 0 or more. Taken off the level's strength"), help);
+    }
+
     // ---- helpers ----
 
     /** Two robots register; B's strength as A sees it is the plugin's. */

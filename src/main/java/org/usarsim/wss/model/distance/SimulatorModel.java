@@ -51,13 +51,17 @@ public abstract class SimulatorModel implements PropagationModel {
 
     private final Logger log = Logger.getLogger(getClass().getName());
 
-    private String host = "127.0.0.1";
-    private int port = 7435;
-    private int intervalMs = 1000;
-    private int timeoutMs = 2000;
-    private PathLoss pathLoss = new PathLoss(-49.67, 1, 2, -93);
-    private double margin;
-    private double holdSeconds;
+    /** The declared defaults: the values until {@link #configure}. */
+    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(SETTINGS));
+
+    private String host = DEFAULTS.getString("usarsim.host", null);
+    private int port = DEFAULTS.getInt("usarsim.port", 0);
+    private int intervalMs = DEFAULTS.getInt("usarsim.interval", 0);
+    private int timeoutMs = DEFAULTS.getInt("usarsim.timeout", 0);
+    private PathLoss pathLoss = new PathLoss(DEFAULTS.getDouble("distance.pd0", 0), DEFAULTS.getDouble("distance.n", 0),
+            DEFAULTS.getDouble("distance.d0", 0), DEFAULTS.getDouble("distance.cutoff", 0));
+    private double margin = DEFAULTS.getDouble("distance.margin", 0);
+    private double holdSeconds = DEFAULTS.getDouble("distance.holdTime", 0);
 
     private volatile RobotLinkModel linkModel;
     private volatile WssEventListener listener = new WssEventListener() {

@@ -33,8 +33,11 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             Setting.number("obstacle.cacheDistance", "Cache distance", "1.0").from(0).unit("m")
                     .help("How far a robot moves before the obstacles between it and the others are counted again"));
 
-    private double attenuation = 6.325;
-    private double cacheDistance = 1.0;
+    /** The declared defaults: the values until {@link #configure}. */
+    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(OBSTACLES));
+
+    private double attenuation = DEFAULTS.getDouble("obstacle.attenuation", 0);
+    private double cacheDistance = DEFAULTS.getDouble("obstacle.cacheDistance", 0);
     private volatile ObstacleCounts counts = new ObstacleCounts(cacheDistance);
     /** Whether the last batch of GETOBS went unanswered (used by the poller only). */
     private boolean getobsUnanswered;

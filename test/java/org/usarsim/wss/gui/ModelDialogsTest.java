@@ -421,6 +421,20 @@ class ModelDialogsTest {
         assertTrue(Gui.onEdt(() -> Gui.showing("Own Configuration").isEmpty()));
     }
 
+    @Test
+    void aSimulatorModelWithADeclarationOfItsOwnGetsTheGeneratedDialog() throws Exception {
+        MySimulatorModel model = new MySimulatorModel("Reshaped", List.of(Setting.host("usarsim.host", "Host", "127.0.0.1"),
+                Setting.integer("reshaped.rate", "Rate", 2).from(1).to(5).unit("Hz")));
+        CompletableFuture<Boolean> shown = show(model, true);
+        Window dialog = dialog("Reshaped Configuration");
+        assertFalse(hasField(dialog, DistanceModelDialog.CUTOFF_DISTANCE), "not the DistanceOnly dialog: it lacks distance.*");
+        type(dialog, "reshaped.rate", "4");
+        click(dialog, DialogParts.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(Map.of("usarsim.host", "127.0.0.1", "reshaped.rate", "4"), preferences.load(model));
+        assertFalse(ModelDialogs.isConfigurable(new MySimulatorModel("Bare", List.of())), "no settings, no dialog of its own");
+    }
+
     // ---- before every start ----
 
     @Test

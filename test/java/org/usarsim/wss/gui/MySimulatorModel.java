@@ -1,6 +1,8 @@
 package org.usarsim.wss.gui;
 
+import java.util.List;
 import java.util.Map;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.distance.RobotState;
 import org.usarsim.wss.model.distance.SimulatorModel;
 
@@ -8,18 +10,30 @@ import org.usarsim.wss.model.distance.SimulatorModel;
 final class MySimulatorModel extends SimulatorModel {
 
     private final String name;
+    /** Its own declaration, or null for the simulator models'. */
+    private final List<Setting> settings;
 
     MySimulatorModel() {
         this("MySimulatorModel");
     }
 
     MySimulatorModel(String name) {
+        this(name, null);
+    }
+
+    MySimulatorModel(String name, List<Setting> settings) {
         this.name = name;
+        this.settings = settings;
     }
 
     @Override
     public String name() {
         return name;
+    }
+
+    @Override
+    public List<Setting> settings() {
+        return settings == null ? super.settings() : settings;
     }
 
     @Override

@@ -187,6 +187,19 @@ final class DistanceModelDialog extends JDialog {
         }
     }
 
+    /**
+     * Whether the model declares every key this dialog shows: a plugin's subclass that changed
+     * the simulator models' settings gets the dialog built from its declaration instead.
+     */
+    static boolean fits(SimulatorModel model) {
+        List<String> keys = new ArrayList<>(List.of(HOST, PORT, INTERVAL, TIMEOUT, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME));
+        if (model instanceof ObstaclePropagationModel) {
+            keys.addAll(List.of(ATTENUATION, CACHE_DISTANCE));
+        }
+        List<Setting> declared = model.settings();
+        return keys.stream().allMatch(key -> Setting.find(declared, key) != null);
+    }
+
     /** The model's declaration of a key this dialog shows. */
     private Setting rule(String key) {
         Setting setting = Setting.find(declared, key);

@@ -19,7 +19,7 @@ public final class ModelDialogs {
      * dialog of its own, or declared settings.
      */
     public static boolean isConfigurable(PropagationModel model) {
-        return model.isConfigurable() || model instanceof SimulatorModel || !model.settings().isEmpty();
+        return model.isConfigurable() || !model.settings().isEmpty();
     }
 
     /**
@@ -27,8 +27,8 @@ public final class ModelDialogs {
      * {@code editable} is false (the server runs). In this order: a model with a dialog of its own
      * ({@code isConfigurable()}) shows its {@code showConfigurationDialog(editable)}; a
      * {@link SimulatorModel} (DistanceOnlyPropagationModel, ObstaclePropagationModel) gets
-     * {@link DistanceModelDialog}; any other model with declared settings gets the
-     * {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
+     * {@link DistanceModelDialog}, provided it declares the keys that dialog shows; any other
+     * model with declared settings gets the {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
      * {@code preferences}, under the model's {@code name()}, and hands them to the model's
      * {@code configure}. Call on the Swing event thread.
      *
@@ -39,7 +39,7 @@ public final class ModelDialogs {
         if (model.isConfigurable()) {
             model.showConfigurationDialog(editable);
             return false;
-        } else if (model instanceof SimulatorModel simulatorModel) {
+        } else if (model instanceof SimulatorModel simulatorModel && DistanceModelDialog.fits(simulatorModel)) {
             DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences);
             dialog.setVisible(true);
             saved = dialog.saved();

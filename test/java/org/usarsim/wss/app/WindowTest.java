@@ -54,6 +54,7 @@ import org.usarsim.wss.hub.ScriptedModel;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.sim.WorldServer;
@@ -280,13 +281,14 @@ class WindowTest {
         try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
             simulatorPort = free.getLocalPort();
         }
-        Map<String, String> settings = new HashMap<>(Settings.modelDefaults());
+        DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(distanceOnly.settings()));
         settings.put("usarsim.host", "127.0.0.1");
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.timeout", "500");
         // As --config gives them: the file's model settings for this session's starts.
         frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(settings), false),
-                List.of(new NoopPropagationModel(), new DistanceOnlyPropagationModel()));
+                List.of(new NoopPropagationModel(), distanceOnly));
         assertTrue(onEdt(() -> component(JButton.class, "configure").isEnabled()), "DistanceOnly has settings");
         run(() -> component(JButton.class, "start").doClick());
         String message = Gui.closeMessage("WSS");

@@ -5,10 +5,11 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
+import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.SwingUtilities;
@@ -18,8 +19,8 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
 import org.usarsim.wss.model.ModelCatalog;
-import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.sim.WorldFileException;
 import org.usarsim.wss.sim.WorldServer;
 import sun.misc.Signal;
@@ -92,6 +93,7 @@ public final class Main {
                 case "--help":
                 case "-h":
                     System.out.println(HELP);
+                    System.out.print(Settings.help(Settings.defaults().catalog()));
                     return;
                 default:
                     fail(2, "unknown argument " + args[i] + "\n" + USAGE);
@@ -113,25 +115,29 @@ public final class Main {
             runWorld(world, port == null ? "7435" : port, bind == null ? "0.0.0.0" : bind);
             return;
         }
-        Settings settings = load(config);
+        Properties file = new Properties();
+        Settings settings = null;
+        try {
+            if (config != null) {
+                file = Settings.read(config);
+            }
+            // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
+            Function<Settings, ModelCatalog> catalog = server -> {
+                LogSetup.toStandardOutput(server.logLevel());
+                return Settings.modelsFor(server);
+            };
+            settings = Settings.of(file, config == null ? "the defaults" : config.toString(), catalog);
+        } catch (SettingsException e) {
+            fail(2, e.getMessage());
+        }
         String noDisplay = headless ? null : noDisplay();
-        LogSetup.toStandardOutput(settings.logLevel());
         if (headless || noDisplay != null) {
             if (noDisplay != null) {
                 Logger.getLogger(Main.class.getName()).info(noDisplay + ": running headless");
             }
-            runHeadless(settings);
+            runHeadless(settings, config);
         } else {
-            runWindow(settings, config != null, start);
-        }
-    }
-
-    private static Settings load(Path config) {
-        try {
-            return config == null ? Settings.defaults() : Settings.load(config);
-        } catch (SettingsException e) {
-            fail(2, e.getMessage());
-            return null;
+            runWindow(settings, file, config != null, start);
         }
     }
 
@@ -149,13 +155,6 @@ public final class Main {
         }
     }
 
-    private static ModelCatalog catalog(Settings settings) {
-        List<Path> pluginFolders = new ArrayList<>();
-        PluginFolder.besideCodeOf(Main.class).ifPresent(pluginFolders::add);
-        settings.pluginDir().ifPresent(pluginFolders::add);
-        return ModelCatalog.load(Main.class.getClassLoader(), pluginFolders);
-    }
-
     private static PropagationModel knownModel(ModelCatalog catalog, String name) {
         PropagationModel model = catalog.find(name);
         if (model == null) {
@@ -164,8 +163,14 @@ public final class Main {
         return model;
     }
 
-    private static void runHeadless(Settings settings) {
-        PropagationModel model = knownModel(catalog(settings), settings.modelName());
+    private static void runHeadless(Settings settings, Path config) {
+        ModelCatalog catalog = settings.catalog();
+        PropagationModel model = knownModel(catalog, settings.modelName());
+        Logger log = Logger.getLogger(Main.class.getName());
+        for (String key : settings.ignoredKeys()) {
+            log.warning(config + ": " + key + " is not a setting of " + model.name() + " (it is one of "
+                    + String.join(", ", declaring(catalog, key)) + "): ignored");
+        }
         Server server = null;
         try {
             server = Server.create(settings.hubConfig(), model, settings.eventLog() ? settings.eventLogDir() : null);
@@ -192,14 +197,17 @@ public final class Main {
         waitForStopSignal();
     }
 
-    /** The main window, starting servers as headless mode does; closing it (or SIGTERM) stops the server and exits 0. */
-    private static void runWindow(Settings settings, boolean fromFile, boolean start) {
+    /**
+     * The main window, starting servers as headless mode does; closing it (or SIGTERM) stops the
+     * server and exits 0. The keys {@code file} sets (none without --config) go over the stored ones.
+     */
+    private static void runWindow(Settings settings, Properties file, boolean fromFile, boolean start) {
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
-        ModelCatalog catalog = catalog(settings);
-        Launch launch = new Launch(fromFile && settings.given("wss.port") ? settings.get("wss.port") : null,
-                fromFile && settings.given("wss.model") ? knownModel(catalog, settings.modelName()).name() : null,
-                fromFile && settings.given("wss.eventLog") ? settings.eventLog() : null,
+        ModelCatalog catalog = settings.catalog();
+        Launch launch = new Launch(file.containsKey("wss.port") ? settings.get("wss.port") : null,
+                file.containsKey("wss.model") ? knownModel(catalog, settings.modelName()).name() : null,
+                file.containsKey("wss.eventLog") ? settings.eventLog() : null,
                 fromFile ? settings.modelSettings() : null, start);
         List<PropagationModel> models = catalog.names().stream().map(catalog::find).toList();
         WindowServers servers = new WindowServers(settings);
@@ -212,6 +220,12 @@ public final class Main {
         });
         SwingUtilities.invokeLater(() -> MainWindow.open(servers, models, new WindowSettings(), new ModelPreferences(),
                 windowLog, launch, () -> System.exit(0)));
+    }
+
+    /** The names of the models that declare this key. */
+    private static List<String> declaring(ModelCatalog catalog, String key) {
+        return catalog.models().stream().filter(model -> Setting.find(model.settings(), key) != null)
+                .map(PropagationModel::name).toList();
     }
 
     /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */

@@ -5,6 +5,7 @@ import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -22,7 +23,7 @@ final class WindowServers implements Servers {
 
     @Override
     public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Server.StartFailure {
-        String problem = Settings.problem("wss.port", port);
+        String problem = Setting.find(Settings.SERVER, "wss.port").problem(port);
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }

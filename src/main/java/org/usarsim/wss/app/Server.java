@@ -54,17 +54,26 @@ final class Server implements AutoCloseable {
         return hub;
     }
 
-    /** Binds the control port and starts the model (configured before); on failure nothing listens. */
+    /**
+     * Binds the control port and starts the model (configured before). On failure nothing listens
+     * (the hub closes what it opened) and the event log is closed.
+     */
     void start() throws StartFailure {
         try {
             hub.start();
         } catch (IOException e) {
-            close();
+            closeEventLog();
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"
                     + config.controlPort() + ": " + e.getMessage());
         } catch (ModelStartException | RuntimeException e) {
-            close();
+            closeEventLog();
             throw new StartFailure(model.name() + " did not start: " + e.getMessage());
+        }
+    }
+
+    private void closeEventLog() {
+        if (eventLog != null) {
+            eventLog.close();
         }
     }
 
@@ -74,9 +83,7 @@ final class Server implements AutoCloseable {
         try {
             hub.close();
         } finally {
-            if (eventLog != null) {
-                eventLog.close();
-            }
+            closeEventLog();
         }
     }
 }

@@ -5,6 +5,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Iterator;
@@ -141,6 +142,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         Robot robot = new Robot(name, address, acceptPorts, session);
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
             while (robots.containsKey(name) && !closed) {
@@ -161,16 +163,18 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.put(name, robot);
             for (WssPort port : ports.values()) {
                 if (port.key.involves(name) && shouldListen(port.key, true)) {
-                    listen(port);
+                    listen(port, portEvents);
                 }
             }
         }
         events.robotRegistered(name, address.getHostAddress(), robot.ports());
+        portEvents.forEach(Runnable::run);
         return true;
     }
 
     /** The robot's control connection closed: it is gone, its ports stop listening, its links live on. */
     void deregister(String name, ControlSession session) {
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             Robot robot = robots.get(name);
             if (robot == null || robot.session() != session) {
@@ -179,12 +183,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.remove(name);
             lock.notifyAll();
             for (WssPort port : ports.values()) {
-                if (port.key.involves(name)) {
-                    port.stopListening();
+                if (port.key.involves(name) && port.stopListening()) {
+                    portEvents.add(listeningEvent(port));
                 }
             }
         }
         events.robotDeregistered(name);
+        portEvents.forEach(Runnable::run);
     }
 
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */
@@ -208,6 +213,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
         }
         boolean allowed = modelAllows(from, to);
+        List<Runnable> portEvents = new ArrayList<>();
+        DnsResult result = dnsLocked(from, to, targetPort, allowed, portEvents);
+        portEvents.forEach(Runnable::run);
+        return result;
+    }
+
+    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
         synchronized (lock) {
             Robot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
@@ -228,8 +240,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 }
                 ports.put(key, port);
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
+                int number = port.number;
+                boolean listening = port.listening();
+                portEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
             } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port);
+                listen(port, portEvents);
             }
             return new DnsResult(DnsOutcome.OK, port.number);
         }
@@ -319,32 +334,39 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         Pair pair = Pair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
             for (WssPort port : ports.values()) {
                 if (port.key.isBetween(pair)) {
-                    changed |= port.stopListening();
+                    if (port.stopListening()) {
+                        changed = true;
+                        portEvents.add(listeningEvent(port));
+                    }
                     links.addAll(port.links);
                 }
             }
         }
         links.forEach(Link::close);
+        portEvents.forEach(Runnable::run);
         return changed || !links.isEmpty();
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         Pair pair = Pair.of(robotA, robotB);
+        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.remove(pair);
             for (WssPort port : ports.values()) {
                 if (port.key.isBetween(pair) && !port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port);
+                    changed |= listen(port, portEvents);
                 }
             }
         }
+        portEvents.forEach(Runnable::run);
         return changed;
     }
 
@@ -352,6 +374,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void kickOutRobot(String name) {
         Robot robot;
         List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
@@ -361,6 +384,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                     port.release();
                     links.addAll(port.links);
                     it.remove();
+                    PortKey key = port.key;
+                    int number = port.number;
+                    portEvents.add(() -> events.portForgotten(key.from(), key.to(), key.targetPort(), number));
                 }
             }
             broken.removeIf(pair -> pair.contains(name));
@@ -371,6 +397,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             LOG.info("kicked out " + name);
             events.robotDeregistered(name);
         }
+        portEvents.forEach(Runnable::run);
     }
 
     @Override
@@ -378,6 +405,34 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         synchronized (lock) {
             return robots.keySet().stream().sorted().toList();
         }
+    }
+
+    /** The robots, the WSS ports and the established links, all at one instant. */
+    public HubSnapshot snapshot() {
+        List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
+        List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
+        List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
+        synchronized (lock) {
+            for (Robot robot : robots.values()) {
+                robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
+            }
+            for (WssPort port : ports.values()) {
+                PortKey key = port.key;
+                portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
+                for (Link link : port.links) {
+                    if (link.isEstablished() && !link.isClosed()) {
+                        linkEntries.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number,
+                                link.outgoingPort()));
+                    }
+                }
+            }
+        }
+        robotEntries.sort(Comparator.comparing(HubSnapshot.RobotEntry::name));
+        portEntries.sort(Comparator.comparing(HubSnapshot.PortEntry::from).thenComparing(HubSnapshot.PortEntry::to)
+                .thenComparingInt(HubSnapshot.PortEntry::targetPort));
+        linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
+                .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
+        return new HubSnapshot(robotEntries, portEntries, linkEntries);
     }
 
     // ---- rules ----
@@ -392,15 +447,24 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 && target.ports().contains(key.targetPort()) && !broken.contains(Pair.of(key.from(), key.to()));
     }
 
-    /** Under the lock. @return true when it listens now */
-    private boolean listen(WssPort port) {
+    /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */
+    private boolean listen(WssPort port, List<Runnable> portEvents) {
         try {
             port.listen();
+            portEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());
             return false;
         }
+    }
+
+    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
+    private Runnable listeningEvent(WssPort port) {
+        PortKey key = port.key;
+        int number = port.number;
+        boolean listening = port.listening();
+        return () -> events.portListening(key.from(), key.to(), key.targetPort(), number, listening);
     }
 
     private boolean modelAllows(String from, String to) {

@@ -43,6 +43,8 @@ final class Link implements Runnable {
     private final Hub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** Set once the connection to the target is made (what the window lists as established). */
+    private volatile boolean established;
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
@@ -67,6 +69,10 @@ final class Link implements Runnable {
         this.target = outgoing;
         this.selector = opened;
         this.outgoingPort = ((InetSocketAddress) outgoing.getLocalAddress()).getPort();
+    }
+
+    boolean isEstablished() {
+        return established;
     }
 
     boolean isClosed() {
@@ -107,6 +113,7 @@ final class Link implements Runnable {
                 return;
             }
             established = true;
+            this.established = true;
             hub.linkEstablished(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {

@@ -98,6 +98,9 @@ class SettingsTest {
         assertEquals(50000, config.controlPort());
         assertEquals(65536, config.chunkSize());
         assertEquals(4194304, config.socketBuffer());
+        assertEquals(600, config.portMemorySeconds());
+        assertEquals(1000, config.maxPortsPerRobot());
+        assertEquals(30, config.deadPeerSeconds());
         assertTrue(config.matchSourceAddress());
     }
 
@@ -288,7 +291,7 @@ class SettingsTest {
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false),
+        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
                 Settings.of(properties, "t").hubConfig());
     }
 

@@ -43,6 +43,9 @@ public final class Settings {
         KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 1048576", v -> isInt(v, 1, 1024 * 1024)));
         KEYS.put("wss.socketBuffer", new Key("4194304", "a whole number of bytes from 0 to 268435456 (0: the OS decides)", v -> isInt(v, 0, 256 * 1024 * 1024)));
         KEYS.put("wss.pluginDir", new Key("", "an existing directory (empty: none)", v -> v.isEmpty() || isDirectory(v)));
+        KEYS.put("wss.portMemory", new Key("600", "a whole number of seconds from -1 to 31536000 (0: forget at once, -1: never)", v -> isInt(v, -1, 31_536_000)));
+        KEYS.put("wss.maxPortsPerRobot", new Key("1000", "a whole number from 1 to 1000000", v -> isInt(v, 1, 1_000_000)));
+        KEYS.put("wss.deadPeerSeconds", new Key("30", "a whole number of seconds from 2 to 86400, or 0 (the OS's keepalive)", v -> v.equals("0") || isInt(v, 2, 86400)));
         KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
         KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));
         KEYS.put("usarsim.port", new Key("7435", "a port number from 1 to 65535", v -> isInt(v, 1, 65535)));
@@ -150,7 +153,8 @@ public final class Settings {
         try {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
-                    Boolean.parseBoolean(get("wss.matchSourceAddress")));
+                    Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")));
         } catch (UnknownHostException e) {
             throw new IllegalStateException("wss.bindAddress was checked", e);
         }

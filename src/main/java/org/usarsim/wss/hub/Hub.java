@@ -34,6 +34,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private static final Logger LOG = Logger.getLogger(Hub.class.getName());
     /** How long an INIT of a taken name waits for the name to be freed. */
     private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
+    /** How long a departure waits for its ports to hand over the connections already completed. */
+    private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
 
     /** The outcome of a DNS. */
     enum DnsOutcome { OK, NO_SUCH_ROBOT, NO_SUCH_TARGET_PORT, NO_PORT }
@@ -169,12 +171,30 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         return true;
     }
 
-    /** The robot's control connection closed: it is gone, its ports stop listening, its links live on. */
+    /**
+     * The robot's control connection closed: it is gone, its ports stop listening, its links live
+     * on. First every connection the kernel already completed on its listening ports is forwarded
+     * (a robot that sends and leaves at once loses nothing): the robot stays registered until its
+     * ports have drained, for at most {@link #DRAIN_NS}.
+     */
     void deregister(String name, ControlSession session) {
+        List<PortListener> draining = new ArrayList<>();
         synchronized (lock) {
-            Robot robot = robots.get(name);
-            if (robot == null || robot.session() != session) {
+            if (!isSessionOf(name, session)) {
                 return;
+            }
+            for (WssPort port : ports.values()) {
+                PortListener listener = port.key.involves(name) ? port.beginDrain() : null;
+                if (listener != null) {
+                    draining.add(listener);
+                }
+            }
+        }
+        long deadline = System.nanoTime() + DRAIN_NS;
+        draining.forEach(listener -> listener.awaitEnd(deadline));
+        synchronized (lock) {
+            if (!isSessionOf(name, session)) {
+                return; // kicked out meanwhile
             }
             robots.remove(name);
             lock.notifyAll();
@@ -185,6 +205,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
         }
         events.robotDeregistered(name);
+    }
+
+    /** Under the lock. */
+    private boolean isSessionOf(String name, ControlSession session) {
+        Robot robot = robots.get(name);
+        return robot != null && robot.session() == session;
     }
 
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */

@@ -77,6 +77,17 @@ final class WssPort {
         listener.start();
     }
 
+    /**
+     * Begins a drain of the listener (see {@link PortListener#beginDrain}); the port stops
+     * listening once its listener has ended, or at the next {@link #stopListening}.
+     *
+     * @return the listener to wait for, or null when there is none to wait for
+     */
+    PortListener beginDrain() {
+        InetAddress reach = bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
+        return listener != null && listener.beginDrain(reach) ? listener : null;
+    }
+
     /** Stops listening at once, so that a connect is refused; keeps the number. @return true when it was listening */
     boolean stopListening() {
         if (listener == null) {

@@ -52,6 +52,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
     /** Pairs the model broke and has not resumed. */
     private final Set<Pair> broken = new HashSet<>();
+    private final PortMemory memory;
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
@@ -61,6 +62,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         this.model = model;
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         events.add(new EventLogger());
+        memory = new PortMemory(config.portMemorySeconds(), this::forgetIfGone);
     }
 
     public void addListener(WssEventListener listener) {
@@ -117,6 +119,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         } catch (RuntimeException e) {
             LOG.log(Level.WARNING, "the model failed to shut down: " + e, e);
         }
+        memory.close();
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
             closed = true;
@@ -161,6 +164,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return false;
             }
             robots.put(name, robot);
+            memory.clear(name);
             for (WssPort port : ports.values()) {
                 if (port.key.involves(name) && shouldListen(port.key, true)) {
                     listen(port);
@@ -202,6 +206,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 if (port.key.involves(name)) {
                     port.stopListening();
                 }
+            }
+            if (memory.left(name)) {
+                forgetPortsOf(name);
             }
         }
         events.robotDeregistered(name);
@@ -246,6 +253,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             PortKey key = new PortKey(from, to, resolved);
             WssPort port = ports.get(key);
             if (port == null) {
+                long held = ports.keySet().stream().filter(k -> k.from().equals(from)).count();
+                if (held >= config.maxPortsPerRobot()) {
+                    LOG.warning(from + " holds " + held + " WSS ports as source, the most wss.maxPortsPerRobot allows;"
+                            + " no new one for " + key);
+                    return new DnsResult(DnsOutcome.NO_PORT, -1);
+                }
                 try {
                     port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
                 } catch (IOException e) {
@@ -332,6 +345,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     void linkClosed(Link link, boolean wasEstablished) {
         synchronized (lock) {
             link.port.links.remove(link);
+            // A port kept only for its last connection is forgotten with it.
+            for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
+                if (link.port.links.isEmpty() && !robots.containsKey(robot) && memory.expired(robot)) {
+                    forgetPortsOf(robot);
+                }
+            }
         }
         if (wasEstablished) {
             PortKey key = link.port.key;
@@ -390,6 +409,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 }
             }
             broken.removeIf(pair -> pair.contains(name));
+            memory.clear(name);
         }
         links.forEach(Link::close);
         if (robot != null) {
@@ -403,6 +423,46 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public List<String> getListOfRegisteredRobots() {
         synchronized (lock) {
             return robots.keySet().stream().sorted().toList();
+        }
+    }
+
+    // ---- port memory ----
+
+    /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
+    private void forgetIfGone(String name) {
+        synchronized (lock) {
+            if (!closed && !robots.containsKey(name) && memory.expired(name)) {
+                forgetPortsOf(name);
+            }
+        }
+    }
+
+    /**
+     * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
+     * but those with open connections, which are forgotten when their last connection closes.
+     */
+    private void forgetPortsOf(String name) {
+        int forgotten = 0;
+        boolean kept = false;
+        for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
+            WssPort port = it.next();
+            if (!port.key.involves(name)) {
+                continue;
+            }
+            if (port.links.isEmpty()) {
+                port.release();
+                it.remove();
+                forgotten++;
+            } else {
+                kept = true;
+            }
+        }
+        if (forgotten > 0) {
+            LOG.info("forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name + ", gone for "
+                    + memory.goneSeconds(name) + " s");
+        }
+        if (!kept) {
+            memory.clear(name);
         }
     }
 

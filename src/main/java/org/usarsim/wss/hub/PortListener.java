@@ -133,6 +133,15 @@ final class PortListener implements Runnable {
         }
     }
 
+    private static void resetQuietly(SocketChannel socket) {
+        try {
+            socket.setOption(StandardSocketOptions.SO_LINGER, 0);
+        } catch (IOException e) {
+            // Closed already: nothing lingers.
+        }
+        Closing.quietly(socket);
+    }
+
     private synchronized void end() {
         ended = true;
         Closing.quietly(marker);
@@ -173,8 +182,9 @@ final class PortListener implements Runnable {
             }
             accepting(false);
             if (isMarker(socket)) {
-                // Everything completed before the drain began is handed over: stop here.
-                Closing.quietly(socket);
+                // Everything completed before the drain began is handed over: stop here. A reset
+                // rather than a close leaves no TIME_WAIT on the port's number.
+                resetQuietly(socket);
                 Closing.quietly(channel);
                 return;
             }

@@ -53,6 +53,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Pairs the model broke and has not resumed. */
     private final Set<Pair> broken = new HashSet<>();
     private final PortMemory memory;
+    private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
@@ -63,6 +64,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         events.add(new EventLogger());
         memory = new PortMemory(config.portMemorySeconds(), this::forgetIfGone);
+        keepAlive = KeepAlive.within(config.deadPeerSeconds());
     }
 
     public void addListener(WssEventListener listener) {
@@ -133,6 +135,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         links.forEach(Link::close);
         LOG.info("WSS stopped");
+    }
+
+    /** How control connections and links find a peer that vanished. */
+    KeepAlive keepAlive() {
+        return keepAlive;
+    }
+
+    /** The sockets of the control connections and of both legs of every link, for the tests of their options. */
+    List<SocketChannel> openSockets() {
+        List<SocketChannel> sockets = new ArrayList<>(controlListener.channels());
+        synchronized (lock) {
+            for (WssPort port : ports.values()) {
+                port.links.forEach(link -> sockets.addAll(link.channels()));
+            }
+        }
+        return sockets;
     }
 
     // ---- called by control sessions ----

@@ -46,9 +46,15 @@ class PortMemoryTest {
     }
 
     private TestRobot robot(TestHub server, String name, int... ports) throws Exception {
+        TestRobot robot = connected(server);
+        robot.init(name, ports);
+        return robot;
+    }
+
+    /** A robot's control connection, not registered yet; closed after the test. */
+    private TestRobot connected(TestHub server) throws Exception {
         TestRobot robot = server.robot();
         toClose.add(robot);
-        robot.init(name, ports);
         return robot;
     }
 
@@ -75,8 +81,7 @@ class PortMemoryTest {
     @Test
     void zeroForgetsAtOnceButNotWhileAConnectionIsOpen() throws Exception {
         TestHub server = hub(0, 1000);
-        TestRobot r1 = server.robot();
-        toClose.add(r1);
+        TestRobot r1 = connected(server);
         ServerSocket r1Accepts = r1.initAccepting("R1");
         TestRobot r2 = robot(server, "R2", 6000);
         TestRobot r3 = robot(server, "R3", 7000);
@@ -108,8 +113,7 @@ class PortMemoryTest {
     @Test
     void afterChurnDescriptorsAndThreadsReturnToTheirStartingLevel() throws Exception {
         TestHub server = hub(1, 1000);
-        TestRobot peer = server.robot();
-        toClose.add(peer);
+        TestRobot peer = connected(server);
         ServerSocket accepts = peer.initAccepting("Peer");
         accepts.setSoTimeout(0);
         Thread sink = new Thread(() -> drain(accepts), "peer sink");

@@ -129,13 +129,15 @@ class PortMemoryTest {
         churn(server, peer, "churn", 200);
         long peak = descriptors();
         long held = 200 - log.count(Level.INFO, "forgot 2 WSS ports of churn");
-        assertTrue(held > 0 && peak >= descriptors + 2 * held,
+        assertTrue(peak >= descriptors + 2 * held,
                 "two descriptors per gone robot not yet forgotten (" + held + "): " + descriptors + " -> " + peak);
 
         Wait.until("every churned robot's ports are forgotten", () -> log.count(Level.INFO, "forgot 2 WSS ports of churn") == 200);
-        assertEquals(descriptors, Wait.settle("descriptors back", PortMemoryTest::descriptors, n -> n <= descriptors),
-                "descriptors (peak " + peak + ")");
-        assertEquals(threads, Wait.settle("threads back", PortMemoryTest::threads, n -> n <= threads), "threads");
+        // At most the starting level (other tests' leftovers may end meanwhile, never ours start).
+        long descriptorsAfter = Wait.settle("descriptors back", PortMemoryTest::descriptors, n -> n <= descriptors);
+        assertTrue(descriptorsAfter <= descriptors, "descriptors: " + descriptors + " -> " + peak + " -> " + descriptorsAfter);
+        long threadsAfter = Wait.settle("threads back", PortMemoryTest::threads, n -> n <= threads);
+        assertTrue(threadsAfter <= threads, "threads: " + threads + " -> " + threadsAfter);
         accepts.close();
     }
 

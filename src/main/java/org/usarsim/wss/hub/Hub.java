@@ -27,7 +27,7 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
  * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing sockets happens under it.
+ * closing sockets, and the non-blocking connect that starts a port's drain, happens under it.
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 

@@ -12,7 +12,8 @@ import java.util.logging.Logger;
 
 /**
  * A port on the WSS machine for one {@link PortKey}. Its number is chosen by the OS when it is
- * first allocated and kept for the server's life; it listens or not as the hub decides.
+ * first allocated and kept until the hub forgets the port (wss.portMemory, a kick); it listens
+ * or not as the hub decides.
  *
  * <p>While it does not listen, a bound but unconnected socket holds the number, so that the OS
  * gives it to nobody else (not to another WSS port, nor to a link's outgoing socket) and the

@@ -85,6 +85,36 @@ class LeavingRobotTest {
         }
     }
 
+    /**
+     * The other way round: 100 target robots in a row, each registers, a stable source robot
+     * connects to it through the WSS and sends a line, and the target closes its control
+     * connection at once. The connection completed before the target left, so it is forwarded,
+     * to the address and port the target registered, where its accepting socket still is.
+     */
+    @Test
+    void aConnectionToARobotThatLeavesAtOnceIsStillForwarded() throws Exception {
+        TestHub server = new TestHub();
+        toClose.add(server);
+        TestRobot source = server.robotAt("127.0.0.1");
+        toClose.add(source);
+        source.init("Source");
+        for (int i = 0; i < ROBOTS; i++) {
+            TestRobot target = server.robotAt("127.0.0.2");
+            toClose.add(target);
+            ServerSocket accepts = target.initAccepting("T" + i);
+            try (Socket data = source.connect(source.dns("T" + i, 0))) {
+                Sockets.send(data, "line " + i + "\n");
+                data.shutdownOutput();
+                target.control.close();
+                try (Socket delivered = accepts.accept()) {
+                    assertEquals("line " + i + "\n", new String(delivered.getInputStream().readAllBytes(), StandardCharsets.UTF_8),
+                            "what T" + i + " received, up to the end of stream");
+                }
+                Sockets.assertClosedByPeer(data, "the source's connection to T" + i);
+            }
+        }
+    }
+
     /** Accepts every connection and reads it to its end: what came before the end of stream is one entry. */
     private void receive(ServerSocket accepts, Set<String> received, Set<String> failures) {
         while (!accepts.isClosed()) {

@@ -12,6 +12,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import java.util.List;
 import java.util.Properties;
 import java.util.TreeMap;
 import java.util.logging.Level;
@@ -360,6 +361,30 @@ class SettingsTest {
     @CsvSource({"wss.logLevel, info", "wss.logLevel, DEBUG", "wss.logLevel, ALL", "wss.logLevel, 800"})
     void badLogLevel(String key, String value) {
         rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.portMemory, -2", "wss.portMemory, 31536001", "wss.portMemory, 10m", "wss.portMemory, 1.5",
+        "wss.maxPortsPerRobot, 0", "wss.maxPortsPerRobot, 1000001", "wss.maxPortsPerRobot, many",
+        "wss.deadPeerSeconds, 1", "wss.deadPeerSeconds, -1", "wss.deadPeerSeconds, 86401", "wss.deadPeerSeconds, 30s",
+    })
+    void badRobotLimits(String key, String value) {
+        rejected(key, value);
+    }
+
+    @Test
+    void robotLimitsAtTheirEdges() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.portMemory", "-1");
+        properties.setProperty("wss.maxPortsPerRobot", "1");
+        properties.setProperty("wss.deadPeerSeconds", "0");
+        HubConfig config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(-1, 1, 0), List.of(config.portMemorySeconds(), config.maxPortsPerRobot(), config.deadPeerSeconds()));
+        properties.setProperty("wss.portMemory", "0");
+        properties.setProperty("wss.deadPeerSeconds", "2");
+        config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(0, 2), List.of(config.portMemorySeconds(), config.deadPeerSeconds()));
     }
 
     @Test

@@ -28,6 +28,7 @@ class KeepAliveTest {
         KeepAlive thirty = KeepAlive.within(30);
         assertEquals(List.of(10, 5, 4), List.of(thirty.idle, thirty.interval, thirty.count));
         assertEquals(0, KeepAlive.within(0).detectionSeconds(), "0: the OS's timing");
+        assertEquals(2, KeepAlive.within(1).detectionSeconds(), "1: the least keepalive can do, one idle second and one probe");
     }
 
     @Test

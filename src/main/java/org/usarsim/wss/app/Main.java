@@ -4,18 +4,19 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
+import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Function;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelStartException;
-import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.sim.WorldFileException;
 import org.usarsim.wss.sim.WorldServer;
 import sun.misc.Signal;
@@ -78,6 +79,7 @@ public final class Main {
                 case "--help":
                 case "-h":
                     System.out.println(HELP);
+                    System.out.print(Settings.help(Settings.defaults().catalog()));
                     return;
                 default:
                     fail(2, "unknown argument " + args[i] + "\n" + USAGE);
@@ -99,22 +101,29 @@ public final class Main {
     private static void runHeadless(Path config, boolean asked) {
         Settings settings;
         try {
-            settings = config == null ? Settings.defaults() : Settings.load(config);
+            // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
+            Function<Settings, ModelCatalog> catalog = server -> {
+                LogSetup.toStandardOutput(server.logLevel());
+                return Settings.modelsFor(server);
+            };
+            settings = config == null ? Settings.of(new Properties(), "the defaults", catalog)
+                    : Settings.of(Settings.read(config), config.toString(), catalog);
         } catch (SettingsException e) {
             fail(2, e.getMessage());
             return;
         }
-        LogSetup.toStandardOutput(settings.logLevel());
+        Logger log = Logger.getLogger(Main.class.getName());
         if (!asked) {
-            Logger.getLogger(Main.class.getName()).info("there is no window yet: running headless");
+            log.info("there is no window yet: running headless");
         }
-        List<Path> pluginFolders = new ArrayList<>();
-        PluginFolder.besideCodeOf(Main.class).ifPresent(pluginFolders::add);
-        settings.pluginDir().ifPresent(pluginFolders::add);
-        ModelCatalog catalog = ModelCatalog.load(Main.class.getClassLoader(), pluginFolders);
+        ModelCatalog catalog = settings.catalog();
         PropagationModel model = catalog.find(settings.modelName());
         if (model == null) {
             fail(2, "wss.model = '" + settings.modelName() + "' is not a known model; known: " + String.join(", ", catalog.names()));
+        }
+        for (String key : settings.ignoredKeys()) {
+            log.warning(config + ": " + key + " is not a setting of " + model.name() + " (it is one of "
+                    + String.join(", ", declaring(catalog, key)) + "): ignored");
         }
         Hub hub = new Hub(settings.hubConfig(), model);
         CsvEventLog eventLog = settings.eventLog() ? openEventLog(settings.eventLogDir()) : null;
@@ -133,6 +142,12 @@ public final class Main {
             fail(1, model.name() + " did not start: " + e.getMessage());
         }
         waitForStopSignal();
+    }
+
+    /** The names of the models that declare this key. */
+    private static List<String> declaring(ModelCatalog catalog, String key) {
+        return catalog.models().stream().filter(model -> Setting.find(model.settings(), key) != null)
+                .map(PropagationModel::name).toList();
     }
 
     private static CsvEventLog openEventLog(Path directory) {

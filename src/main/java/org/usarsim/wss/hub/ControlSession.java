@@ -117,7 +117,11 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
 
     private String answer(Command command) throws ProtocolException {
         if (robot == null) {
-            return command.type().equals("INIT") ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
+            boolean init = command.type().equals("INIT") && !command.hasNoSegment();
+            return init ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
+        }
+        if (command.hasNoSegment()) {
+            return Replies.error(Replies.UNKNOWN_OR_SECOND_INIT);
         }
         switch (command.type()) {
             case "GETSS":

@@ -33,7 +33,7 @@ final class KeepAlive {
         this.count = count;
     }
 
-    /** @param seconds within how long a dead peer is found (2 or more); 0 leaves the timing to the OS */
+    /** @param seconds within how long a dead peer is found (1 acts as 2, the least possible); 0 leaves the timing to the OS */
     static KeepAlive within(int seconds) {
         if (seconds == 0) {
             return new KeepAlive(0, 0, 0);

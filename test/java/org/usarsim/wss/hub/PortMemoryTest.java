@@ -66,6 +66,7 @@ class PortMemoryTest {
         int toR1 = r2.dns("R1", 0);
         int fromR1 = r1.dns("R2", 0);
         r1.control.close();
+        Wait.until("R1 is deregistered", () -> !server.hub.getListOfRegisteredRobots().contains("R1"));
         TestRobot back = robot(server, "R1", 5000);
         assertEquals(toR1, r2.dns("R1", 0), "back within wss.portMemory: the same number");
         assertEquals(fromR1, back.dns("R2", 0), "back within wss.portMemory: the same number");

@@ -72,6 +72,19 @@ public final class ServerProcess {
         return new ServerProcess(builder.start());
     }
 
+    /**
+     * {@code java -cp <the server's classes> org.usarsim.wss.app.Main ARGS} under a lower limit
+     * of open descriptors: {@code bash -c 'ulimit -n LIMIT; exec java ...'}.
+     */
+    public static ServerProcess startWithDescriptorLimit(int limit, String... args) throws Exception {
+        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        List<String> command = new ArrayList<>(List.of("bash", "-c", "ulimit -n " + limit + " && exec \"$@\"", "bash",
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", classes.toString(),
+                Main.class.getName()));
+        command.addAll(List.of(args));
+        return new ServerProcess(new ProcessBuilder(command).start());
+    }
+
     /** {@code java ARGUMENTS}, with the java of the JVM running the tests. */
     public static ServerProcess startJava(List<String> arguments) throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));

@@ -37,6 +37,9 @@ class SettingsTest {
             Map.entry("wss.chunkSize", "65536"),
             Map.entry("wss.socketBuffer", "4194304"),
             Map.entry("wss.pluginDir", ""),
+            Map.entry("wss.portMemory", "600"),
+            Map.entry("wss.maxPortsPerRobot", "1000"),
+            Map.entry("wss.deadPeerSeconds", "30"),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -102,6 +105,9 @@ class SettingsTest {
         assertEquals(50000, config.controlPort());
         assertEquals(65536, config.chunkSize());
         assertEquals(4194304, config.socketBuffer());
+        assertEquals(600, config.portMemorySeconds());
+        assertEquals(1000, config.maxPortsPerRobot());
+        assertEquals(30, config.deadPeerSeconds());
         assertTrue(config.matchSourceAddress());
     }
 
@@ -301,7 +307,7 @@ class SettingsTest {
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false),
+        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
                 Settings.of(properties, "t").hubConfig());
     }
 
@@ -439,6 +445,30 @@ class SettingsTest {
     @CsvSource({"wss.logLevel, info", "wss.logLevel, DEBUG", "wss.logLevel, ALL", "wss.logLevel, 800"})
     void badLogLevel(String key, String value) {
         rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.portMemory, -2", "wss.portMemory, 31536001", "wss.portMemory, 10m", "wss.portMemory, 1.5",
+        "wss.maxPortsPerRobot, 0", "wss.maxPortsPerRobot, 1000001", "wss.maxPortsPerRobot, many",
+        "wss.deadPeerSeconds, -1", "wss.deadPeerSeconds, 86401", "wss.deadPeerSeconds, 30s",
+    })
+    void badRobotLimits(String key, String value) {
+        rejected(key, value);
+    }
+
+    @Test
+    void robotLimitsAtTheirEdges() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.portMemory", "-1");
+        properties.setProperty("wss.maxPortsPerRobot", "1");
+        properties.setProperty("wss.deadPeerSeconds", "0");
+        HubConfig config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(-1, 1, 0), List.of(config.portMemorySeconds(), config.maxPortsPerRobot(), config.deadPeerSeconds()));
+        properties.setProperty("wss.portMemory", "0");
+        properties.setProperty("wss.deadPeerSeconds", "2");
+        config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(0, 2), List.of(config.portMemorySeconds(), config.deadPeerSeconds()));
     }
 
     @Test

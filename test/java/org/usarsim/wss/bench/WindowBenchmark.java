@@ -3,7 +3,6 @@ package org.usarsim.wss.bench;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
-import java.net.InetAddress;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -24,6 +23,7 @@ import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.WssEventListener;
@@ -92,7 +92,7 @@ public final class WindowBenchmark {
     }
 
     private static HubConfig config() throws IOException {
-        return new HubConfig(InetAddress.getByName("127.0.0.1"), 0, 65536, 4 * 1024 * 1024, true);
+        return TestHub.config(true, 65536, 600, 1000, 30);
     }
 
     private static double headless(int robots, int seconds) throws Exception {

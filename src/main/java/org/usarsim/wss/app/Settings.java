@@ -56,6 +56,14 @@ public final class Settings {
                     .note("0: the OS decides").help("The send and receive buffer size of both sockets of every link"),
             Setting.directory("wss.pluginDir", "Plugin folder", "").orEmpty("none")
                     .help("A folder of model plugin jars, loaded after those of the plugins/ folder beside wss.jar"),
+            Setting.integer("wss.portMemory", "Port memory", 600).from(-1).to(31_536_000).unit("s")
+                    .note("0: forget at once, -1: never")
+                    .help("How long the WSS ports of a robot that left keep their numbers"),
+            Setting.integer("wss.maxPortsPerRobot", "WSS ports per robot", 1000).from(1).to(1_000_000)
+                    .help("The most WSS ports one robot may hold as source"),
+            Setting.integer("wss.deadPeerSeconds", "Dead peer detection", 30).from(0).to(86400).unit("s")
+                    .note("0: the OS's keepalive")
+                    .help("Within how long keepalive finds a robot whose machine vanished"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -234,7 +242,8 @@ public final class Settings {
         try {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
-                    Boolean.parseBoolean(get("wss.matchSourceAddress")));
+                    Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")));
         } catch (UnknownHostException e) {
             throw new IllegalStateException("wss.bindAddress was checked", e);
         }

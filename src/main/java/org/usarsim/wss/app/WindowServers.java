@@ -27,9 +27,7 @@ final class WindowServers implements Servers {
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }
-        HubConfig base = settings.hubConfig();
-        HubConfig config = new HubConfig(base.bindAddress(), Integer.parseInt(port.strip()), base.chunkSize(),
-                base.socketBuffer(), base.matchSourceAddress());
+        HubConfig config = settings.hubConfig().withControlPort(Integer.parseInt(port.strip()));
         Server server = Server.create(config, model, eventLog ? settings.eventLogDir() : null);
         server.hub().addListener(listener);
         current.set(server);

@@ -9,6 +9,7 @@ import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
@@ -73,6 +74,10 @@ final class Link implements Runnable {
 
     boolean isEstablished() {
         return established;
+    }
+
+    List<SocketChannel> channels() {
+        return List.of(source, target);
     }
 
     boolean isClosed() {
@@ -149,7 +154,7 @@ final class Link implements Runnable {
             buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
-            channel.setOption(StandardSocketOptions.SO_KEEPALIVE, true);
+            hub.keepAlive().apply(channel);
             channel.configureBlocking(false);
         }
         Direction up = new Direction(source, target, key.from(), key.to());

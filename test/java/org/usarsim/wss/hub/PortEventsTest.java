@@ -70,4 +70,26 @@ class PortEventsTest {
             }
         }
     }
+
+    @Test
+    void portsForgottenByPortMemoryAreEventsAndLeaveTheSnapshot() throws Exception {
+        // wss.portMemory 0: a robot's ports are forgotten as it leaves.
+        try (TestHub server = new TestHub(new ScriptedModel(), TestHub.config(true, 65536, 0, 1000, 30))) {
+            server.hub.addListener(recorder);
+            try (TestRobot r1 = server.robot()) {
+                r1.init("r1");
+                int target;
+                int wss;
+                try (TestRobot r2 = server.robot()) {
+                    target = r2.initAccepting("r2").getLocalPort();
+                    wss = r1.dns("r2", 0);
+                }
+                String port = "r1 r2 " + target + " " + wss;
+                Wait.until("forgotten as r2 left", () -> events.contains("forgotten " + port));
+                assertEquals(List.of("allocated " + port + " true", "listening " + port + " false", "forgotten " + port),
+                        events);
+                assertEquals(List.of(), server.hub.snapshot().ports());
+            }
+        }
+    }
 }

@@ -24,8 +24,8 @@ import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.PathLoss;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */

@@ -3,8 +3,8 @@ package org.usarsim.wss.gui;
 import java.util.List;
 import java.util.Map;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.distance.RobotState;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /** A plugin's simulator model: a {@link SimulatorModel} that is neither of the built-in ones, under a name of its own. */
 final class MySimulatorModel extends SimulatorModel {

@@ -2,7 +2,7 @@ package org.usarsim.wss.gui;
 
 import java.awt.Window;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * Where the window opens a model's configuration (the model's own dialog, the built-in one of the

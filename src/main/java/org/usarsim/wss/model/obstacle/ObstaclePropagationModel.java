@@ -10,10 +10,10 @@ import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.distance.NamePair;
-import org.usarsim.wss.model.distance.RobotState;
-import org.usarsim.wss.model.distance.SimulatorConnection;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.NamePair;
+import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.SimulatorConnection;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * The original's realisation of the manual's RayTracing idea: the DistanceOnly strength minus a

@@ -101,6 +101,72 @@ class PluginProcessTest {
         assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
     }
 
+    // ---- a plugin's settings ----
+
+    @Test
+    void aPluginsSettingsComeFromThePropertiesFile() throws Exception {
+        Path plugins = dir.resolve("plugins");
+        PluginJars.tunedJar(plugins.resolve("tuned.jar"), classes);
+        Path config = config("wss.pluginDir = " + plugins, "wss.model = Tuned", "tuned.level = 5", "tuned.gain = 0.25 ",
+                "usarsim.port = 7000");
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()), config);
+
+        Matcher listening = server.awaitListening();
+        assertEquals("Tuned", listening.group(2));
+        List<String> log = server.stdoutSoFar();
+        assertTrue(log.stream().anyMatch(line -> line.endsWith("INFO Tuned configured with tuned.level 5, tuned.gain 0.25")),
+                log.toString());
+        assertTrue(log.stream().anyMatch(line -> line.endsWith("WARNING " + config + ": usarsim.port is not a setting of Tuned"
+                + " (it is one of DistanceOnlyPropagationModel, ObstaclePropagationModel): ignored")), log.toString());
+        assertStrength(Integer.parseInt(listening.group(1)), "-50.25");
+    }
+
+    @Test
+    void aPluginsDefaultsApplyWhenTheFileSetsNone() throws Exception {
+        Path plugins = dir.resolve("plugins");
+        PluginJars.tunedJar(plugins.resolve("tuned.jar"), classes);
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+                config("wss.pluginDir = " + plugins, "wss.model = Tuned"));
+        assertStrength(Integer.parseInt(server.awaitListening().group(1)), "-32.5");
+    }
+
+    @Test
+    void aBadValueForAPluginsKeyExitsTwoBeforeBinding() throws Exception {
+        Path plugins = dir.resolve("plugins");
+        PluginJars.tunedJar(plugins.resolve("tuned.jar"), classes);
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+                config("wss.pluginDir = " + plugins, "wss.model = Tuned", "tuned.level = 11"));
+        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        String error = server.stderr().strip();
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+        assertTrue(error.endsWith(": tuned.level = '11' is not a whole number from 1 to 10"), error);
+        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+    }
+
+    @Test
+    void aPluginsKeyWithoutThePluginIsAnUnknownKey() throws Exception {
+        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
+                config("tuned.gain = 1"));
+        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        String error = server.stderr().strip();
+        assertFalse(error.contains("\n"), "a one-line error: " + error);
+        assertTrue(error.contains("unknown key tuned.gain (value '1'); known keys: wss.port, "), error);
+    }
+
+    @Test
+    void helpListsThePluginsSettings() throws Exception {
+        Path app = dir.resolve("app");
+        Path wssJar = PluginJars.serverJar(app.resolve("wss.jar"));
+        PluginJars.tunedJar(app.resolve("plugins").resolve("tuned.jar"), classes);
+        ServerProcess server = ServerProcess.startJava(List.of("-jar", wssJar.toString(), "--help"));
+        servers.add(server);
+        assertEquals(0, server.awaitExit(), "stderr: " + server.stderr());
+        String help = String.join("\n", server.stdoutSoFar());
+        assertTrue(help.contains("  wss.port = 50000\n      a port number from 0 to 65535 (0: any free port). "), help);
+        assertTrue(help.contains("model Tuned:\n  tuned.level = 3\n      a whole number from 1 to 10. How many steps of 10 dB"), help);
+        assertTrue(help.contains("  tuned.gain = 2.5\n      a number of dB, 0 or more. Taken off the level's strength"), help);
+    }
+
     // ---- helpers ----
 
     /** Two robots register; B's strength as A sees it is the plugin's. */

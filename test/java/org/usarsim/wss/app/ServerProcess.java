@@ -11,6 +11,7 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -49,6 +50,39 @@ public final class ServerProcess {
         List<String> arguments = new ArrayList<>(List.of("-cp", classes.toString(), Main.class.getName()));
         arguments.addAll(List.of(args));
         return startJava(arguments);
+    }
+
+    /**
+     * {@code java -Djava.util.prefs.userRoot=PREFS -cp <the server's classes> org.usarsim.wss.app.Main ARGS}
+     * with the environment changed: a key mapped to null is removed (DISPLAY, to run without a display).
+     */
+    public static ServerProcess start(Path preferences, Map<String, String> environment, String... args) throws Exception {
+        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Djava.util.prefs.userRoot=" + preferences, "-cp", classes.toString(), Main.class.getName()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command);
+        environment.forEach((key, value) -> {
+            if (value == null) {
+                builder.environment().remove(key);
+            } else {
+                builder.environment().put(key, value);
+            }
+        });
+        return new ServerProcess(builder.start());
+    }
+
+    /**
+     * {@code java -cp <the server's classes> org.usarsim.wss.app.Main ARGS} under a lower limit
+     * of open descriptors: {@code bash -c 'ulimit -n LIMIT; exec java ...'}.
+     */
+    public static ServerProcess startWithDescriptorLimit(int limit, String... args) throws Exception {
+        Path classes = Path.of(Main.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        List<String> command = new ArrayList<>(List.of("bash", "-c", "ulimit -n " + limit + " && exec \"$@\"", "bash",
+                Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", classes.toString(),
+                Main.class.getName()));
+        command.addAll(List.of(args));
+        return new ServerProcess(new ProcessBuilder(command).start());
     }
 
     /** {@code java ARGUMENTS}, with the java of the JVM running the tests. */

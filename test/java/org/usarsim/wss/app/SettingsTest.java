@@ -11,6 +11,7 @@ import java.net.InetAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.Properties;
 import java.util.TreeMap;
@@ -20,6 +21,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 class SettingsTest {
 
@@ -34,6 +37,9 @@ class SettingsTest {
             Map.entry("wss.chunkSize", "65536"),
             Map.entry("wss.socketBuffer", "4194304"),
             Map.entry("wss.pluginDir", ""),
+            Map.entry("wss.portMemory", "600"),
+            Map.entry("wss.maxPortsPerRobot", "1000"),
+            Map.entry("wss.deadPeerSeconds", "30"),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -72,13 +78,14 @@ class SettingsTest {
     }
 
     @Test
-    void defaultsHaveNoOtherKey() {
+    void defaultsHaveNoOtherKey() throws Exception {
         Settings settings = Settings.defaults();
         assertEquals(null, settings.get("wss.nonsense"));
-        // modelSettings() shows every non-wss key: exactly the documented ones.
+        assertEquals(Map.of(), settings.modelSettings().asMap(), "NoopPropagationModel declares no setting");
+        // the obstacle model declares every non-wss key: exactly the documented ones.
         Map<String, String> expected = new TreeMap<>(DEFAULTS);
         expected.keySet().removeIf(key -> key.startsWith("wss."));
-        assertEquals(expected, settings.modelSettings().asMap());
+        assertEquals(expected, Settings.of(props("wss.model", "ObstaclePropagationModel"), "t").modelSettings().asMap());
     }
 
     @Test
@@ -98,6 +105,9 @@ class SettingsTest {
         assertEquals(50000, config.controlPort());
         assertEquals(65536, config.chunkSize());
         assertEquals(4194304, config.socketBuffer());
+        assertEquals(600, config.portMemorySeconds());
+        assertEquals(1000, config.maxPortsPerRobot());
+        assertEquals(30, config.deadPeerSeconds());
         assertTrue(config.matchSourceAddress());
     }
 
@@ -205,48 +215,57 @@ class SettingsTest {
 
     @Test
     void problemIsNullForAnAcceptedValue() {
-        assertEquals(null, Settings.problem("usarsim.port", "7435"));
-        assertEquals(null, Settings.problem("distance.holdTime", " 1.5 "), "stripped like a file's value");
-        assertEquals(null, Settings.problem("usarsim.interval", "100"));
+        assertEquals(null, problem("usarsim.port", "7435"));
+        assertEquals(null, problem("distance.holdTime", " 1.5 "), "stripped like a file's value");
+        assertEquals(null, problem("usarsim.interval", "100"));
     }
 
     @Test
     void problemSaysWhatTheKeyExpects() {
-        assertEquals("a port number from 1 to 65535", Settings.problem("usarsim.port", "0"));
-        assertEquals("a number above 0", Settings.problem("distance.n", "0"));
-        assertEquals("a whole number of milliseconds from 100 to 60000", Settings.problem("usarsim.timeout", "99"));
-        assertEquals("a number of dB, 0 or more", Settings.problem("distance.margin", "-1"));
-        assertEquals("a number of seconds, 0 or more", Settings.problem("distance.holdTime", "x"));
+        assertEquals("a port number from 1 to 65535", problem("usarsim.port", "0"));
+        assertEquals("a number above 0", problem("distance.n", "0"));
+        assertEquals("a whole number of milliseconds from 100 to 60000", problem("usarsim.timeout", "99"));
+        assertEquals("a number of dB, 0 or more", problem("distance.margin", "-1"));
+        assertEquals("a number of seconds, 0 or more", problem("distance.holdTime", "x"));
     }
 
     @Test
     void problemAgreesWithTheFileCheck() throws Exception {
         // the same rule: what problem() accepts, a file accepts, and what it refuses, a file refuses
-        for (String key : Settings.modelDefaults().keySet()) {
+        for (String key : modelDefaults().keySet()) {
             for (String value : new String[] {"", "0", "-1", "1", "99", "100", "70000", "abc", "1.5", "NaN"}) {
-                boolean accepted = Settings.problem(key, value) == null;
+                boolean accepted = problem(key, value) == null;
                 try {
                     Settings.of(props(key, value), "t");
                     assertTrue(accepted, key + " = '" + value + "': the file accepts it, problem() does not");
                 } catch (SettingsException e) {
                     assertFalse(accepted, key + " = '" + value + "': problem() accepts it, the file does not");
-                    assertTrue(e.getMessage().endsWith(Settings.problem(key, value)), e.getMessage());
+                    assertTrue(e.getMessage().endsWith(problem(key, value)), e.getMessage());
                 }
             }
         }
     }
 
     @Test
-    void problemOfAnUnknownKey() {
-        assertThrows(IllegalArgumentException.class, () -> Settings.problem("distance.nonsense", "1"));
-    }
-
-    @Test
     void modelDefaultsAreTheModelKeysOfTheDefaults() {
         Map<String, String> expected = new TreeMap<>(DEFAULTS);
         expected.keySet().removeIf(key -> key.startsWith("wss."));
-        assertEquals(expected, Settings.modelDefaults());
-        assertThrows(UnsupportedOperationException.class, () -> Settings.modelDefaults().put("distance.n", "2"));
+        assertEquals(expected, modelDefaults());
+    }
+
+    /** The rule of a key: the server's, or the built-in models' (the obstacle model declares every one). */
+    private static Setting rule(String key) {
+        Setting server = Setting.find(Settings.SERVER, key);
+        return server != null ? server : Setting.find(new ObstaclePropagationModel().settings(), key);
+    }
+
+    private static String problem(String key, String value) {
+        return rule(key).problem(value);
+    }
+
+    /** The defaults of the built-in models' keys. */
+    private static Map<String, String> modelDefaults() {
+        return new TreeMap<>(Setting.defaults(new ObstaclePropagationModel().settings()));
     }
 
     // ---- modelSettings() and hubConfig() ----
@@ -255,7 +274,7 @@ class SettingsTest {
     void modelSettingsHoldTheModelKeysAndNoWssKey() throws Exception {
         Properties properties = new Properties();
         properties.setProperty("wss.port", "0");
-        properties.setProperty("wss.model", "NoopPropagationModel");
+        properties.setProperty("wss.model", "ObstaclePropagationModel");
         properties.setProperty("usarsim.host", "10.0.0.7");
         properties.setProperty("distance.d0", "3.5");
         properties.setProperty("obstacle.cacheDistance", "0.25");
@@ -288,8 +307,77 @@ class SettingsTest {
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false),
+        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
                 Settings.of(properties, "t").hubConfig());
+    }
+
+    // ---- the chosen model's keys and the others' ----
+
+    @Test
+    void theChosenModelIsHandedItsOwnKeysOnlyAndTheOthersAreNoted() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.model", "DistanceOnlyPropagationModel");
+        properties.setProperty("distance.n", "2");
+        properties.setProperty("obstacle.attenuation", "3");
+        Settings settings = Settings.of(properties, "t");
+        Map<String, String> model = settings.modelSettings().asMap();
+        assertEquals("2", model.get("distance.n"));
+        assertEquals(10, model.size(), "usarsim.* and distance.*: " + model);
+        assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
+        assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
+        assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");
+        rejected("obstacle.attenuation", "-3");
+    }
+
+    @Test
+    void aModelNotInTheCatalogIsReportedLaterAndItsKeysAreIgnored() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.model", "Nowhere");
+        properties.setProperty("usarsim.port", "7000");
+        Settings settings = Settings.of(properties, "t");
+        assertEquals(Map.of(), settings.modelSettings().asMap());
+        assertEquals(List.of("usarsim.port"), settings.ignoredKeys());
+    }
+
+    @Test
+    void theUnknownKeyErrorListsTheServersAndEveryModelsKeys() {
+        SettingsException e = rejected("distance.nonsense", "1");
+        assertTrue(e.getMessage().endsWith("known keys: " + String.join(", ", DEFAULTS.keySet().stream()
+                .sorted(java.util.Comparator.comparingInt(SettingsTest::order)).toList())), e.getMessage());
+    }
+
+    /** The order the keys are declared in: the server's, then the models' in catalog order. */
+    private static int order(String key) {
+        return allDeclared().stream().map(Setting::key).toList().indexOf(key);
+    }
+
+    @Test
+    void helpListsEveryKeyWithItsDefaultAndRule() {
+        String help = Settings.help(Settings.defaults().catalog());
+        for (Setting setting : allDeclared()) {
+            assertTrue(help.contains("  " + setting.key() + " = " + setting.defaultValue() + "\n      " + setting.expected()),
+                    setting.key() + " in:\n" + help);
+        }
+        assertTrue(help.contains("model NoopPropagationModel: no settings"), help);
+    }
+
+    @Test
+    void docsHeadlessListEveryDeclaredKeyWithItsDefault() throws IOException {
+        String docs = Files.readString(Path.of("docs/headless.md"), StandardCharsets.UTF_8);
+        for (Setting setting : allDeclared()) {
+            String row = "| `" + setting.key() + "` | ";
+            assertTrue(docs.contains(row), setting.key() + " has a row in docs/headless.md");
+            String defaultCell = docs.substring(docs.indexOf(row) + row.length()).split(" \\| ")[0];
+            assertTrue(defaultCell.contains(setting.defaultValue().isEmpty() ? "empty" : "`" + setting.defaultValue() + "`"),
+                    setting.key() + ": docs say " + defaultCell + ", the code " + setting.defaultValue());
+        }
+    }
+
+    /** The server's settings and every built-in model's. */
+    private static List<Setting> allDeclared() {
+        List<Setting> all = new java.util.ArrayList<>(Settings.SERVER);
+        all.addAll(new ObstaclePropagationModel().settings());
+        return all;
     }
 
     // ---- bad values ----
@@ -357,6 +445,30 @@ class SettingsTest {
     @CsvSource({"wss.logLevel, info", "wss.logLevel, DEBUG", "wss.logLevel, ALL", "wss.logLevel, 800"})
     void badLogLevel(String key, String value) {
         rejected(key, value);
+    }
+
+    @ParameterizedTest
+    @CsvSource({
+        "wss.portMemory, -2", "wss.portMemory, 31536001", "wss.portMemory, 10m", "wss.portMemory, 1.5",
+        "wss.maxPortsPerRobot, 0", "wss.maxPortsPerRobot, 1000001", "wss.maxPortsPerRobot, many",
+        "wss.deadPeerSeconds, -1", "wss.deadPeerSeconds, 86401", "wss.deadPeerSeconds, 30s",
+    })
+    void badRobotLimits(String key, String value) {
+        rejected(key, value);
+    }
+
+    @Test
+    void robotLimitsAtTheirEdges() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.portMemory", "-1");
+        properties.setProperty("wss.maxPortsPerRobot", "1");
+        properties.setProperty("wss.deadPeerSeconds", "0");
+        HubConfig config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(-1, 1, 0), List.of(config.portMemorySeconds(), config.maxPortsPerRobot(), config.deadPeerSeconds()));
+        properties.setProperty("wss.portMemory", "0");
+        properties.setProperty("wss.deadPeerSeconds", "2");
+        config = Settings.of(properties, "t").hubConfig();
+        assertEquals(List.of(0, 2), List.of(config.portMemorySeconds(), config.deadPeerSeconds()));
     }
 
     @Test

@@ -14,10 +14,18 @@ final class EchoServer implements AutoCloseable {
 
     private final ServerSocket server;
     private final int messageSize;
+    /** Whether a connection is closed by the server after one message (no TIME_WAIT on the client's side). */
+    private final boolean once;
     private final Set<Socket> open = ConcurrentHashMap.newKeySet();
 
     EchoServer(int messageSize) throws IOException {
+        this(messageSize, false);
+    }
+
+    /** With {@code once}, each connection is closed by the server after it echoed one message. */
+    EchoServer(int messageSize, boolean once) throws IOException {
         this.messageSize = messageSize;
+        this.once = once;
         server = new ServerSocket();
         server.bind(new InetSocketAddress("127.0.0.1", 0), 1024);
         Thread acceptor = new Thread(this::acceptLoop, "echo-accept " + server.getLocalPort());
@@ -51,6 +59,9 @@ final class EchoServer implements AutoCloseable {
             OutputStream out = socket.getOutputStream();
             while (in.readNBytes(message, 0, messageSize) == messageSize) {
                 out.write(message);
+                if (once) {
+                    break;
+                }
             }
         } catch (IOException ignored) {
             // The peer went away.

@@ -4,15 +4,23 @@ import java.awt.Rectangle;
 import java.awt.Robot;
 import java.awt.image.BufferedImage;
 import java.io.File;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.prefs.Preferences;
 import javax.imageio.ImageIO;
 import javax.swing.JButton;
+import javax.swing.JDialog;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
+import org.usarsim.wss.model.ModelCatalog;
+import org.usarsim.wss.model.PluginJars;
+import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
@@ -24,8 +32,11 @@ import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
  * mvn -B -q test-compile
  * xvfb-run -a sh -c 'openbox &amp; sleep 1; java -cp target/classes:target/test-classes \
  *     org.usarsim.wss.gui.DialogScreenshot docs/images/distanceonly-dialog.png \
- *     DistanceOnlyPropagationModel|ObstaclePropagationModel [readonly] [key=value ...] [ok]'
+ *     DistanceOnlyPropagationModel|ObstaclePropagationModel|Tuned [readonly] [key=value ...] [ok]'
  * </pre>
+ *
+ * <p>{@code Tuned} is the test plugin that declares two settings ({@link PluginJars#TUNED}),
+ * compiled and loaded from a jar as a plugin is, shown in the dialog built from its declaration.
  *
  * <p>A {@code key=value} argument types the value into the field of that name before the picture
  * ({@code cutoffDistance=55.6}); {@code ok} presses OK first (to show a refusal). The settings
@@ -55,11 +66,15 @@ public final class DialogScreenshot {
         Preferences root = TestPreferences.create();
         try {
             boolean finalEditable = editable;
-            DistanceModelDialog[] dialog = new DistanceModelDialog[1];
-            SimulatorModel simulatorModel = model.equals("ObstaclePropagationModel") ? new ObstaclePropagationModel()
-                    : new DistanceOnlyPropagationModel();
-            SwingUtilities.invokeAndWait(() -> dialog[0] = new DistanceModelDialog(null, simulatorModel, finalEditable,
-                    new ModelPreferences(root)));
+            JDialog[] dialog = new JDialog[1];
+            PropagationModel shown = switch (model) {
+                case "ObstaclePropagationModel" -> new ObstaclePropagationModel();
+                case "Tuned" -> tunedPlugin();
+                default -> new DistanceOnlyPropagationModel();
+            };
+            SwingUtilities.invokeAndWait(() -> dialog[0] = shown instanceof SimulatorModel simulatorModel
+                    ? new DistanceModelDialog(null, simulatorModel, finalEditable, new ModelPreferences(root))
+                    : new SettingsDialog(null, shown, finalEditable, new ModelPreferences(root)));
             SwingUtilities.invokeLater(() -> dialog[0].setVisible(true));
             Gui.until("the dialog shows", () -> dialog[0].isShowing());
             for (Map.Entry<String, String> entry : typed.entrySet()) {
@@ -81,5 +96,13 @@ public final class DialogScreenshot {
             TestPreferences.remove(root);
             System.exit(0);
         }
+    }
+
+    /** The test plugin Tuned, compiled, jarred and loaded from its jar as the server loads a plugin. */
+    private static PropagationModel tunedPlugin() throws IOException {
+        Path dir = Files.createTempDirectory("wss-screenshot");
+        Path classes = PluginJars.compile(dir);
+        PluginJars.tunedJar(dir.resolve("plugins").resolve("tuned.jar"), classes);
+        return ModelCatalog.load(DialogScreenshot.class.getClassLoader(), List.of(dir.resolve("plugins"))).find("Tuned");
     }
 }

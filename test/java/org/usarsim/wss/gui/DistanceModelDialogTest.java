@@ -19,10 +19,13 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.usarsim.wss.app.Settings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.PathLoss;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */
@@ -31,6 +34,8 @@ class DistanceModelDialogTest {
     /** The preferences nodes of the real models the dialogs are opened for. */
     private static final String DISTANCE = "DistanceOnlyPropagationModel";
     private static final String OBSTACLE = "ObstaclePropagationModel";
+    private static final PropagationModel DISTANCE_MODEL = new DistanceOnlyPropagationModel();
+    private static final PropagationModel OBSTACLE_MODEL = new ObstaclePropagationModel();
 
     /** The keys the DistanceOnly dialog shows; the Obstacle dialog adds the obstacle.* keys. */
     private static final List<String> DISTANCE_KEYS = List.of("usarsim.host", "usarsim.port", "usarsim.interval",
@@ -120,7 +125,7 @@ class DistanceModelDialogTest {
         assertEquals("DistanceOnlyPropagationModel Configuration", Gui.onEdt(dialog::getTitle));
         assertTrue(Gui.onEdt(dialog::isModal));
         for (String key : DISTANCE_KEYS) {
-            assertEquals(Settings.modelDefaults().get(key), text(key), key);
+            assertEquals(Setting.defaults(DISTANCE_MODEL.settings()).get(key), text(key), key);
         }
         // 2 * 10^(43.33 / 10): about 43055.6 m
         assertEquals(distance(-93, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
@@ -145,7 +150,7 @@ class DistanceModelDialogTest {
 
     @Test
     void showsTheStoredValues() throws Exception {
-        preferences.store(OBSTACLE, Map.of("usarsim.host", "10.1.2.3", "distance.n", "2.5", "obstacle.attenuation", "4"));
+        preferences.store(OBSTACLE_MODEL, Map.of("usarsim.host", "10.1.2.3", "distance.n", "2.5", "obstacle.attenuation", "4"));
         open(new ObstaclePropagationModel(), true);
         assertEquals("10.1.2.3", text("usarsim.host"));
         assertEquals("2.5", text("distance.n"));
@@ -210,8 +215,8 @@ class DistanceModelDialogTest {
         String n = text("distance.n");
         click(DistanceModelDialog.OK);
         waitClosed();
-        assertEquals(n, preferences.load(DISTANCE).get("distance.n"));
-        assertEquals("-40", preferences.load(DISTANCE).get("distance.cutoff"));
+        assertEquals(n, preferences.load(DISTANCE_MODEL).get("distance.n"));
+        assertEquals("-40", preferences.load(DISTANCE_MODEL).get("distance.cutoff"));
     }
 
     @Test
@@ -252,7 +257,7 @@ class DistanceModelDialogTest {
         assertNotEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground));
         click(DistanceModelDialog.OK);
         waitClosed();
-        assertEquals("2", preferences.load(DISTANCE).get("distance.n"));
+        assertEquals("2", preferences.load(DISTANCE_MODEL).get("distance.n"));
     }
 
     @Test
@@ -295,7 +300,7 @@ class DistanceModelDialogTest {
         waitClosed();
         assertTrue(dialog.saved());
 
-        Map<String, String> stored = preferences.load(OBSTACLE);
+        Map<String, String> stored = preferences.load(OBSTACLE_MODEL);
         assertEquals("192.168.1.20", stored.get("usarsim.host"));
         assertEquals("7436", stored.get("usarsim.port"));
         assertEquals("500", stored.get("usarsim.interval"));
@@ -304,8 +309,8 @@ class DistanceModelDialogTest {
         assertEquals("0.5", stored.get("obstacle.cacheDistance"));
         assertEquals(n, stored.get("distance.n"));
         assertEquals("-93", stored.get("distance.cutoff"));
-        assertEquals(Map.of(), preferences.load(DISTANCE).entrySet().stream()
-                .filter(e -> !e.getValue().equals(Settings.modelDefaults().get(e.getKey())))
+        assertEquals(Map.of(), preferences.load(DISTANCE_MODEL).entrySet().stream()
+                .filter(e -> !e.getValue().equals(Setting.defaults(DISTANCE_MODEL.settings()).get(e.getKey())))
                 .collect(java.util.stream.Collectors.toMap(Map.Entry::getKey, Map.Entry::getValue)),
                 "the other model's node is untouched");
 
@@ -325,7 +330,7 @@ class DistanceModelDialogTest {
         waitClosed();
         assertFalse(dialog.saved());
         assertEquals(0, root.node(DISTANCE).keys().length);
-        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
+        assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
     }
 
     @Test
@@ -366,8 +371,8 @@ class DistanceModelDialogTest {
         type("usarsim.timeout", "5000");
         click(DistanceModelDialog.OK);
         waitClosed();
-        assertEquals("7000", preferences.load(DISTANCE).get("usarsim.port"));
-        assertEquals("5000", preferences.load(DISTANCE).get("usarsim.timeout"));
+        assertEquals("7000", preferences.load(DISTANCE_MODEL).get("usarsim.port"));
+        assertEquals("5000", preferences.load(DISTANCE_MODEL).get("usarsim.timeout"));
     }
 
     @Test
@@ -384,7 +389,7 @@ class DistanceModelDialogTest {
             type(bad[0], bad[1]);
             click(DistanceModelDialog.OK);
             assertTrue(Gui.onEdt(dialog::isShowing), bad[0] + " = " + bad[1]);
-            assertTrue(label(DistanceModelDialog.MESSAGE).contains(Settings.problem(bad[0], bad[1])), label(DistanceModelDialog.MESSAGE));
+            assertTrue(label(DistanceModelDialog.MESSAGE).contains(Setting.find(OBSTACLE_MODEL.settings(), bad[0]).problem(bad[1])), label(DistanceModelDialog.MESSAGE));
             type(bad[0], before);
         }
         click(DistanceModelDialog.OK);
@@ -393,7 +398,7 @@ class DistanceModelDialogTest {
 
     @Test
     void readOnlyHasEveryFieldDisabledAndOnlyClose() throws Exception {
-        preferences.store(OBSTACLE, Map.of("usarsim.port", "7001"));
+        preferences.store(OBSTACLE_MODEL, Map.of("usarsim.port", "7001"));
         open(new ObstaclePropagationModel(), false);
         List<JTextField> fields = Gui.onEdt(() -> Gui.all(dialog, JTextField.class));
         assertEquals(DISTANCE_KEYS.size() + 3, fields.size());

@@ -14,7 +14,7 @@ import java.util.function.BooleanSupplier;
 import javax.swing.SwingUtilities;
 
 /** Driving real Swing windows from a test: everything on the event thread, waits with a deadline. */
-final class Gui {
+public final class Gui {
 
     private static final long DEADLINE_NS = 5_000_000_000L;
 
@@ -22,7 +22,7 @@ final class Gui {
     }
 
     /** Fails, not skips, without a display: the GUI tests must run (CI runs them under xvfb-run). */
-    static void requireDisplay() {
+    public static void requireDisplay() {
         if (GraphicsEnvironment.isHeadless()) {
             fail("the GUI tests open real windows and need a display; there is none (DISPLAY is "
                     + (System.getenv("DISPLAY") == null ? "unset" : "'" + System.getenv("DISPLAY") + "'")
@@ -38,7 +38,7 @@ final class Gui {
     }
 
     /** Runs on the event thread and returns its result; an exception there fails the test here. */
-    static <T> T onEdt(Callable<T> action) {
+    public static <T> T onEdt(Callable<T> action) {
         if (SwingUtilities.isEventDispatchThread()) {
             throw new IllegalStateException("call from the test's thread");
         }
@@ -68,7 +68,7 @@ final class Gui {
     }
 
     /** Runs on the event thread and waits for it. */
-    static void run(Runnable action) {
+    public static void run(Runnable action) {
         onEdt(() -> {
             action.run();
             return null;
@@ -76,7 +76,7 @@ final class Gui {
     }
 
     /** Polls the condition on the event thread until it holds; fails after five seconds. */
-    static void until(String what, BooleanSupplier condition) {
+    public static void until(String what, BooleanSupplier condition) {
         long deadline = System.nanoTime() + DEADLINE_NS;
         while (!onEdt(condition::getAsBoolean)) {
             if (System.nanoTime() > deadline) {
@@ -92,7 +92,7 @@ final class Gui {
     }
 
     /** The one component of that type and name in the window; fails when there is none. Event thread. */
-    static <T extends Component> T find(Container root, Class<T> type, String name) {
+    public static <T extends Component> T find(Container root, Class<T> type, String name) {
         List<T> found = new ArrayList<>();
         collect(root, type, name, found);
         if (found.size() != 1) {
@@ -102,7 +102,7 @@ final class Gui {
     }
 
     /** Every component of that type in the window, in order. Event thread. */
-    static <T extends Component> List<T> all(Container root, Class<T> type) {
+    public static <T extends Component> List<T> all(Container root, Class<T> type) {
         List<T> found = new ArrayList<>();
         collect(root, type, null, found);
         return found;
@@ -120,7 +120,7 @@ final class Gui {
     }
 
     /** The showing windows with that title. Event thread. */
-    static List<Window> showing(String title) {
+    public static List<Window> showing(String title) {
         List<Window> windows = new ArrayList<>();
         for (Window window : Window.getWindows()) {
             if (window.isShowing() && window instanceof java.awt.Dialog dialog && title.equals(dialog.getTitle())) {
@@ -128,5 +128,33 @@ final class Gui {
             }
         }
         return windows;
+    }
+
+    /** What a table shows, row by row as sorted and filtered, each cell as its text. Event thread. */
+    public static List<List<String>> cells(javax.swing.JTable table) {
+        List<List<String>> rows = new ArrayList<>();
+        for (int row = 0; row < table.getRowCount(); row++) {
+            List<String> cells = new ArrayList<>();
+            for (int column = 0; column < table.getColumnCount(); column++) {
+                cells.add(String.valueOf(table.getValueAt(row, column)));
+            }
+            rows.add(cells);
+        }
+        return rows;
+    }
+
+    /**
+     * Waits for the one showing message dialog with that title, closes it with its button and
+     * returns its message.
+     */
+    public static String closeMessage(String title) {
+        until("a message dialog '" + title + "' shows", () -> showing(title).size() == 1);
+        return onEdt(() -> {
+            Window dialog = showing(title).get(0);
+            javax.swing.JOptionPane pane = all(dialog, javax.swing.JOptionPane.class).get(0);
+            String message = String.valueOf(pane.getMessage());
+            all(pane, javax.swing.JButton.class).get(0).doClick();
+            return message;
+        });
     }
 }

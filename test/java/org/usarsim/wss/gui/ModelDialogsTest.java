@@ -2,15 +2,19 @@ package org.usarsim.wss.gui;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.junit.jupiter.api.Assertions.fail;
 
+import java.awt.Color;
 import java.awt.Window;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -18,21 +22,24 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.prefs.Preferences;
 import javax.swing.JButton;
+import javax.swing.JCheckBox;
+import javax.swing.JLabel;
 import javax.swing.JTextField;
 import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.usarsim.wss.app.Settings;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.PluginJars;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.RobotState;
-import org.usarsim.wss.model.distance.SimulatorModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
@@ -47,17 +54,28 @@ class ModelDialogsTest {
     private static final class Recorder implements PropagationModel {
         private final String name;
         private final boolean configurable;
+        private final List<Setting> settings;
         volatile ModelSettings configured;
         volatile Boolean dialogEditable;
 
         Recorder(String name, boolean configurable) {
+            this(name, configurable, List.of());
+        }
+
+        Recorder(String name, boolean configurable, List<Setting> settings) {
             this.name = name;
             this.configurable = configurable;
+            this.settings = settings;
         }
 
         @Override
         public String name() {
             return name;
+        }
+
+        @Override
+        public List<Setting> settings() {
+            return settings;
         }
 
         @Override
@@ -107,24 +125,6 @@ class ModelDialogsTest {
         }
     }
 
-    /** A plugin's simulator model: a {@link SimulatorModel} that is neither of the built-in ones. */
-    private static final class MySimulatorModel extends SimulatorModel {
-        @Override
-        protected double strength(RobotState a, RobotState b) {
-            return 0;
-        }
-
-        @Override
-        protected boolean allowsUnknownRobots() {
-            return true;
-        }
-
-        @Override
-        protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
-            return false;
-        }
-    }
-
     /** The server, for a model's start(); it is never reached here. */
     private static final class NoRobots implements RobotLinkModel {
         @Override
@@ -150,9 +150,18 @@ class ModelDialogsTest {
     private Preferences root;
     private ModelPreferences preferences;
 
+    @TempDir
+    static Path plugins;
+
+    /** The plugin models, compiled and jarred at test time as an author would: Tuned declares two settings. */
+    private static ModelCatalog catalog;
+
     @BeforeAll
-    static void display() {
+    static void display() throws IOException {
         Gui.requireDisplay();
+        Path classes = PluginJars.compile(plugins);
+        PluginJars.tunedJar(plugins.resolve("jars").resolve("tuned.jar"), classes);
+        catalog = ModelCatalog.load(ModelDialogsTest.class.getClassLoader(), List.of(plugins.resolve("jars")));
     }
 
     @BeforeEach
@@ -254,7 +263,7 @@ class ModelDialogsTest {
         click(dialog, DistanceModelDialog.OK);
 
         assertTrue(shown.get(5, TimeUnit.SECONDS));
-        assertEquals(String.valueOf(port), preferences.load("DistanceOnlyPropagationModel").get("usarsim.port"));
+        assertEquals(String.valueOf(port), preferences.load(model).get("usarsim.port"));
         assertStartFailsNaming(model, port);
     }
 
@@ -298,7 +307,7 @@ class ModelDialogsTest {
         click(dialog, DistanceModelDialog.OK);
 
         assertTrue(shown.get(5, TimeUnit.SECONDS));
-        assertEquals(String.valueOf(port), preferences.load("MySimulatorModel").get("usarsim.port"));
+        assertEquals(String.valueOf(port), preferences.load(model).get("usarsim.port"));
         assertEquals(0, root.node("DistanceOnlyPropagationModel").keys().length);
         assertStartFailsNaming(model, port);
     }
@@ -317,19 +326,128 @@ class ModelDialogsTest {
         assertTrue(Gui.onEdt(() -> Gui.showing("DistanceOnlyPropagationModel Configuration").isEmpty()));
     }
 
+    // ---- the dialog built from a model's declared settings ----
+
+    private static PropagationModel tuned() {
+        PropagationModel model = catalog.find("Tuned");
+        assertNotNull(model, "the plugin loaded: " + catalog.names());
+        return model;
+    }
+
+    private static String message(Window dialog) {
+        return Gui.onEdt(() -> Gui.find(dialog, JLabel.class, DialogParts.MESSAGE).getText());
+    }
+
+    private static Color background(Window dialog, String field) {
+        return Gui.onEdt(() -> Gui.find(dialog, JTextField.class, field).getBackground());
+    }
+
+    @Test
+    void aPluginsDeclaredSettingsGetAGeneratedDialogThatChecksStoresAndConfigures() throws Exception {
+        PropagationModel model = tuned();
+        assertTrue(ModelDialogs.isConfigurable(model));
+        CompletableFuture<Boolean> shown = show(model, true);
+        Window dialog = dialog("Tuned Configuration");
+        assertFalse(shown.isDone(), "modal: show() waits for the dialog");
+        // a labelled field per setting, its default in it, the unit beside it, the help as tooltip
+        assertEquals("3", Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.level").getText()));
+        assertEquals("2.5", Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.gain").getText()));
+        assertEquals("Taken off the level's strength", Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.gain").getToolTipText()));
+        List<String> labels = Gui.onEdt(() -> Gui.all(dialog, JLabel.class).stream().map(JLabel::getText).toList());
+        assertTrue(labels.containsAll(List.of("Level", "Gain", "dB")), labels.toString());
+
+        // a bad value is refused with the rule's words, marked red, and nothing is stored or configured
+        type(dialog, "tuned.level", "11");
+        assertEquals(DialogParts.INVALID, background(dialog, "tuned.level"), "marked as it is typed");
+        click(dialog, DialogParts.OK);
+        assertTrue(Gui.onEdt(dialog::isShowing));
+        assertTrue(message(dialog).contains("Level: '11' is not a whole number from 1 to 10"), message(dialog));
+        type(dialog, "tuned.gain", "-1");
+        click(dialog, DialogParts.OK);
+        assertTrue(message(dialog).contains("Level: '11' is not a whole number from 1 to 10 (and 1 more marked)"), message(dialog));
+        type(dialog, "tuned.level", "5");
+        click(dialog, DialogParts.OK);
+        assertTrue(message(dialog).contains("Gain (dB): '-1' is not a number of dB, 0 or more"), message(dialog));
+        assertEquals(0, root.node("Tuned").keys().length, "nothing stored");
+        assertEquals(-32.5, model.getSignalStrengthForPair("A", "B"), 0, "not configured");
+
+        // good values: stored under the model's name and handed to configure
+        type(dialog, "tuned.gain", " 0.25 ");
+        assertNotEquals(DialogParts.INVALID, background(dialog, "tuned.gain"));
+        click(dialog, DialogParts.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(Map.of("tuned.level", "5", "tuned.gain", "0.25"), preferences.load(model));
+        assertEquals("5", root.node("Tuned").get("tuned.level", null));
+        assertEquals(-50.25, model.getSignalStrengthForPair("A", "B"), 0, "configured: -10 * 5 - 0.25");
+    }
+
+    @Test
+    void theGeneratedDialogIsReadOnlyWhileTheServerRuns() throws Exception {
+        PropagationModel model = tuned();
+        preferences.store(model, Map.of("tuned.level", "7"));
+        CompletableFuture<Boolean> shown = show(model, false);
+        Window dialog = dialog("Tuned Configuration");
+        List<String> buttons = Gui.onEdt(() -> Gui.all(dialog, JButton.class).stream().map(JButton::getName).toList());
+        assertEquals(List.of(DialogParts.CLOSE), buttons);
+        assertEquals("7", Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.level").getText()), "the stored value");
+        assertFalse(Gui.onEdt(() -> Gui.all(dialog, JTextField.class).stream().anyMatch(JTextField::isEnabled)));
+        click(dialog, DialogParts.CLOSE);
+        assertFalse(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(List.of("tuned.level"), List.of(root.node("Tuned").keys()));
+    }
+
+    @Test
+    void aBooleanSettingIsACheckBoxAndAModelsOwnDialogWinsOverTheGeneratedOne() throws Exception {
+        List<Setting> settings = List.of(Setting.bool("my.loud", "Loud", false).help("Shout"),
+                Setting.text("my.greeting", "Greeting", "hello"));
+        Recorder model = new Recorder("Checked", false, settings);
+        assertTrue(ModelDialogs.isConfigurable(model), "declared settings make a model configurable");
+        CompletableFuture<Boolean> shown = show(model, true);
+        Window dialog = dialog("Checked Configuration");
+        JCheckBox box = Gui.onEdt(() -> Gui.find(dialog, JCheckBox.class, "my.loud"));
+        assertFalse(Gui.onEdt(box::isSelected));
+        Gui.run(box::doClick);
+        type(dialog, "my.greeting", "   ");
+        click(dialog, DialogParts.OK);
+        assertTrue(message(dialog).contains("Greeting: '' is not some text"), message(dialog));
+        type(dialog, "my.greeting", "hi");
+        click(dialog, DialogParts.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(Map.of("my.loud", "true", "my.greeting", "hi"), model.configured.asMap());
+
+        Recorder own = new Recorder("Own", true, settings);
+        assertFalse(show(own, true).get(5, TimeUnit.SECONDS));
+        assertEquals(Boolean.TRUE, own.dialogEditable, "its own dialog");
+        assertTrue(Gui.onEdt(() -> Gui.showing("Own Configuration").isEmpty()));
+    }
+
+    @Test
+    void aSimulatorModelWithADeclarationOfItsOwnGetsTheGeneratedDialog() throws Exception {
+        MySimulatorModel model = new MySimulatorModel("Reshaped", List.of(Setting.host("usarsim.host", "Host", "127.0.0.1"),
+                Setting.integer("reshaped.rate", "Rate", 2).from(1).to(5).unit("Hz")));
+        CompletableFuture<Boolean> shown = show(model, true);
+        Window dialog = dialog("Reshaped Configuration");
+        assertFalse(hasField(dialog, DistanceModelDialog.CUTOFF_DISTANCE), "not the DistanceOnly dialog: it lacks distance.*");
+        type(dialog, "reshaped.rate", "4");
+        click(dialog, DialogParts.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(Map.of("usarsim.host", "127.0.0.1", "reshaped.rate", "4"), preferences.load(model));
+        assertFalse(ModelDialogs.isConfigurable(new MySimulatorModel("Bare", List.of())), "no settings, no dialog of its own");
+    }
+
     // ---- before every start ----
 
     @Test
     void configureFromPreferencesHandsTheModelItsStoredValues() throws Exception {
         int[] ports = closedPorts(2);
-        preferences.store("ObstaclePropagationModel", Map.of("usarsim.port", String.valueOf(ports[0])));
-        preferences.store("DistanceOnlyPropagationModel", Map.of("usarsim.port", String.valueOf(ports[1])));
+        preferences.store(new ObstaclePropagationModel(), Map.of("usarsim.port", String.valueOf(ports[0])));
+        preferences.store(new DistanceOnlyPropagationModel(), Map.of("usarsim.port", String.valueOf(ports[1])));
         ObstaclePropagationModel model = new ObstaclePropagationModel();
         ModelDialogs.configureFromPreferences(model, preferences);
         assertStartFailsNaming(model, ports[0]);
 
         Recorder nothingStored = new Recorder("MyModel", false);
         ModelDialogs.configureFromPreferences(nothingStored, preferences);
-        assertEquals(Settings.modelDefaults(), nothingStored.configured.asMap(), "the defaults");
+        assertEquals(Map.of(), nothingStored.configured.asMap(), "it declares no setting");
     }
 }

@@ -15,12 +15,17 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
-import org.usarsim.wss.app.Settings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 class ModelPreferencesTest {
 
     private static final String DISTANCE = "DistanceOnlyPropagationModel";
     private static final String OBSTACLE = "ObstaclePropagationModel";
+    private static final PropagationModel DISTANCE_MODEL = new DistanceOnlyPropagationModel();
+    private static final PropagationModel OBSTACLE_MODEL = new ObstaclePropagationModel();
 
     /** A throw-away node, never the user's real preferences; removed after each test. */
     private Preferences root;
@@ -45,8 +50,9 @@ class ModelPreferencesTest {
 
     @Test
     void nothingStoredGivesTheDefaults() {
-        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
-        assertEquals(Settings.modelDefaults(), preferences.settings(OBSTACLE).asMap());
+        assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
+        assertEquals(Setting.defaults(OBSTACLE_MODEL.settings()), preferences.settings(OBSTACLE_MODEL).asMap());
+        assertEquals(12, preferences.load(OBSTACLE_MODEL).size(), "usarsim.*, distance.* and obstacle.*");
         assertTrue(logged.isEmpty(), "no warning for missing values: " + logged);
     }
 
@@ -58,20 +64,20 @@ class ModelPreferencesTest {
         values.put("usarsim.interval", "250");
         values.put("distance.n", "3.0007");
         values.put("distance.holdTime", "1.5");
-        preferences.store(DISTANCE, values);
+        preferences.store(DISTANCE_MODEL, values);
 
         // a new instance over the same node, as at the next start
-        Map<String, String> loaded = new ModelPreferences(root).load(DISTANCE);
-        Map<String, String> expected = new LinkedHashMap<>(Settings.modelDefaults());
+        Map<String, String> loaded = new ModelPreferences(root).load(DISTANCE_MODEL);
+        Map<String, String> expected = new LinkedHashMap<>(Setting.defaults(DISTANCE_MODEL.settings()));
         expected.putAll(values);
         assertEquals(expected, loaded);
-        assertEquals(3.0007, preferences.settings(DISTANCE).getDouble("distance.n", -1), 0);
-        assertEquals(250, preferences.settings(DISTANCE).getInt("usarsim.interval", -1));
+        assertEquals(3.0007, preferences.settings(DISTANCE_MODEL).getDouble("distance.n", -1), 0);
+        assertEquals(250, preferences.settings(DISTANCE_MODEL).getInt("usarsim.interval", -1));
     }
 
     @Test
     void storedInTheModelsOwnNodeAndWrittenOut() throws Exception {
-        preferences.store(DISTANCE, Map.of("usarsim.port", "7001"));
+        preferences.store(DISTANCE_MODEL, Map.of("usarsim.port", "7001"));
         Preferences node = root.node(DISTANCE);
         assertEquals(root.absolutePath() + "/" + DISTANCE, node.absolutePath());
         assertArrayEquals(new String[] {"usarsim.port"}, node.keys());
@@ -80,18 +86,18 @@ class ModelPreferencesTest {
 
     @Test
     void eachModelHasItsOwnNode() throws Exception {
-        preferences.store(DISTANCE, Map.of("distance.cutoff", "-80"));
-        preferences.store(OBSTACLE, Map.of("distance.cutoff", "-70", "obstacle.attenuation", "3"));
-        assertEquals("-80", preferences.load(DISTANCE).get("distance.cutoff"));
-        assertEquals("6.325", preferences.load(DISTANCE).get("obstacle.attenuation"));
-        assertEquals("-70", preferences.load(OBSTACLE).get("distance.cutoff"));
-        assertEquals("3", preferences.load(OBSTACLE).get("obstacle.attenuation"));
-        assertEquals(Settings.modelDefaults(), preferences.load("SomeOtherModel"));
+        preferences.store(DISTANCE_MODEL, Map.of("distance.cutoff", "-80"));
+        preferences.store(OBSTACLE_MODEL, Map.of("distance.cutoff", "-70", "obstacle.attenuation", "3"));
+        assertEquals("-80", preferences.load(DISTANCE_MODEL).get("distance.cutoff"));
+        assertEquals(null, preferences.load(DISTANCE_MODEL).get("obstacle.attenuation"), "not a setting of DistanceOnly");
+        assertEquals("-70", preferences.load(OBSTACLE_MODEL).get("distance.cutoff"));
+        assertEquals("3", preferences.load(OBSTACLE_MODEL).get("obstacle.attenuation"));
+        assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(new MySimulatorModel("SomeOtherModel")), "another simulator model: the same settings, its own node");
     }
 
     @Test
     void valuesAreStoredStripped() throws Exception {
-        preferences.store(DISTANCE, Map.of("usarsim.host", "  sim.local "));
+        preferences.store(DISTANCE_MODEL, Map.of("usarsim.host", "  sim.local "));
         assertEquals("sim.local", root.node(DISTANCE).get("usarsim.host", null));
     }
 
@@ -101,7 +107,7 @@ class ModelPreferencesTest {
         node.put("distance.n", "zero");
         node.put("usarsim.port", "3000");
         node.put("usarsim.interval", "5");
-        Map<String, String> loaded = preferences.load(DISTANCE);
+        Map<String, String> loaded = preferences.load(DISTANCE_MODEL);
         assertEquals("1", loaded.get("distance.n"));
         assertEquals("3000", loaded.get("usarsim.port"), "a good value next to bad ones is kept");
         assertEquals("1000", loaded.get("usarsim.interval"));
@@ -116,7 +122,7 @@ class ModelPreferencesTest {
     @Test
     void unknownStoredKeysAreIgnored() {
         root.node(DISTANCE).put("distance.colour", "blue");
-        assertEquals(Settings.modelDefaults(), preferences.load(DISTANCE));
+        assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
     }
 
     @Test
@@ -124,15 +130,15 @@ class ModelPreferencesTest {
         Map<String, String> values = new LinkedHashMap<>();
         values.put("usarsim.port", "7001");
         values.put("distance.d0", "0");
-        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, values));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE_MODEL, values));
         assertTrue(e.getMessage().contains("distance.d0") && e.getMessage().contains("above 0"), e.getMessage());
         assertEquals(0, root.node(DISTANCE).keys().length);
     }
 
     @Test
     void storeRefusesAKeyThatIsNotAModelSetting() throws Exception {
-        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, Map.of("wss.port", "1")));
-        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE, Map.of("distance.colour", "1")));
+        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE_MODEL, Map.of("wss.port", "1")));
+        assertThrows(IllegalArgumentException.class, () -> preferences.store(DISTANCE_MODEL, Map.of("distance.colour", "1")));
         assertEquals(0, root.node(DISTANCE).keys().length);
     }
 }

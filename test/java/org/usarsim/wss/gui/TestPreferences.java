@@ -9,17 +9,17 @@ import java.util.prefs.Preferences;
  * user's {@code org/usarsim/wss/models}. Under Maven the user root itself is in
  * target/prefs (see the pom's surefire settings).
  */
-final class TestPreferences {
+public final class TestPreferences {
 
     private TestPreferences() {
     }
 
-    static Preferences create() {
+    public static Preferences create() {
         return Preferences.userRoot().node("wss-test-" + UUID.randomUUID());
     }
 
     /** Removes the node and what is under it, from memory and from disk. */
-    static void remove(Preferences root) throws BackingStoreException {
+    public static void remove(Preferences root) throws BackingStoreException {
         // Written out first: the file-system store leaves the directory of a node it never wrote.
         root.flush();
         root.removeNode();

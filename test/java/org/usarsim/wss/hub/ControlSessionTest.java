@@ -87,7 +87,7 @@ class ControlSessionTest {
             assertEquals("SS {Robot R1} {Strength INF} {Error SS.To.Self}", r1.ask("GETSS {Robot R1}"));
             assertEquals("SS {Robot X} {Strength NaN} {Error Robot.Does.Not.Exist}", r1.ask("GETSS {Robot X}"));
             assertEquals("SS {Robot XR} {Strength NaN} {Error Robot.Does.Not.Exist}", r1.ask("GETSS {Robot XR}"), "exact names");
-            assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("GETSS"));
+            assertEquals("ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}", r1.ask("GETSS"));
             assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("GETSS {Robot }"));
         }
     }
@@ -105,7 +105,7 @@ class ControlSessionTest {
             assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("DNS {Robot R2} {Port six}"));
             assertEquals("ERROR {Reason Robot.Name.Must.Not.Be.Empty}", r1.ask("DNS {Port 6000}"));
             assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS {Port x}"));
-            assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS"));
+            assertEquals("ERROR {Reason Port.Must.Be.Integer}", r1.ask("REVERSEDNS {Robot R2}"));
             assertEquals("REVERSEDNSREPLY {Port 1234} {Error UnknownOrIllegalPort}", r1.ask("REVERSEDNS {Port 1234}"));
             assertEquals("ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}", r1.ask("FLY {To Moon}"));
         }
@@ -184,6 +184,24 @@ class ControlSessionTest {
             String justFits = "GETSS {Robot " + "y".repeat(65536 - "GETSS {Robot }".length()) + "}";
             assertEquals(65536, justFits.length());
             assertTrue(r1.ask(justFits).endsWith("{Strength NaN} {Error Robot.Does.Not.Exist}"));
+            r1.send("z".repeat(65537));
+            assertEquals("ERROR {Reason Line.Too.Long}", r1.readLine(), "at the 65,537th byte, no line end needed");
+            r1.send("\n");
+            assertEquals("SS {Robot R1} {Strength INF} {Error SS.To.Self}", r1.ask("GETSS {Robot R1}"));
+        }
+    }
+
+    @Test
+    void aLineOfControlWhitespaceOnlyGetsOneReplyAndASpacesOnlyLineNone() throws Exception {
+        try (TestRobot r1 = server.robot()) {
+            r1.send("   \r\n\n\t\r\n");
+            assertEquals("ERROR {Reason Must.Use.INIT.Method.First}", r1.readLine());
+            r1.init("R1", 5000);
+            r1.send("\u000B\f\n\u001C\u001D\u001E\u001F\r\n \r\r\n");
+            for (int i = 0; i < 3; i++) {
+                assertEquals("ERROR {Reason Method.Unknown.Or.Can.INIT.only.once}", r1.readLine());
+            }
+            assertEquals("SS {Robot R1} {Strength INF} {Error SS.To.Self}", r1.ask("GETSS {Robot R1}"), "nothing else came");
         }
     }
 

@@ -2,6 +2,7 @@ package org.usarsim.wss.hub;
 
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.WssEventListener;
@@ -11,13 +12,14 @@ import org.usarsim.wss.model.WssEventListener;
  * strength (by default every pair may connect, at 0 dBm), and drives break, resume and kick
  * through {@link #links()} itself. No threads, no simulator.
  */
-final class ScriptedModel implements PropagationModel {
+public final class ScriptedModel implements PropagationModel {
 
     private final Map<String, Boolean> allowed = new ConcurrentHashMap<>();
     private final Map<String, Double> strengths = new ConcurrentHashMap<>();
     private volatile RobotLinkModel links;
     private volatile WssEventListener events;
     private volatile boolean active;
+    private volatile String startFailure;
 
     private static String key(String from, String to) {
         return from + "\u0000" + to;
@@ -39,7 +41,7 @@ final class ScriptedModel implements PropagationModel {
     }
 
     /** The hub, as the server gave it to the model. */
-    RobotLinkModel links() {
+    public RobotLinkModel links() {
         return links;
     }
 
@@ -58,8 +60,16 @@ final class ScriptedModel implements PropagationModel {
         this.events = listener;
     }
 
+    /** From now on start() fails with this reason (a simulator that cannot be reached, say); null: it starts. */
+    public void failStarts(String reason) {
+        startFailure = reason;
+    }
+
     @Override
-    public void start() {
+    public void start() throws ModelStartException {
+        if (startFailure != null) {
+            throw new ModelStartException(startFailure);
+        }
         active = true;
     }
 

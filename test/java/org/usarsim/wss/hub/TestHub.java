@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
+import java.net.UnknownHostException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
@@ -14,8 +15,19 @@ public final class TestHub implements AutoCloseable {
     }
 
     public TestHub(PropagationModel model, boolean matchSourceAddress, int chunkSize) throws Exception {
-        hub = new Hub(new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress), model);
+        this(model, config(matchSourceAddress, chunkSize, 600, 1000, 30));
+    }
+
+    public TestHub(PropagationModel model, HubConfig config) throws Exception {
+        hub = new Hub(config, model);
         hub.start();
+    }
+
+    /** The test configuration: 127.0.0.1, an OS-chosen control port, 4 MiB link buffers. */
+    public static HubConfig config(boolean matchSourceAddress, int chunkSize, int portMemorySeconds, int maxPortsPerRobot,
+            int deadPeerSeconds) throws UnknownHostException {
+        return new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress,
+                portMemorySeconds, maxPortsPerRobot, deadPeerSeconds);
     }
 
     public int port() {

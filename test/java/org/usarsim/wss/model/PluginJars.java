@@ -36,6 +36,13 @@ public final class PluginJars {
     /** Answers -42.5 dBm for every pair; its name() is "FixedStrength". */
     public static final String FIXED = PACKAGE + ".FixedStrengthModel";
 
+    /**
+     * Declares two settings, tuned.level (a whole number from 1 to 10, default 3) and tuned.gain (a
+     * number of dB, 0 or more, default 2.5); answers -10 * level - gain dBm for every pair, and logs
+     * what it was configured with; its name() is "Tuned".
+     */
+    public static final String TUNED = PACKAGE + ".TunedModel";
+
     /** The test plugins by simple class name. Each one but Base and Helper is a model, good or bad. */
     private static final Map<String, String> SOURCES = new LinkedHashMap<>();
 
@@ -54,6 +61,42 @@ public final class PluginJars {
         source("FixedStrengthModel", """
                 public final class FixedStrengthModel extends Base {
                     public String name() { return "FixedStrength"; }
+                }""");
+        source("TunedModel", """
+                public final class TunedModel extends Base {
+                    private volatile int level = 3;
+                    private volatile double gain = 2.5;
+                    public String name() { return "Tuned"; }
+                    public java.util.List<Setting> settings() {
+                        return java.util.List.of(
+                                Setting.integer("tuned.level", "Level", 3).from(1).to(10)
+                                        .help("How many steps of 10 dB the strength is below 0 dBm"),
+                                Setting.number("tuned.gain", "Gain", "2.5").from(0).unit("dB")
+                                        .help("Taken off the level's strength"));
+                    }
+                    public void configure(ModelSettings settings) {
+                        level = settings.getInt("tuned.level", level);
+                        gain = settings.getDouble("tuned.gain", gain);
+                        java.util.logging.Logger.getLogger(TunedModel.class.getName())
+                                .info("Tuned configured with tuned.level " + level + ", tuned.gain " + gain);
+                    }
+                    public double getSignalStrengthForPair(String from, String to) { return -10.0 * level - gain; }
+                }""");
+        source("BadDefault", """
+                public final class BadDefault extends Base {
+                    public java.util.List<Setting> settings() {
+                        return java.util.List.of(Setting.integer("bad.level", "Level", 0).from(1).to(10));
+                    }
+                }""");
+        source("SettingsThrow", """
+                public final class SettingsThrow extends Base {
+                    public java.util.List<Setting> settings() { throw new IllegalStateException("settings() fails"); }
+                }""");
+        source("ServerKey", """
+                public final class ServerKey extends Base {
+                    public java.util.List<Setting> settings() {
+                        return java.util.List.of(Setting.integer("wss.port", "Port", 1));
+                    }
                 }""");
         source("OtherModel", """
                 public final class OtherModel extends Base {
@@ -166,6 +209,11 @@ public final class PluginJars {
     /** A plugin jar with the one working model, FixedStrengthModel. */
     public static Path fixedStrengthJar(Path jar, Path classes) throws IOException {
         return jar(jar, classes, List.of("Base", "FixedStrengthModel"), List.of("FixedStrengthModel"));
+    }
+
+    /** A plugin jar with the model that declares two settings, TunedModel. */
+    public static Path tunedJar(Path jar, Path classes) throws IOException {
+        return jar(jar, classes, List.of("Base", "TunedModel"), List.of("TunedModel"));
     }
 
     /** The server as a runnable jar, made from its classes: what {@code mvn package} makes. */

@@ -56,8 +56,9 @@ class ArgumentsTest {
     }
 
     @Test
-    void robotNameFirstOfDuplicates() throws Exception {
-        assertEquals("A", Arguments.robot(parse("GETSS {Robot A} {Robot B}")));
+    void robotNameLastOfDuplicates() throws Exception {
+        assertEquals("B", Arguments.robot(parse("GETSS {Robot A} {Robot B}")));
+        assertEquals("Q3", Arguments.robot(parse("INIT {Robot Q2} {Robot Q3} {Port 5000}")));
     }
 
     // --- portList() ----------------------------------------------------------------------------
@@ -90,6 +91,11 @@ class ArgumentsTest {
     }
 
     @Test
+    void portListLastOfDuplicates() throws Exception {
+        assertEquals(List.of(5001), Arguments.portList(parse("INIT {Robot R1} {Port 5000} {Port 5001}")));
+    }
+
+    @Test
     void portListMissingOrEmptyIsEmpty() throws Exception {
         assertEquals(List.of(), Arguments.portList(parse("INIT {Robot R1}")));
         assertEquals(List.of(), Arguments.portList(parse("INIT {Robot R1} {Port}")));
@@ -98,21 +104,22 @@ class ArgumentsTest {
 
     @ParameterizedTest
     @ValueSource(strings = {"abc", "5000a", "50.00", "5000,abc", "5000,,5001", "5000,", ",5000", "5000 5001",
-            "5000;5001", "0x10", "99999999999", "123456789012"})
+            "5000;5001", "0x10", "99999999999", "123456789012", "2147483648", "3000000000", "-2147483649"})
     void portListNotIntegers(String value) {
         assertEquals(Replies.PORTS_MUST_BE_INTEGER, reason(() -> Arguments.portList(withPort(value))));
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"0", "-1", "65536", "70000", "5000,0", "5000,65536", "2147483647", "-2147483648"})
-    void portListOutOfRange(String value) {
-        assertEquals(Replies.PORT_OUT_OF_RANGE, reason(() -> Arguments.portList(withPort(value))));
+    @CsvSource(delimiter = ';', value = {"0;0", "-1;-1", "65536;65536", "70000;70000", "2147483647;2147483647",
+            "-2147483648;-2147483648", "0000000000005000;5000", "+5000;5000"})
+    void portListAcceptsAnyIntegerAsTheOriginal(String value, int expected) throws Exception {
+        assertEquals(List.of(expected), Arguments.portList(withPort(value)));
     }
 
     @Test
-    void portListOutOfRangeReply() {
-        ProtocolException e = assertThrows(ProtocolException.class, () -> Arguments.portList(withPort("65536")));
-        assertEquals("ERROR {Reason Port.Must.Be.Between.1.And.65535}", e.reply());
+    void portListWithAnOutOfRangeItemKeepsEveryItem() throws Exception {
+        assertEquals(List.of(5000, 0), Arguments.portList(withPort("5000,0")));
+        assertEquals(List.of(5000, 65536, -1), Arguments.portList(withPort("5000, 65536,-1")));
     }
 
     // --- targetPort() --------------------------------------------------------------------------
@@ -128,10 +135,15 @@ class ArgumentsTest {
     }
 
     @Test
-    void targetPortEmptyValueMeansTheFirstPort() throws ProtocolException {
-        // As in INIT, where an empty field is an empty list: DNS {Port} with no value is no port.
-        assertEquals(0, Arguments.targetPort(parse("DNS {Robot R2} {Port}")));
-        assertEquals(0, Arguments.targetPort(parse("DNS {Robot R2} {Port   }")));
+    void targetPortEmptyValueIsNotAnInteger() {
+        // As the original: an empty value fails its integer conversion.
+        assertEquals(Replies.PORT_MUST_BE_INTEGER, reason(() -> Arguments.targetPort(parse("DNS {Robot R2} {Port}"))));
+        assertEquals(Replies.PORT_MUST_BE_INTEGER, reason(() -> Arguments.targetPort(parse("DNS {Robot R2} {Port   }"))));
+    }
+
+    @Test
+    void targetPortLastOfDuplicates() throws Exception {
+        assertEquals(5001, Arguments.targetPort(parse("DNS {Robot A} {Port 5000} {Port 5001}")));
     }
 
     @Test
@@ -148,15 +160,15 @@ class ArgumentsTest {
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"abc", "5000a", "5000,5001", "50.0", "99999999999"})
+    @ValueSource(strings = {"abc", "5000a", "5000,5001", "50.0", "99999999999", "2147483648"})
     void targetPortNotInteger(String value) {
         assertEquals(Replies.PORT_MUST_BE_INTEGER, reason(() -> Arguments.targetPort(withPort(value))));
     }
 
     @ParameterizedTest
-    @ValueSource(strings = {"-1", "65536", "100000"})
-    void targetPortOutOfRange(String value) {
-        assertEquals(Replies.PORT_OUT_OF_RANGE, reason(() -> Arguments.targetPort(withPort(value))));
+    @CsvSource({"-1,-1", "65536,65536", "100000,100000"})
+    void targetPortOutOfRangeIsAnIntegerForTheHubToRefuse(String value, int expected) throws Exception {
+        assertEquals(expected, Arguments.targetPort(withPort(value)));
     }
 
     // --- askedPort() ---------------------------------------------------------------------------
@@ -197,6 +209,8 @@ class ArgumentsTest {
         assertEquals(Integer.MIN_VALUE, Arguments.integer("-2147483648"));
         assertEquals(null, Arguments.integer(""));
         assertEquals(null, Arguments.integer("2147483648"));
+        assertEquals(null, Arguments.integer("9999999999"));
+        assertEquals(7, Arguments.integer("000000000000007"), "leading zeros, any number of them");
         assertEquals(null, Arguments.integer("1e3"));
         assertEquals(null, Arguments.integer(" 5"));
     }

@@ -1,8 +1,10 @@
 package org.usarsim.wss.protocol;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -123,9 +125,9 @@ class CommandParserTest {
     }
 
     @Test
-    void firstValueWinsOnDuplicateKeys() throws Exception {
+    void lastValueCountsOnDuplicateKeys() throws Exception {
         Command command = CommandParser.parse("GETSS {Robot First} {Robot Second}");
-        assertEquals("First", command.value("Robot"));
+        assertEquals("Second", command.value("Robot"), "as in the original");
         assertEquals(List.of(field("Robot", "First"), field("Robot", "Second")), command.fields());
     }
 
@@ -137,9 +139,24 @@ class CommandParserTest {
     // --- blank lines -----------------------------------------------------------------------------
 
     @ParameterizedTest
-    @ValueSource(strings = {"", " ", "   ", "\t", " \t \r", "\r", "\u000B\f"})
+    @ValueSource(strings = {"", " ", "   "})
     void blankLinesAreIgnored(String line) throws Exception {
         assertNull(CommandParser.parse(line));
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"\t", " \t \r", "\r", "\u000B\f", "\u001C", "\u001D", "\u001E", "\u001F", " \u000B "})
+    void aLineOfOtherWhitespaceOnlyIsAnUnknownCommandWithNoSegment(String line) throws Exception {
+        Command command = CommandParser.parse(line);
+        assertEquals("", command.type());
+        assertTrue(command.hasNoSegment());
+    }
+
+    @Test
+    void aCommandWordAloneHasNoSegment() throws Exception {
+        assertTrue(CommandParser.parse("INIT").hasNoSegment());
+        assertTrue(CommandParser.parse("  GETSS  ").hasNoSegment());
+        assertFalse(CommandParser.parse("GETSS {Robot}").hasNoSegment());
     }
 
     // --- malformed lines -------------------------------------------------------------------------

@@ -238,6 +238,24 @@ class LineSplitterTest {
     }
 
     @Test
+    void aLineOfExactlyOneByteOverTheLimitIsReportedAtOnce() {
+        feed(repeat('a', MAX + 1));
+        assertEquals(List.of(TOO_LONG), sink.events, "no need to wait for the line end");
+        feed("\nA\n");
+        assertEquals(List.of(TOO_LONG, "A"), sink.events);
+    }
+
+    @Test
+    void aCrRightPastTheLimitWaitsForTheNextByte() {
+        feed(concat(repeat('a', MAX), ascii("\r")));
+        assertEquals(List.of(), sink.events, "that CR may be the line end's");
+        feed("x");
+        assertEquals(List.of(TOO_LONG), sink.events);
+        feed("\nA\n");
+        assertEquals(List.of(TOO_LONG, "A"), sink.events);
+    }
+
+    @Test
     void hugeLineInManyPiecesIsReportedOnlyOnce() {
         byte[] chunk = repeat('x', 4096);
         for (int i = 0; i < 300; i++) { // about 1.2 MB

@@ -56,7 +56,7 @@ class RepliesTest {
             Replies.ALREADY_EXISTS, Replies.UNKNOWN_OR_SECOND_INIT, Replies.PORT_MUST_BE_INTEGER,
             Replies.COULD_NOT_ALLOCATE_PORT, Replies.LINE_TOO_LONG, Replies.MALFORMED_NO_COMMAND,
             Replies.MALFORMED_TEXT_OUTSIDE_BRACES, Replies.MALFORMED_UNCLOSED_BRACE,
-            Replies.MALFORMED_NESTED_BRACE, Replies.MALFORMED_EMPTY_SEGMENT, Replies.PORT_OUT_OF_RANGE,
+            Replies.MALFORMED_NESTED_BRACE, Replies.MALFORMED_EMPTY_SEGMENT,
             Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE})
     void everyReasonIsOneTokenWithoutWhitespaceOrBraces(String reason) {
         assertEquals(reason.strip(), reason);

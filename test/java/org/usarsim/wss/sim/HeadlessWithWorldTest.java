@@ -15,7 +15,7 @@ import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.app.ServerProcess;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Sockets;
-import org.usarsim.wss.model.distance.PathLoss;
+import org.usarsim.wss.model.simulator.PathLoss;
 import org.usarsim.wss.protocol.Replies;
 
 /** The real server process, configured by a properties file, with the DistanceOnly model reading our world server. */

@@ -81,8 +81,6 @@ class PositionProtocolTest {
     @ValueSource(strings = {
         "",
         "   ",
-        "getpos",
-        "GetPos",
         "GETPOSX",
         "GETPO",
         "FOO",
@@ -95,7 +93,6 @@ class PositionProtocolTest {
         "GETOBS From Robot1 To Robot2",
         "GETOBS {From Robot1} {To Robot2",
         "GETOBS {From Robot1} junk {To Robot2}",
-        "getobs {From Robot1} {To Robot2}",
         "{Robots 2}",
         "\u0000\u0001\u00ff",
     })
@@ -104,6 +101,19 @@ class PositionProtocolTest {
             throw new AssertionError("the world is not looked at for '" + line + "'");
         };
         assertNull(PositionProtocol.answer(line, unused), line);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"getpos", "GetPos", "gEtPoS {Robot Robot1}"})
+    void getposInAnyCase(String line) {
+        assertEquals(answer("GETPOS"), answer(line), "USARSim matches commands case-insensitively");
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"getobs {From Robot1} {To Robot2}", "GetObs {From Robot1} {To Robot2}",
+            "GETOBS {from Robot1} {TO Robot2}", "gEtObS {FROM Robot1} {to Robot2}"})
+    void getobsInAnyCase(String line) {
+        assertEquals("NUMOBS {From Robot1} {To Robot2} {ObstCount 2.0000}", answer(line));
     }
 
     @Test

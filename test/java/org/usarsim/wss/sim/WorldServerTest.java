@@ -102,12 +102,20 @@ class WorldServerTest {
         Socket client = connect();
         send(client, "FOO\r\n");
         send(client, "\r\n");
-        send(client, "getpos\r\n");
+        send(client, "GETPOSITIONS\r\n");
         send(client, "GETOBS {From Robot1}\r\n");
         send(client, "GETPOS\r\n");
         assertEquals(AT_10, readLine(client), "the first answer is the GETPOS's: the lines before it had none");
         send(client, "GETOBS {From Robot1} {To Robot2}\r\n");
         assertEquals("NUMOBS {From Robot1} {To Robot2} {ObstCount 2.0000}\r\n", readLine(client), "and nothing came in between");
+    }
+
+    @Test
+    void commandsAreMatchedInAnyCaseAsUsarSimDoes() throws IOException {
+        Socket client = connect();
+        send(client, "getpos\r\nGetObs {From Robot1} {To Robot2}\r\n");
+        assertEquals(AT_10, readLine(client));
+        assertEquals("NUMOBS {From Robot1} {To Robot2} {ObstCount 2.0000}\r\n", readLine(client));
     }
 
     @Test

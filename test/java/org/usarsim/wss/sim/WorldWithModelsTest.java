@@ -17,8 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.model.distance.ModelRig;
-import org.usarsim.wss.model.distance.PathLoss;
+import org.usarsim.wss.model.simulator.ModelRig;
+import org.usarsim.wss.model.simulator.PathLoss;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.protocol.Replies;
 

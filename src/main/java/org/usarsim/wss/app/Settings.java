@@ -6,118 +6,210 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
-import java.util.Collections;
+import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Properties;
-import java.util.function.Predicate;
+import java.util.Set;
+import java.util.function.Function;
 import java.util.logging.Level;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PluginFolder;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 
 /**
- * Every property the server takes, its default and what values it accepts: the one place for
- * these rules. Headless mode reads the defaults and one properties file, nothing else, so a run
- * is reproducible. docs/headless.md documents each key.
+ * A headless run's configuration: the server's own {@code wss.*} settings, declared here with the
+ * models' {@link Setting} type, and the settings every model of the catalog declares
+ * ({@code PropagationModel.settings()}). Headless mode reads the defaults and one properties file,
+ * nothing else, so a run is reproducible. A key is accepted when the server or a model of the
+ * catalog declares it, its value when that declaration's rule accepts it; the chosen model
+ * ({@code wss.model}) is handed the values of its own keys. docs/headless.md documents each key.
  */
 public final class Settings {
 
-    /** A property's rule: its default and a check of a value (stripped of surrounding whitespace). */
-    private record Key(String defaultValue, String expected, Predicate<String> check) {
-    }
-
-    private static final Map<String, Key> KEYS = new LinkedHashMap<>();
-
-    static {
-        KEYS.put("wss.port", new Key("50000", "a port number from 0 to 65535 (0: any free port)", v -> isInt(v, 0, 65535)));
-        KEYS.put("wss.bindAddress", new Key("0.0.0.0", "an IP address of this machine (0.0.0.0: all)", Settings::isAddress));
-        KEYS.put("wss.model", new Key("NoopPropagationModel", "the name of a propagation model", v -> !v.isEmpty()));
-        KEYS.put("wss.eventLog", new Key("false", "true or false", Settings::isBoolean));
-        KEYS.put("wss.eventLogDir", new Key(".", "a directory", v -> !v.isEmpty()));
-        KEYS.put("wss.matchSourceAddress", new Key("true", "true or false", Settings::isBoolean));
-        KEYS.put("wss.chunkSize", new Key("65536", "a whole number of bytes from 1 to 1048576", v -> isInt(v, 1, 1024 * 1024)));
-        KEYS.put("wss.socketBuffer", new Key("4194304", "a whole number of bytes from 0 to 268435456 (0: the OS decides)", v -> isInt(v, 0, 256 * 1024 * 1024)));
-        KEYS.put("wss.pluginDir", new Key("", "an existing directory (empty: none)", v -> v.isEmpty() || isDirectory(v)));
-        KEYS.put("wss.logLevel", new Key("INFO", "one of SEVERE, WARNING, INFO, FINE, FINER, FINEST", Settings::isLevel));
-        KEYS.put("usarsim.host", new Key("127.0.0.1", "a host name or IP address", v -> !v.isEmpty() && v.chars().noneMatch(Character::isWhitespace)));
-        KEYS.put("usarsim.port", new Key("7435", "a port number from 1 to 65535", v -> isInt(v, 1, 65535)));
-        KEYS.put("usarsim.interval", new Key("1000", "a whole number of milliseconds from 100 to 60000", v -> isInt(v, 100, 60000)));
-        KEYS.put("usarsim.timeout", new Key("2000", "a whole number of milliseconds from 100 to 60000", v -> isInt(v, 100, 60000)));
-        KEYS.put("distance.cutoff", new Key("-93", "a number (dBm)", v -> isNumber(v, Double.NEGATIVE_INFINITY, false)));
-        KEYS.put("distance.pd0", new Key("-49.67", "a number (dBm)", v -> isNumber(v, Double.NEGATIVE_INFINITY, false)));
-        KEYS.put("distance.n", new Key("1", "a number above 0", v -> isNumber(v, 0, true)));
-        KEYS.put("distance.d0", new Key("2", "a number of metres above 0", v -> isNumber(v, 0, true)));
-        KEYS.put("distance.margin", new Key("0", "a number of dB, 0 or more", v -> isNumber(v, 0, false)));
-        KEYS.put("distance.holdTime", new Key("0", "a number of seconds, 0 or more", v -> isNumber(v, 0, false)));
-        KEYS.put("obstacle.attenuation", new Key("6.325", "a number of dB, 0 or more", v -> isNumber(v, 0, false)));
-        KEYS.put("obstacle.cacheDistance", new Key("1.0", "a number of metres, 0 or more", v -> isNumber(v, 0, false)));
-    }
+    /** The server's own settings. */
+    static final List<Setting> SERVER = List.of(
+            Setting.integer("wss.port", "Control port", 50000).from(0).to(65535).noun("a port number").note("0: any free port")
+                    .help("The control port robots connect to; 0 lets the OS choose one, which the start line names"),
+            Setting.address("wss.bindAddress", "Bind address", "0.0.0.0").note("0.0.0.0: all")
+                    .help("The address the control port and every WSS port listen on"),
+            Setting.text("wss.model", "Model", "NoopPropagationModel").noun("the name of a propagation model")
+                    .help("The propagation model: its name, or its simple or fully qualified class name"),
+            Setting.bool("wss.eventLog", "Event log", false).help("Write the CSV event log, a new file per run"),
+            Setting.text("wss.eventLogDir", "Event log folder", ".").noun("a directory")
+                    .help("Where the event log file goes (created if missing)"),
+            Setting.bool("wss.matchSourceAddress", "Match source address", true)
+                    .help("Accept a connection on a WSS port only from the source robot's IP address"),
+            Setting.integer("wss.chunkSize", "Chunk size", 65536).from(1).to(1024 * 1024).unit("bytes")
+                    .help("The most bytes a link reads, and then writes, at a time in each direction"),
+            Setting.integer("wss.socketBuffer", "Socket buffer", 4194304).from(0).to(256 * 1024 * 1024).unit("bytes")
+                    .note("0: the OS decides").help("The send and receive buffer size of both sockets of every link"),
+            Setting.directory("wss.pluginDir", "Plugin folder", "").orEmpty("none")
+                    .help("A folder of model plugin jars, loaded after those of the plugins/ folder beside wss.jar"),
+            Setting.integer("wss.portMemory", "Port memory", 600).from(-1).to(31_536_000).unit("s")
+                    .note("0: forget at once, -1: never")
+                    .help("How long the WSS ports of a robot that left keep their numbers"),
+            Setting.integer("wss.maxPortsPerRobot", "WSS ports per robot", 1000).from(1).to(1_000_000)
+                    .help("The most WSS ports one robot may hold as source"),
+            Setting.integer("wss.deadPeerSeconds", "Dead peer detection", 30).from(0).to(86400).unit("s")
+                    .note("0: the OS's keepalive")
+                    .help("Within how long keepalive finds a robot whose machine vanished"),
+            Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
+                    .help("How much the log says; FINE adds every control command and its reply"));
 
     private final Map<String, String> values;
+    private final ModelCatalog catalog;
+    private final List<String> ignored;
 
-    private Settings(Map<String, String> values) {
+    private Settings(Map<String, String> values, ModelCatalog catalog, List<String> ignored) {
         this.values = values;
+        this.catalog = catalog;
+        this.ignored = ignored;
     }
 
-    /** The built-in defaults. */
+    /** The built-in defaults, with the built-in models and those of the plugins folder beside the code. */
     static Settings defaults() {
-        Map<String, String> values = new LinkedHashMap<>();
-        KEYS.forEach((key, rule) -> values.put(key, rule.defaultValue()));
-        return new Settings(values);
+        try {
+            return of(new Properties(), "the defaults");
+        } catch (SettingsException e) {
+            throw new IllegalStateException("a default breaks its own rule: " + e.getMessage(), e);
+        }
     }
 
-    /** The defaults overridden by a properties file. */
+    /** The defaults overridden by a properties file, with the catalog {@link #modelsFor} gives. */
     static Settings load(Path file) throws SettingsException {
+        return of(read(file), file.toString());
+    }
+
+    /** The properties of a file. */
+    static Properties read(Path file) throws SettingsException {
         Properties properties = new Properties();
-        try (InputStream in = Files.newInputStream(file); Reader reader = new InputStreamReader(in, StandardCharsets.UTF_8)) {
+        try (InputStream in = Files.newInputStream(file); Reader reader = new InputStreamReader(in, StandardCharsets.UTF_8.newDecoder())) {
             properties.load(reader);
+        } catch (CharacterCodingException e) {
+            throw new SettingsException("cannot read " + file + ": it is not UTF-8 text (write it in UTF-8, or use \\uXXXX escapes)");
         } catch (IOException | IllegalArgumentException e) {
             throw new SettingsException("cannot read " + file + ": " + e.getMessage());
         }
-        return of(properties, file.toString());
+        return properties;
     }
 
-    /** The defaults overridden by these properties; {@code source} names them in errors. */
+    /** The defaults overridden by these properties, with the catalog {@link #modelsFor} gives. */
     static Settings of(Properties properties, String source) throws SettingsException {
-        Settings settings = defaults();
-        for (String key : properties.stringPropertyNames().stream().sorted().toList()) {
-            String value = properties.getProperty(key).strip();
-            Key rule = KEYS.get(key);
-            if (rule == null) {
-                throw new SettingsException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
-                        + String.join(", ", KEYS.keySet()));
-            }
-            if (!rule.check().test(value)) {
-                throw new SettingsException(source + ": " + key + " = '" + value + "' is not " + rule.expected());
-            }
-            settings.values.put(key, value);
-        }
-        return settings;
+        return of(properties, source, Settings::modelsFor);
     }
 
     /**
-     * What is wrong with a value for a key, for the GUI's dialogs: null when the value (stripped of
-     * surrounding whitespace) is accepted, else the words for what the key expects, e.g.
-     * "a port number from 1 to 65535".
-     *
-     * @throws IllegalArgumentException for a key that is not a property
+     * The defaults overridden by these properties; {@code source} names them in errors. The
+     * {@code wss.*} values are checked first; then {@code catalogFor} is asked for the models,
+     * given those server values (the plugin folder, the log level), and every other key is checked
+     * with the rule of the model that declares it: the chosen model's own declaration first, then
+     * the first model's of the catalog that declares the key.
      */
-    public static String problem(String key, String value) {
-        Key rule = KEYS.get(key);
-        if (rule == null) {
-            throw new IllegalArgumentException("unknown key " + key);
+    static Settings of(Properties properties, String source, Function<Settings, ModelCatalog> catalogFor)
+            throws SettingsException {
+        List<String> keys = properties.stringPropertyNames().stream().sorted().toList();
+        Map<String, Setting> rules = new LinkedHashMap<>();
+        SERVER.forEach(setting -> rules.put(setting.key(), setting));
+        Map<String, String> values = new LinkedHashMap<>(Setting.defaults(SERVER));
+        for (String key : keys) {
+            if (rules.containsKey(key)) {
+                values.put(key, checked(rules.get(key), properties.getProperty(key), source));
+            }
         }
-        return rule.check().test(value.strip()) ? null : rule.expected();
+        ModelCatalog catalog = catalogFor.apply(new Settings(values, null, List.of()));
+        PropagationModel chosen = catalog.find(values.get("wss.model"));
+        List<Setting> own = chosen == null ? List.of() : chosen.settings();
+        own.forEach(setting -> rules.putIfAbsent(setting.key(), setting));
+        for (PropagationModel model : catalog.models()) {
+            model.settings().forEach(setting -> rules.putIfAbsent(setting.key(), setting));
+        }
+        rules.forEach((key, rule) -> values.putIfAbsent(key, rule.defaultValue()));
+        List<String> ignored = new ArrayList<>();
+        for (String key : keys) {
+            String value = properties.getProperty(key).strip();
+            Setting rule = rules.get(key);
+            if (rule == null) {
+                throw new SettingsException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
+                        + String.join(", ", rules.keySet()));
+            }
+            if (!key.startsWith("wss.")) {
+                values.put(key, checked(rule, value, source));
+                if (Setting.find(own, key) == null) {
+                    ignored.add(key);
+                }
+            }
+        }
+        return new Settings(values, catalog, List.copyOf(ignored));
     }
 
-    /** The default of every key a model reads (usarsim.*, distance.*, obstacle.*), sorted by key. */
-    public static Map<String, String> modelDefaults() {
-        return Collections.unmodifiableMap(defaults().modelSettings().asMap());
+    private static String checked(Setting rule, String value, String source) throws SettingsException {
+        String stripped = value.strip();
+        String problem = rule.problem(stripped);
+        if (problem != null) {
+            throw new SettingsException(source + ": " + rule.key() + " = '" + stripped + "' is not " + problem);
+        }
+        return stripped;
+    }
+
+    /**
+     * The models a headless run chooses from: the built-in ones, then the plugins of the folder
+     * beside the code (plugins/ beside wss.jar), then those of wss.pluginDir.
+     */
+    static ModelCatalog modelsFor(Settings server) {
+        List<Path> pluginFolders = new ArrayList<>();
+        PluginFolder.besideCodeOf(Main.class).ifPresent(pluginFolders::add);
+        server.pluginDir().ifPresent(pluginFolders::add);
+        return ModelCatalog.load(Main.class.getClassLoader(), pluginFolders);
+    }
+
+    /**
+     * Every key a properties file may hold, for {@code --help}: the server's, then each model's
+     * of the catalog (a key shared with a model above is named, not repeated), each with its
+     * default, what it accepts and its help.
+     */
+    static String help(ModelCatalog catalog) {
+        StringBuilder text = new StringBuilder("properties of --config FILE (docs/headless.md):\n");
+        SERVER.forEach(setting -> describe(text, setting));
+        Set<String> listed = new HashSet<>();
+        for (PropagationModel model : catalog.models()) {
+            List<Setting> settings = model.settings();
+            text.append("model ").append(model.name()).append(settings.isEmpty() ? ": no settings" : ":").append('\n');
+            List<String> shared = settings.stream().map(Setting::key).filter(listed::contains).toList();
+            if (!shared.isEmpty()) {
+                text.append("  ").append(String.join(", ", shared)).append(": as above\n");
+            }
+            settings.stream().filter(setting -> listed.add(setting.key())).forEach(setting -> describe(text, setting));
+        }
+        return text.toString();
+    }
+
+    private static void describe(StringBuilder text, Setting setting) {
+        text.append("  ").append(setting.key()).append(" = ").append(setting.defaultValue()).append('\n')
+                .append("      ").append(setting.expected()).append(setting.help().isEmpty() ? "" : ". " + setting.help()).append('\n');
+    }
+
+    /** The models these settings were checked against. */
+    ModelCatalog catalog() {
+        return catalog;
+    }
+
+    /**
+     * The keys the file set that the chosen model does not declare (another model of the catalog
+     * does): checked, then not handed to the model. Headless warns of each.
+     */
+    List<String> ignoredKeys() {
+        return ignored;
     }
 
     String get(String key) {
@@ -150,65 +242,20 @@ public final class Settings {
         try {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
-                    Boolean.parseBoolean(get("wss.matchSourceAddress")));
+                    Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")));
         } catch (UnknownHostException e) {
             throw new IllegalStateException("wss.bindAddress was checked", e);
         }
     }
 
-    /** What the models read: every usarsim.*, distance.* and obstacle.* value. */
+    /** What the chosen model is handed: the value of each key it declares; none when there is no such model. */
     ModelSettings modelSettings() {
-        Map<String, String> model = new LinkedHashMap<>(values);
-        model.keySet().removeIf(key -> key.startsWith("wss."));
-        return new ModelSettings(model);
-    }
-
-    private static boolean isInt(String value, int min, int max) {
-        try {
-            int number = Integer.parseInt(value);
-            return number >= min && number <= max;
-        } catch (NumberFormatException e) {
-            return false;
+        PropagationModel model = catalog.find(modelName());
+        Map<String, String> own = new LinkedHashMap<>();
+        if (model != null) {
+            model.settings().forEach(setting -> own.put(setting.key(), values.get(setting.key())));
         }
-    }
-
-    private static boolean isNumber(String value, double min, boolean exclusive) {
-        try {
-            double number = Double.parseDouble(value);
-            return Double.isFinite(number) && (exclusive ? number > min : number >= min);
-        } catch (NumberFormatException e) {
-            return false;
-        }
-    }
-
-    private static boolean isDirectory(String value) {
-        try {
-            return Files.isDirectory(Path.of(value));
-        } catch (InvalidPathException e) {
-            return false;
-        }
-    }
-
-    private static boolean isBoolean(String value) {
-        return value.equalsIgnoreCase("true") || value.equalsIgnoreCase("false");
-    }
-
-    private static boolean isLevel(String value) {
-        return switch (value) {
-            case "SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST" -> true;
-            default -> false;
-        };
-    }
-
-    private static boolean isAddress(String value) {
-        if (value.isEmpty()) {
-            return false;
-        }
-        try {
-            InetAddress.getByName(value);
-            return true;
-        } catch (UnknownHostException e) {
-            return false;
-        }
+        return new ModelSettings(own);
     }
 }

@@ -3,32 +3,22 @@ package org.usarsim.wss.gui;
 import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.GridBagConstraints;
-import java.awt.GridBagLayout;
-import java.awt.GridLayout;
 import java.awt.Insets;
 import java.awt.Window;
-import java.awt.event.KeyEvent;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.prefs.BackingStoreException;
-import javax.swing.BorderFactory;
-import javax.swing.JButton;
-import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
-import javax.swing.KeyStroke;
-import javax.swing.SwingConstants;
 import javax.swing.UIManager;
-import javax.swing.event.DocumentEvent;
-import javax.swing.event.DocumentListener;
-import org.usarsim.wss.app.Settings;
-import org.usarsim.wss.model.distance.PathLoss;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
@@ -36,7 +26,7 @@ import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
  * and ObstaclePropagationModel), laid out as the original's (its manual's figure 2) with two
  * groups it did not have: "Link Stability" and, for an {@link ObstaclePropagationModel},
  * "Obstacles". The values are those of the model's preferences node, named by its {@code name()}. Fields hold the model keys' values as
- * text; every check is {@link Settings#problem}. The cutoff distance is derived, both ways:
+ * text; each field's label, unit, tooltip and check come from the model's declared {@link Setting}s. The cutoff distance is derived, both ways:
  * editing Cutoff, N, Pd0 or d0 recomputes it, editing it recomputes N. OK stores the values with
  * {@link ModelPreferences}; in read-only mode (the server runs) every field is disabled and the
  * only button is Close. Modal; build and show it on the Swing event thread.
@@ -46,52 +36,36 @@ final class DistanceModelDialog extends JDialog {
     /** Component names, for tests and accessibility tools; each value field is named by its key. */
     static final String CUTOFF_DISTANCE = "cutoffDistance";
     static final String RANGE_NOTE = "rangeNote";
-    static final String MESSAGE = "message";
-    static final String OK = "ok";
-    static final String CANCEL = "cancel";
-    static final String CLOSE = "close";
+    static final String MESSAGE = DialogParts.MESSAGE;
+    static final String OK = DialogParts.OK;
+    static final String CANCEL = DialogParts.CANCEL;
+    static final String CLOSE = DialogParts.CLOSE;
 
     /** The background of a field whose value is refused. */
-    static final Color INVALID = new Color(255, 205, 205);
+    static final Color INVALID = DialogParts.INVALID;
 
-    private static final Color MESSAGE_COLOR = new Color(170, 0, 0);
-    /** Read-only values stay readable: darker than the look and feel's pale disabled text. */
-    private static final Color READ_ONLY_TEXT = new Color(90, 90, 90);
+    /** The keys of the fields; each one's label, unit, tooltip and rule are the model's {@link Setting}. */
+    private static final String HOST = "usarsim.host";
+    private static final String PORT = "usarsim.port";
+    private static final String INTERVAL = "usarsim.interval";
+    private static final String TIMEOUT = "usarsim.timeout";
+    private static final String CUTOFF = "distance.cutoff";
+    private static final String N = "distance.n";
+    private static final String PD0 = "distance.pd0";
+    private static final String D0 = "distance.d0";
+    private static final String MARGIN = "distance.margin";
+    private static final String HOLD_TIME = "distance.holdTime";
+    private static final String ATTENUATION = "obstacle.attenuation";
+    private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
 
-    /** A field: the key it edits, its label and what it means. */
-    private record Field(String key, String label, String tip) {
-    }
-
-    private static final Field HOST = new Field("usarsim.host", "Host",
-            "The machine of the simulator's position socket: a host name or an IP address");
-    private static final Field PORT = new Field("usarsim.port", "Port",
-            "The simulator's position port, 7435 as a rule; not 3000, which is USARSim's robot port");
-    private static final Field INTERVAL = new Field("usarsim.interval", "Poll interval (ms)",
-            "Milliseconds between two requests for the robots' positions (GETPOS)");
-    private static final Field TIMEOUT = new Field("usarsim.timeout", "Timeout (ms)",
-            "Milliseconds to wait for the simulator's answer");
-    private static final Field CUTOFF = new Field("distance.cutoff", "Cutoff (dBm)",
-            "Below this signal strength two robots cannot talk; -93 dBm is a property of the channel, best left as it is");
-    private static final Field N = new Field("distance.n", "N",
-            "The attenuation factor of the environment: how fast the signal fades with distance");
-    private static final Field PD0 = new Field("distance.pd0", "Pd0 (dBm)", "The signal strength at distance d0");
-    private static final Field D0 = new Field("distance.d0", "d0 (m)", "The distance at which the strength is Pd0");
-    private static final Field MARGIN = new Field("distance.margin", "Margin (dB)",
-            "A broken link resumes only when the strength is above Cutoff + Margin, so that a pair at the edge does not flap");
-    private static final Field HOLD_TIME = new Field("distance.holdTime", "Hold time (s)",
-            "A link stays broken, or resumed, at least this many seconds before it changes again");
-    private static final Field ATTENUATION = new Field("obstacle.attenuation", "Attenuation per obstacle (dB)",
-            "The loss for each obstacle between two robots");
-    private static final Field CACHE_DISTANCE = new Field("obstacle.cacheDistance", "Cache distance (m)",
-            "How far a robot moves before the obstacles between it and the others are counted again");
-
-    private final String modelName;
+    private final SimulatorModel model;
+    private final List<Setting> declared;
     private final boolean obstacles;
     private final boolean editable;
     private final ModelPreferences preferences;
 
     private final Map<String, JTextField> fields = new LinkedHashMap<>();
-    private final Map<String, String> labels = new LinkedHashMap<>();
+    private final Map<String, Setting> rules = new LinkedHashMap<>();
     private final JTextField distance = new JTextField(10);
     private final JLabel rangeNote = new JLabel(" ");
     private final JLabel message = new JLabel(" ");
@@ -108,59 +82,31 @@ final class DistanceModelDialog extends JDialog {
     /** Shows, and OK stores, the values of {@code model.name()}'s preferences; it does not touch the model itself. */
     DistanceModelDialog(Window owner, SimulatorModel model, boolean editable, ModelPreferences preferences) {
         super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
-        this.modelName = model.name();
+        this.model = model;
+        this.declared = model.settings();
         this.obstacles = model instanceof ObstaclePropagationModel;
         this.editable = editable;
         this.preferences = preferences;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
-        JPanel content = new JPanel(new GridBagLayout());
-        content.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridx = 0;
-        c.fill = GridBagConstraints.HORIZONTAL;
-        c.weightx = 1;
-        c.insets = new Insets(0, 0, 6, 0);
-        content.add(group("USARSim Connection", HOST, PORT, INTERVAL, TIMEOUT), c);
-        content.add(group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), c);
-        content.add(distanceGroup(), c);
-        content.add(group("Link Stability", MARGIN, HOLD_TIME), c);
+        List<JPanel> groups = new ArrayList<>(List.of(group("USARSim Connection", HOST, PORT, INTERVAL, TIMEOUT),
+                group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), distanceGroup(),
+                group("Link Stability", MARGIN, HOLD_TIME)));
         if (obstacles) {
-            content.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE), c);
+            groups.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE));
         }
-        message.setName(MESSAGE);
-        message.setForeground(MESSAGE_COLOR);
-        message.setVerticalAlignment(SwingConstants.TOP);
-        content.add(message, c);
-        c.weighty = 1;
-        c.anchor = GridBagConstraints.SOUTHEAST;
-        c.fill = GridBagConstraints.NONE;
-        c.insets = new Insets(0, 0, 0, 0);
-        content.add(buttons(), c);
-        setContentPane(content);
         alignColumns();
 
-        Map<String, String> values = preferences.load(modelName);
+        Map<String, String> values = preferences.load(model);
         updating = true;
         fields.forEach((key, field) -> field.setText(values.get(key)));
         updating = false;
         showDistance();
         if (!editable) {
-            fields.values().forEach(this::readOnly);
-            readOnly(distance);
+            fields.values().forEach(DialogParts::readOnly);
+            DialogParts.readOnly(distance);
         }
-        pack();
-        // Two lines for a refusal, as wide as the dialog; the HTML text wraps within it.
-        int lineHeight = message.getFontMetrics(message.getFont()).getHeight();
-        message.setPreferredSize(new Dimension(10, 2 * lineHeight + 2));
-        pack();
-        setMinimumSize(getSize());
-        setLocationRelativeTo(owner);
-    }
-
-    private void readOnly(JTextField field) {
-        field.setEnabled(false);
-        field.setDisabledTextColor(READ_ONLY_TEXT);
+        DialogParts.layOut(this, owner, groups, message, DialogParts.buttons(this, editable, this::ok));
     }
 
     /** Whether OK stored the values. */
@@ -175,13 +121,14 @@ final class DistanceModelDialog extends JDialog {
      * any extra width. Fields keep their width, labels get the same width in every group
      * ({@link #alignColumns}), so the columns line up from group to group.
      */
-    private JPanel group(String title, Field... members) {
-        JPanel panel = titled(title);
-        for (int i = 0; i < members.length; i++) {
+    private JPanel group(String title, String... keys) {
+        JPanel panel = DialogParts.titled(title);
+        for (int i = 0; i < keys.length; i++) {
             int row = i / 2;
             boolean left = i % 2 == 0;
-            JTextField field = field(members[i]);
-            JLabel label = label(members[i].label(), members[i].tip(), field);
+            Setting setting = rule(keys[i]);
+            JTextField field = field(setting);
+            JLabel label = DialogParts.label(setting.labelWithUnit(), setting.help(), field);
             (left ? leftLabels : rightLabels).add(label);
             panel.add(label, cell(left ? 0 : 2, row, left ? 0 : 18));
             panel.add(field, cell(left ? 1 : 3, row, 6));
@@ -191,14 +138,14 @@ final class DistanceModelDialog extends JDialog {
     }
 
     private JPanel distanceGroup() {
-        JPanel panel = titled("Easy Parameter Setting by Cutoff Distance");
+        JPanel panel = DialogParts.titled("Easy Parameter Setting by Cutoff Distance");
         String tip = "The distance at which the signal strength falls to the cutoff"
                 + (obstacles ? " with no obstacle in between" : "")
                 + ": d0 * 10^((Pd0 - Cutoff) / (10 N)). Editing it recomputes N.";
         distance.setName(CUTOFF_DISTANCE);
         distance.setToolTipText(tip);
-        distance.getDocument().addDocumentListener(onChange(this::distanceEdited));
-        JLabel label = label("Cutoff distance (m)", tip, distance);
+        distance.getDocument().addDocumentListener(DialogParts.onChange(this::distanceEdited));
+        JLabel label = DialogParts.label("Cutoff distance (m)", tip, distance);
         leftLabels.add(label);
         rangeNote.setName(RANGE_NOTE);
         panel.add(label, cell(0, 0, 0));
@@ -212,41 +159,6 @@ final class DistanceModelDialog extends JDialog {
         rangeNote.setMinimumSize(rangeNote.getPreferredSize());
         panel.add(rangeNote, note);
         keepWidth(distance);
-        return panel;
-    }
-
-    private JPanel buttons() {
-        JPanel panel = new JPanel(new GridLayout(1, 0, 6, 0));
-        JButton cancel;
-        JButton ok;
-        if (editable) {
-            ok = button("OK", OK);
-            ok.addActionListener(e -> ok());
-            cancel = button("Cancel", CANCEL);
-            panel.add(ok);
-            panel.add(cancel);
-        } else {
-            cancel = button("Close", CLOSE);
-            ok = cancel;
-            panel.add(cancel);
-        }
-        cancel.addActionListener(e -> dispose());
-        getRootPane().setDefaultButton(ok);
-        getRootPane().registerKeyboardAction(e -> dispose(), KeyStroke.getKeyStroke(KeyEvent.VK_ESCAPE, 0),
-                JComponent.WHEN_IN_FOCUSED_WINDOW);
-        return panel;
-    }
-
-    private static JButton button(String text, String name) {
-        JButton button = new JButton(text);
-        button.setName(name);
-        return button;
-    }
-
-    private static JPanel titled(String title) {
-        JPanel panel = new JPanel(new GridBagLayout());
-        panel.setBorder(BorderFactory.createCompoundBorder(BorderFactory.createTitledBorder(title),
-                BorderFactory.createEmptyBorder(0, 6, 4, 6)));
         return panel;
     }
 
@@ -267,13 +179,6 @@ final class DistanceModelDialog extends JDialog {
         return c;
     }
 
-    private static JLabel label(String text, String tip, JComponent field) {
-        JLabel label = new JLabel(text);
-        label.setToolTipText(tip);
-        label.setLabelFor(field);
-        return label;
-    }
-
     /** Every group gets the same label widths, so that the fields line up from group to group. */
     private void alignColumns() {
         for (List<JLabel> column : List.of(leftLabels, rightLabels)) {
@@ -282,16 +187,38 @@ final class DistanceModelDialog extends JDialog {
         }
     }
 
-    private JTextField field(Field member) {
+    /**
+     * Whether the model declares every key this dialog shows: a plugin's subclass that changed
+     * the simulator models' settings gets the dialog built from its declaration instead.
+     */
+    static boolean fits(SimulatorModel model) {
+        List<String> keys = new ArrayList<>(List.of(HOST, PORT, INTERVAL, TIMEOUT, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME));
+        if (model instanceof ObstaclePropagationModel) {
+            keys.addAll(List.of(ATTENUATION, CACHE_DISTANCE));
+        }
+        List<Setting> declared = model.settings();
+        return keys.stream().allMatch(key -> Setting.find(declared, key) != null);
+    }
+
+    /** The model's declaration of a key this dialog shows. */
+    private Setting rule(String key) {
+        Setting setting = Setting.find(declared, key);
+        if (setting == null) {
+            throw new IllegalStateException(model.name() + " does not declare " + key);
+        }
+        return setting;
+    }
+
+    private JTextField field(Setting setting) {
         JTextField field = new JTextField(10);
-        field.setName(member.key());
-        field.setToolTipText(member.tip());
+        field.setName(setting.key());
+        field.setToolTipText(setting.help());
         keepWidth(field);
-        fields.put(member.key(), field);
-        labels.put(member.key(), member.label());
-        boolean parameter = member == CUTOFF || member == N || member == PD0 || member == D0;
-        field.getDocument().addDocumentListener(onChange(() -> {
-            mark(field, Settings.problem(member.key(), field.getText()) != null);
+        fields.put(setting.key(), field);
+        rules.put(setting.key(), setting);
+        boolean parameter = List.of(CUTOFF, N, PD0, D0).contains(setting.key());
+        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
+            mark(field, setting.problem(field.getText()) != null);
             if (!updating) {
                 message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
                 if (parameter) {
@@ -308,24 +235,6 @@ final class DistanceModelDialog extends JDialog {
         field.setMinimumSize(field.getPreferredSize());
     }
 
-    private static DocumentListener onChange(Runnable action) {
-        return new DocumentListener() {
-            @Override
-            public void insertUpdate(DocumentEvent e) {
-                action.run();
-            }
-
-            @Override
-            public void removeUpdate(DocumentEvent e) {
-                action.run();
-            }
-
-            @Override
-            public void changedUpdate(DocumentEvent e) {
-            }
-        };
-    }
-
     private void mark(JTextField field, boolean invalid) {
         field.setBackground(invalid ? INVALID : normalBackground);
     }
@@ -333,9 +242,9 @@ final class DistanceModelDialog extends JDialog {
     // ---- the cutoff distance, both ways ----
 
     /** A parameter's value, or null when its field does not hold an accepted one. */
-    private Double parameter(Field member) {
-        String text = fields.get(member.key()).getText();
-        return Settings.problem(member.key(), text) == null ? Double.valueOf(text.strip()) : null;
+    private Double parameter(String key) {
+        String text = fields.get(key).getText();
+        return rules.get(key).problem(text) == null ? Double.valueOf(text.strip()) : null;
     }
 
     /** distance = d0 * 10^((Pd0 - cutoff) / (10 N)) ({@link PathLoss#range}), shown after a parameter changed. */
@@ -395,7 +304,7 @@ final class DistanceModelDialog extends JDialog {
             distanceProblem = Double.isNaN(n) ? "no N > 0 gives this distance: " + why(cutoff, pd0, d0, value) : null;
             if (distanceProblem == null) {
                 updating = true;
-                fields.get(N.key()).setText(format(n));
+                fields.get(N).setText(format(n));
                 updating = false;
             }
         }
@@ -432,7 +341,7 @@ final class DistanceModelDialog extends JDialog {
     private void note(String text, boolean problem) {
         rangeNote.setText(text);
         rangeNote.setToolTipText(text.isBlank() ? null : text);
-        rangeNote.setForeground(problem ? MESSAGE_COLOR : UIManager.getColor("Label.foreground"));
+        rangeNote.setForeground(problem ? DialogParts.MESSAGE_COLOR : UIManager.getColor("Label.foreground"));
     }
 
     private static double parseDistance(String text) {
@@ -467,13 +376,13 @@ final class DistanceModelDialog extends JDialog {
         int refused = 0;
         for (Map.Entry<String, JTextField> entry : fields.entrySet()) {
             String text = entry.getValue().getText().strip();
-            String problem = Settings.problem(entry.getKey(), text);
+            String problem = rules.get(entry.getKey()).problem(text);
             mark(entry.getValue(), problem != null);
             if (problem != null) {
                 refused++;
                 if (first == null) {
                     first = entry.getValue();
-                    refusal = labels.get(entry.getKey()) + ": '" + text + "' is not " + problem;
+                    refusal = DialogParts.refusal(rules.get(entry.getKey()).labelWithUnit(), text, problem);
                 }
             }
             values.put(entry.getKey(), text);
@@ -491,7 +400,7 @@ final class DistanceModelDialog extends JDialog {
             return;
         }
         try {
-            preferences.store(modelName, values);
+            preferences.store(model, values);
         } catch (BackingStoreException | RuntimeException e) {
             show("Cannot save the settings: " + e.getMessage());
             return;
@@ -501,6 +410,6 @@ final class DistanceModelDialog extends JDialog {
     }
 
     private void show(String text) {
-        message.setText("<html>" + text.replace("&", "&amp;").replace("<", "&lt;") + "</html>");
+        DialogParts.showMessage(message, text);
     }
 }

@@ -2,43 +2,58 @@ package org.usarsim.wss.gui;
 
 import java.awt.Window;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
- * Where the window opens a model's configuration (the built-in dialog, or the model's own), and
- * how it hands a model its stored settings.
+ * Where the window opens a model's configuration (the model's own dialog, the built-in one of the
+ * simulator models, or the one built from the model's declared settings), and how it hands a
+ * model its stored settings.
  */
 public final class ModelDialogs {
 
     private ModelDialogs() {
     }
 
-    /** Whether {@link #show} has something to show for this model (what enables "Configure"). */
+    /**
+     * Whether {@link #show} has something to show for this model (what enables "Configure"): a
+     * dialog of its own, or declared settings.
+     */
     public static boolean isConfigurable(PropagationModel model) {
-        return model instanceof SimulatorModel || model.isConfigurable();
+        return model.isConfigurable() || !model.settings().isEmpty();
     }
 
     /**
      * Shows the model's configuration and returns when it is closed; read-only when
-     * {@code editable} is false (the server runs). A {@link SimulatorModel}
-     * (DistanceOnlyPropagationModel, ObstaclePropagationModel) gets {@link DistanceModelDialog}:
-     * OK stores the values in {@code preferences}, under the model's {@code name()}, and hands them
-     * to the model's {@code configure}. Any other model shows its own
-     * {@code showConfigurationDialog(editable)}. Call on the Swing event thread.
+     * {@code editable} is false (the server runs). In this order: a model with a dialog of its own
+     * ({@code isConfigurable()}) shows its {@code showConfigurationDialog(editable)}; a
+     * {@link SimulatorModel} (DistanceOnlyPropagationModel, ObstaclePropagationModel) gets
+     * {@link DistanceModelDialog}, provided it declares the keys that dialog shows; any other
+     * model with declared settings gets the {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
+     * {@code preferences}, under the model's {@code name()}, and hands them to the model's
+     * {@code configure}. Call on the Swing event thread.
      *
-     * @return true when the built-in dialog stored new values
+     * @return true when a built-in dialog stored new values
      */
     public static boolean show(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences) {
-        if (!(model instanceof SimulatorModel simulatorModel)) {
+        boolean saved;
+        if (model.isConfigurable()) {
             model.showConfigurationDialog(editable);
             return false;
+        } else if (model instanceof SimulatorModel simulatorModel && DistanceModelDialog.fits(simulatorModel)) {
+            DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences);
+            dialog.setVisible(true);
+            saved = dialog.saved();
+        } else if (!model.settings().isEmpty()) {
+            SettingsDialog dialog = new SettingsDialog(owner, model, editable, preferences);
+            dialog.setVisible(true);
+            saved = dialog.saved();
+        } else {
+            return false;
         }
-        DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences);
-        dialog.setVisible(true);
-        if (dialog.saved()) {
+        if (saved) {
             configureFromPreferences(model, preferences);
         }
-        return dialog.saved();
+        return saved;
     }
 
     /**
@@ -47,6 +62,6 @@ public final class ModelDialogs {
      * last stored, in this session or an earlier one.
      */
     public static void configureFromPreferences(PropagationModel model, ModelPreferences preferences) {
-        model.configure(preferences.settings(model.name()));
+        model.configure(preferences.settings(model));
     }
 }

@@ -1,18 +1,20 @@
 package org.usarsim.wss.gui;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.logging.Logger;
 import java.util.prefs.BackingStoreException;
 import java.util.prefs.Preferences;
-import org.usarsim.wss.app.Settings;
 import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
 
 /**
  * A model's settings as the GUI keeps them between runs: one {@link Preferences} node per model,
- * {@code org/usarsim/wss/models/<model name>} under the user's root, holding the model keys
- * (usarsim.*, distance.*, obstacle.*) as strings. Every value is checked with {@link Settings}'
- * rule, when read and when stored. Headless mode never reads these.
+ * {@code org/usarsim/wss/models/<model name>} under the user's root, holding the keys the model
+ * declares ({@link PropagationModel#settings()}) as strings. Every value is checked with its
+ * {@link Setting}'s rule, when read and when stored. Headless mode never reads these.
  */
 public final class ModelPreferences {
 
@@ -36,53 +38,56 @@ public final class ModelPreferences {
     }
 
     /**
-     * Every model key with its stored value, or its default when none is stored. A stored value
-     * that breaks the key's rule (a hand-edited one) is replaced by the default, with a WARNING.
+     * Every key the model declares with its stored value, or its default when none is stored. A
+     * stored value that breaks the key's rule (a hand-edited one) is replaced by the default, with
+     * a WARNING; a stored key the model does not declare is left alone.
      */
-    public Map<String, String> load(String modelName) {
-        Preferences node = node(modelName);
-        Map<String, String> values = new LinkedHashMap<>(Settings.modelDefaults());
-        for (Map.Entry<String, String> entry : values.entrySet()) {
-            String stored = node.get(entry.getKey(), null);
-            if (stored == null) {
-                continue;
+    public Map<String, String> load(PropagationModel model) {
+        Preferences node = node(model.name());
+        Map<String, String> values = new LinkedHashMap<>();
+        for (Setting setting : model.settings()) {
+            String value = setting.defaultValue();
+            String stored = node.get(setting.key(), null);
+            if (stored != null) {
+                String problem = setting.problem(stored);
+                if (problem == null) {
+                    value = stored.strip();
+                } else {
+                    LOG.warning("preferences " + node.absolutePath() + ": " + setting.key() + " = '" + stored + "' is not "
+                            + problem + "; using the default " + value);
+                }
             }
-            String problem = Settings.problem(entry.getKey(), stored);
-            if (problem == null) {
-                entry.setValue(stored.strip());
-            } else {
-                LOG.warning("preferences " + node.absolutePath() + ": " + entry.getKey() + " = '" + stored + "' is not "
-                        + problem + "; using the default " + entry.getValue());
-            }
+            values.put(setting.key(), value);
         }
         return values;
     }
 
     /** What {@link #load} gives, for {@code PropagationModel.configure}. */
-    public ModelSettings settings(String modelName) {
-        return new ModelSettings(load(modelName));
+    public ModelSettings settings(PropagationModel model) {
+        return new ModelSettings(load(model));
     }
 
     /**
      * Stores these values (stripped) in the model's node and writes it out; keys not given keep
      * what they had.
      *
-     * @throws IllegalArgumentException when a key is not a model key or a value breaks its rule;
-     *                                  nothing is stored then
+     * @throws IllegalArgumentException when a key is not one the model declares or a value breaks
+     *                                  its rule; nothing is stored then
      * @throws BackingStoreException    when the preferences cannot be written
      */
-    public void store(String modelName, Map<String, String> values) throws BackingStoreException {
-        Map<String, String> defaults = Settings.modelDefaults();
+    public void store(PropagationModel model, Map<String, String> values) throws BackingStoreException {
+        List<Setting> declared = model.settings();
         for (Map.Entry<String, String> entry : values.entrySet()) {
-            if (!defaults.containsKey(entry.getKey())) {
-                throw new IllegalArgumentException(entry.getKey() + " is not a model setting");
+            Setting setting = Setting.find(declared, entry.getKey());
+            if (setting == null) {
+                throw new IllegalArgumentException(entry.getKey() + " is not a setting of " + model.name());
             }
-            String problem = Settings.problem(entry.getKey(), entry.getValue());
+            String problem = setting.problem(entry.getValue());
             if (problem != null) {
                 throw new IllegalArgumentException(entry.getKey() + " = '" + entry.getValue() + "' is not " + problem);
             }
         }
-        Preferences node = node(modelName);
+        Preferences node = node(model.name());
         values.forEach((key, value) -> node.put(key, value.strip()));
         node.flush();
     }

@@ -5,6 +5,7 @@ import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.logging.Level;
@@ -52,6 +53,10 @@ final class ControlListener implements Runnable {
     void close() {
         Closing.quietly(server);
         sessions.forEach(ControlSession::close);
+    }
+
+    List<SocketChannel> channels() {
+        return sessions.stream().map(ControlSession::channel).toList();
     }
 
     void ended(ControlSession session) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.StandardSocketOptions;
 import java.nio.ByteBuffer;
+import java.nio.channels.ClosedChannelException;
 import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.OptionalDouble;
@@ -47,6 +48,10 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         thread.start();
     }
 
+    SocketChannel channel() {
+        return channel;
+    }
+
     void close() {
         Closing.quietly(channel);
     }
@@ -56,14 +61,23 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         LOG.fine(() -> "control connection from " + peer);
         try {
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
+            hub.keepAlive().apply(channel);
             ByteBuffer buffer = ByteBuffer.allocate(16 * 1024);
             int read;
             while ((read = channel.read(buffer)) >= 0) {
                 splitter.feed(buffer.array(), 0, read, this);
                 buffer.clear();
             }
+        } catch (ClosedChannelException e) {
+            LOG.fine(() -> "control connection from " + peer + " closed by the server");
         } catch (IOException e) {
-            LOG.fine(() -> "control connection from " + peer + " ended: " + e);
+            // A reset, or keepalive found the robot's machine gone (Connection timed out).
+            if (robot == null) {
+                LOG.fine(() -> "control connection from " + peer + " ended: " + e);
+            } else {
+                LOG.info("lost the control connection of " + robot + " from " + peer + " (" + e.getMessage()
+                        + "); deregistering it");
+            }
         } finally {
             close();
             listener.ended(this);
@@ -103,7 +117,11 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
 
     private String answer(Command command) throws ProtocolException {
         if (robot == null) {
-            return command.type().equals("INIT") ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
+            boolean init = command.type().equals("INIT") && !command.hasNoSegment();
+            return init ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
+        }
+        if (command.hasNoSegment()) {
+            return Replies.error(Replies.UNKNOWN_OR_SECOND_INIT);
         }
         switch (command.type()) {
             case "GETSS":

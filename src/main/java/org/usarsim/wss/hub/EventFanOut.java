@@ -67,6 +67,21 @@ final class EventFanOut implements WssEventListener {
         each(l -> l.connectionTerminated(from, to, targetPort));
     }
 
+    @Override
+    public void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
+        each(l -> l.portAllocated(from, to, targetPort, wssPort, listening));
+    }
+
+    @Override
+    public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
+        each(l -> l.portListening(from, to, targetPort, wssPort, listening));
+    }
+
+    @Override
+    public void portForgotten(String from, String to, int targetPort, int wssPort) {
+        each(l -> l.portForgotten(from, to, targetPort, wssPort));
+    }
+
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */
     @Override
     public void dataSent(String from, String to, int bytes) {

@@ -5,6 +5,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Iterator;
@@ -27,13 +28,15 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
  * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing sockets happens under it.
+ * closing sockets, and the non-blocking connect that starts a port's drain, happens under it.
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
     private static final Logger LOG = Logger.getLogger(Hub.class.getName());
     /** How long an INIT of a taken name waits for the name to be freed. */
     private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
+    /** How long a departure waits for its ports to hand over the connections already completed. */
+    private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
 
     /** The outcome of a DNS. */
     enum DnsOutcome { OK, NO_SUCH_ROBOT, NO_SUCH_TARGET_PORT, NO_PORT }
@@ -52,6 +55,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
     /** Pairs the model broke and has not resumed. */
     private final Set<Pair> broken = new HashSet<>();
+    private final PortMemory memory;
+    private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
@@ -61,6 +66,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         this.model = model;
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         events.add(new EventLogger());
+        memory = new PortMemory(config.portMemorySeconds(), this::forgetIfGone);
+        keepAlive = KeepAlive.within(config.deadPeerSeconds());
     }
 
     public void addListener(WssEventListener listener) {
@@ -117,6 +124,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         } catch (RuntimeException e) {
             LOG.log(Level.WARNING, "the model failed to shut down: " + e, e);
         }
+        memory.close();
         List<Link> links = new ArrayList<>();
         synchronized (lock) {
             closed = true;
@@ -133,6 +141,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         LOG.info("WSS stopped");
     }
 
+    /** How control connections and links find a peer that vanished. */
+    KeepAlive keepAlive() {
+        return keepAlive;
+    }
+
+    /** The sockets of the control connections and of both legs of every link, for the tests of their options. */
+    List<SocketChannel> openSockets() {
+        List<SocketChannel> sockets = new ArrayList<>(controlListener.channels());
+        synchronized (lock) {
+            for (WssPort port : ports.values()) {
+                port.links.forEach(link -> sockets.addAll(link.channels()));
+            }
+        }
+        return sockets;
+    }
+
     // ---- called by control sessions ----
 
     /**
@@ -144,6 +168,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         Robot robot = new Robot(name, address, acceptPorts, session);
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
             while (robots.containsKey(name) && !closed) {
@@ -162,32 +187,63 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return false;
             }
             robots.put(name, robot);
+            memory.clear(name);
             for (WssPort port : ports.values()) {
                 if (port.key.involves(name) && shouldListen(port.key, true)) {
-                    listen(port);
+                    listen(port, portEvents);
                 }
             }
         }
         events.robotRegistered(name, address.getHostAddress(), robot.ports());
+        portEvents.forEach(Runnable::run);
         return true;
     }
 
-    /** The robot's control connection closed: it is gone, its ports stop listening, its links live on. */
+    /**
+     * The robot's control connection closed: it is gone, its ports stop listening, its links live
+     * on. First every connection the kernel already completed on its listening ports is forwarded
+     * (a robot that sends and leaves at once loses nothing): the robot stays registered until its
+     * ports have drained, for at most {@link #DRAIN_NS}.
+     */
     void deregister(String name, ControlSession session) {
+        List<PortListener> draining = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
-            Robot robot = robots.get(name);
-            if (robot == null || robot.session() != session) {
+            if (!isSessionOf(name, session)) {
                 return;
+            }
+            for (WssPort port : ports.values()) {
+                PortListener listener = port.key.involves(name) ? port.beginDrain() : null;
+                if (listener != null) {
+                    draining.add(listener);
+                }
+            }
+        }
+        long deadline = System.nanoTime() + DRAIN_NS;
+        draining.forEach(listener -> listener.awaitEnd(deadline));
+        synchronized (lock) {
+            if (!isSessionOf(name, session)) {
+                return; // kicked out meanwhile
             }
             robots.remove(name);
             lock.notifyAll();
             for (WssPort port : ports.values()) {
-                if (port.key.involves(name)) {
-                    port.stopListening();
+                if (port.key.involves(name) && port.stopListening()) {
+                    portEvents.add(listeningEvent(port));
                 }
+            }
+            if (memory.left(name)) {
+                forgetPortsOf(name, portEvents);
             }
         }
         events.robotDeregistered(name);
+        portEvents.forEach(Runnable::run);
+    }
+
+    /** Under the lock. */
+    private boolean isSessionOf(String name, ControlSession session) {
+        Robot robot = robots.get(name);
+        return robot != null && robot.session() == session;
     }
 
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */
@@ -211,6 +267,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
         }
         boolean allowed = modelAllows(from, to);
+        List<Runnable> portEvents = new ArrayList<>();
+        DnsResult result = dnsLocked(from, to, targetPort, allowed, portEvents);
+        portEvents.forEach(Runnable::run);
+        return result;
+    }
+
+    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
         synchronized (lock) {
             Robot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
@@ -223,16 +286,26 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             PortKey key = new PortKey(from, to, resolved);
             WssPort port = ports.get(key);
             if (port == null) {
+                long held = ports.keySet().stream().filter(k -> k.from().equals(from)).count();
+                if (held >= config.maxPortsPerRobot()) {
+                    warnings.warn(LOG, "DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
+                            + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key);
+                    return new DnsResult(DnsOutcome.NO_PORT, -1);
+                }
                 try {
                     port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
                 } catch (IOException e) {
-                    LOG.warning("could not allocate a WSS port for " + key + ": " + e.getMessage());
+                    warnings.warn(LOG, "ports not allocated", robots.get(from).address(),
+                            "could not allocate a WSS port for " + key + ": " + e.getMessage());
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 ports.put(key, port);
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
+                int number = port.number;
+                boolean listening = port.listening();
+                portEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
             } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port);
+                listen(port, portEvents);
             }
             return new DnsResult(DnsOutcome.OK, port.number);
         }
@@ -307,9 +380,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     void linkClosed(Link link, boolean wasEstablished) {
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             link.port.links.remove(link);
+            // A port kept only for its last connection is forgotten with it.
+            for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
+                if (link.port.links.isEmpty() && !robots.containsKey(robot) && memory.expired(robot)) {
+                    forgetPortsOf(robot, portEvents);
+                }
+            }
         }
+        portEvents.forEach(Runnable::run);
         if (wasEstablished) {
             PortKey key = link.port.key;
             events.connectionTerminated(key.from(), key.to(), key.targetPort());
@@ -322,32 +403,39 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         Pair pair = Pair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
             for (WssPort port : ports.values()) {
                 if (port.key.isBetween(pair)) {
-                    changed |= port.stopListening();
+                    if (port.stopListening()) {
+                        changed = true;
+                        portEvents.add(listeningEvent(port));
+                    }
                     links.addAll(port.links);
                 }
             }
         }
         links.forEach(Link::close);
+        portEvents.forEach(Runnable::run);
         return changed || !links.isEmpty();
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         Pair pair = Pair.of(robotA, robotB);
+        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.remove(pair);
             for (WssPort port : ports.values()) {
                 if (port.key.isBetween(pair) && !port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port);
+                    changed |= listen(port, portEvents);
                 }
             }
         }
+        portEvents.forEach(Runnable::run);
         return changed;
     }
 
@@ -355,6 +443,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void kickOutRobot(String name) {
         Robot robot;
         List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
@@ -364,9 +453,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                     port.release();
                     links.addAll(port.links);
                     it.remove();
+                    portEvents.add(forgottenEvent(port));
                 }
             }
             broken.removeIf(pair -> pair.contains(name));
+            memory.clear(name);
         }
         links.forEach(Link::close);
         if (robot != null) {
@@ -374,12 +465,85 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             LOG.info("kicked out " + name);
             events.robotDeregistered(name);
         }
+        portEvents.forEach(Runnable::run);
     }
 
     @Override
     public List<String> getListOfRegisteredRobots() {
         synchronized (lock) {
             return robots.keySet().stream().sorted().toList();
+        }
+    }
+
+    /** The robots, the WSS ports and the established links, all at one instant. */
+    public HubSnapshot snapshot() {
+        List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
+        List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
+        List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
+        synchronized (lock) {
+            for (Robot robot : robots.values()) {
+                robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
+            }
+            for (WssPort port : ports.values()) {
+                PortKey key = port.key;
+                portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
+                for (Link link : port.links) {
+                    if (link.isEstablished() && !link.isClosed()) {
+                        linkEntries.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number,
+                                link.outgoingPort()));
+                    }
+                }
+            }
+        }
+        robotEntries.sort(Comparator.comparing(HubSnapshot.RobotEntry::name));
+        portEntries.sort(Comparator.comparing(HubSnapshot.PortEntry::from).thenComparing(HubSnapshot.PortEntry::to)
+                .thenComparingInt(HubSnapshot.PortEntry::targetPort));
+        linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
+                .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
+        return new HubSnapshot(robotEntries, portEntries, linkEntries);
+    }
+
+    // ---- port memory ----
+
+    /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
+    private void forgetIfGone(String name) {
+        List<Runnable> portEvents = new ArrayList<>();
+        synchronized (lock) {
+            if (!closed && !robots.containsKey(name) && memory.expired(name)) {
+                forgetPortsOf(name, portEvents);
+            }
+        }
+        portEvents.forEach(Runnable::run);
+    }
+
+    /**
+     * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
+     * but those with open connections, which are forgotten when their last connection closes. The
+     * ports' events go to {@code portEvents}, to be fired after the lock.
+     */
+    private void forgetPortsOf(String name, List<Runnable> portEvents) {
+        int forgotten = 0;
+        boolean kept = false;
+        for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
+            WssPort port = it.next();
+            if (!port.key.involves(name)) {
+                continue;
+            }
+            if (port.links.isEmpty()) {
+                port.release();
+                it.remove();
+                portEvents.add(forgottenEvent(port));
+                forgotten++;
+            } else {
+                kept = true;
+            }
+        }
+        if (forgotten > 0) {
+            LOG.info("forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name + ", gone for "
+                    + memory.goneSeconds(name) + " s");
+        }
+        if (!kept) {
+            memory.clear(name);
         }
     }
 
@@ -395,15 +559,30 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 && target.ports().contains(key.targetPort()) && !broken.contains(Pair.of(key.from(), key.to()));
     }
 
-    /** Under the lock. @return true when it listens now */
-    private boolean listen(WssPort port) {
+    /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */
+    private boolean listen(WssPort port, List<Runnable> portEvents) {
         try {
             port.listen();
+            portEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());
             return false;
         }
+    }
+
+    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
+    private Runnable forgottenEvent(WssPort port) {
+        PortKey key = port.key;
+        int number = port.number;
+        return () -> events.portForgotten(key.from(), key.to(), key.targetPort(), number);
+    }
+
+    private Runnable listeningEvent(WssPort port) {
+        PortKey key = port.key;
+        int number = port.number;
+        boolean listening = port.listening();
+        return () -> events.portListening(key.from(), key.to(), key.targetPort(), number, listening);
     }
 
     private boolean modelAllows(String from, String to) {

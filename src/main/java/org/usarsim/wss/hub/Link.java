@@ -9,6 +9,7 @@ import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
+import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
@@ -43,6 +44,8 @@ final class Link implements Runnable {
     private final Hub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** Set once the connection to the target is made (what the window lists as established). */
+    private volatile boolean established;
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
@@ -67,6 +70,14 @@ final class Link implements Runnable {
         this.target = outgoing;
         this.selector = opened;
         this.outgoingPort = ((InetSocketAddress) outgoing.getLocalAddress()).getPort();
+    }
+
+    boolean isEstablished() {
+        return established;
+    }
+
+    List<SocketChannel> channels() {
+        return List.of(source, target);
     }
 
     boolean isClosed() {
@@ -107,6 +118,7 @@ final class Link implements Runnable {
                 return;
             }
             established = true;
+            this.established = true;
             hub.linkEstablished(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
@@ -142,7 +154,7 @@ final class Link implements Runnable {
             buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
-            channel.setOption(StandardSocketOptions.SO_KEEPALIVE, true);
+            hub.keepAlive().apply(channel);
             channel.configureBlocking(false);
         }
         Direction up = new Direction(source, target, key.from(), key.to());

@@ -1,11 +1,13 @@
 package org.usarsim.wss.hub;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import java.util.logging.Logger;
 
 /**
@@ -25,6 +27,11 @@ final class PortListener implements Runnable {
     private final ServerSocketChannel channel;
     /** The thread is inside accept(), where it holds the socket open. */
     private boolean inAccept;
+    /** The hub's own connection that marks the end of what is drained (see {@link #beginDrain}). */
+    private SocketChannel marker;
+    private InetSocketAddress markerAddress;
+    /** The thread has stopped: it will hand the hub no more connections. */
+    private boolean ended;
 
     PortListener(Hub hub, WssPort port, ServerSocketChannel channel) {
         this.hub = hub;
@@ -59,22 +66,86 @@ final class PortListener implements Runnable {
      */
     void close() {
         Closing.quietly(channel);
-        long deadline = System.nanoTime() + CLOSE_WAIT_NS;
-        synchronized (this) {
-            while (inAccept) {
-                long left = deadline - System.nanoTime();
-                if (left <= 0) {
-                    LOG.warning(port + ": the accepting thread did not stop in time");
-                    return;
-                }
-                try {
-                    TimeUnit.NANOSECONDS.timedWait(this, left);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    return;
-                }
+        if (!await(() -> !inAccept, System.nanoTime() + CLOSE_WAIT_NS)) {
+            LOG.warning(port + ": the accepting thread did not stop in time");
+        }
+    }
+
+    /** Waits on this listener's monitor until the condition holds or the deadline (System.nanoTime()) passes. */
+    private synchronized boolean await(BooleanSupplier condition, long deadline) {
+        while (!condition.getAsBoolean()) {
+            long left = deadline - System.nanoTime();
+            if (left <= 0) {
+                return false;
+            }
+            try {
+                TimeUnit.NANOSECONDS.timedWait(this, left);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return false;
             }
         }
+        return true;
+    }
+
+    /**
+     * Starts stopping the way a robot's departure stops a port: every connection the kernel has
+     * already completed is handed to the hub, then the socket closes. A socket that closes
+     * throws away its accept queue, and the thread blocked in accept() can only be woken by a
+     * connection or a close; so the hub connects to the port itself, and the thread, taking
+     * connections in the order they were completed, stops at that one ({@link #awaitEnd}).
+     *
+     * @param address where the port is reached from this machine
+     * @return false when the hub's own connection could not be started; close() then stops the port
+     */
+    synchronized boolean beginDrain(InetAddress address) {
+        if (marker != null || ended || !channel.isOpen()) {
+            return marker != null;
+        }
+        SocketChannel connection = null;
+        try {
+            connection = SocketChannel.open();
+            connection.configureBlocking(false);
+            connection.bind(new InetSocketAddress(address, 0)); // its address is known before the connect completes
+            connection.connect(new InetSocketAddress(address, port.number));
+            markerAddress = (InetSocketAddress) connection.getLocalAddress();
+            marker = connection;
+            return true;
+        } catch (IOException e) {
+            LOG.fine(() -> port + ": could not drain before stopping: " + e);
+            Closing.quietly(connection);
+            return false;
+        }
+    }
+
+    /** Waits until the thread has stopped, or until the deadline (System.nanoTime()). */
+    void awaitEnd(long deadline) {
+        if (!await(() -> ended, deadline)) {
+            LOG.fine(() -> port + ": did not drain in time");
+        }
+    }
+
+    private synchronized boolean isMarker(SocketChannel socket) {
+        try {
+            return markerAddress != null && markerAddress.equals(socket.getRemoteAddress());
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
+    private static void resetQuietly(SocketChannel socket) {
+        try {
+            socket.setOption(StandardSocketOptions.SO_LINGER, 0);
+        } catch (IOException e) {
+            // Closed already: nothing lingers.
+        }
+        Closing.quietly(socket);
+    }
+
+    private synchronized void end() {
+        ended = true;
+        Closing.quietly(marker);
+        notifyAll();
     }
 
     private synchronized void accepting(boolean now) {
@@ -86,6 +157,14 @@ final class PortListener implements Runnable {
 
     @Override
     public void run() {
+        try {
+            acceptUntilClosed();
+        } finally {
+            end();
+        }
+    }
+
+    private void acceptUntilClosed() {
         while (channel.isOpen()) {
             SocketChannel socket;
             accepting(true);
@@ -103,6 +182,13 @@ final class PortListener implements Runnable {
                 continue;
             }
             accepting(false);
+            if (isMarker(socket)) {
+                // Everything completed before the drain began is handed over: stop here. A reset
+                // rather than a close leaves no TIME_WAIT on the port's number.
+                resetQuietly(socket);
+                Closing.quietly(channel);
+                return;
+            }
             hub.accepted(port, this, socket);
         }
     }

@@ -10,11 +10,13 @@ record Robot(String name, InetAddress address, List<Integer> ports, ControlSessi
         ports = List.copyOf(ports);
     }
 
-    /** The port a DNS asks for: 0 means the first registered; -1 when the robot does not accept on it. */
+    /**
+     * The port a DNS asks for: 0 means the first registered; -1 when the robot does not accept on
+     * it. A registered port outside 1..65535 (INIT accepts any integer, as the original) is never
+     * dialled: -1 too, where the original would dial a truncated number.
+     */
     int resolvePort(int asked) {
-        if (asked == 0) {
-            return ports.isEmpty() ? -1 : ports.get(0);
-        }
-        return ports.contains(asked) ? asked : -1;
+        int port = asked != 0 ? asked : ports.isEmpty() ? -1 : ports.get(0);
+        return port >= 1 && port <= 65535 && ports.contains(port) ? port : -1;
     }
 }

@@ -48,6 +48,13 @@ final class WarningLimiter implements AutoCloseable {
         }
     }
 
+    static {
+        // Loaded now, while a descriptor is free: many of these warnings come when the descriptors
+        // have run out, and loading a class from a directory of classes takes one.
+        new Window(0, null);
+        new Key("", "");
+    }
+
     private final int first;
     private final long intervalNs;
     private final LongSupplier clock;

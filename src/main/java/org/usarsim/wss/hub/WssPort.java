@@ -12,7 +12,8 @@ import java.util.logging.Logger;
 
 /**
  * A port on the WSS machine for one {@link PortKey}. Its number is chosen by the OS when it is
- * first allocated and kept for the server's life; it listens or not as the hub decides.
+ * first allocated and kept until the hub forgets the port (wss.portMemory, a kick); it listens
+ * or not as the hub decides.
  *
  * <p>While it does not listen, a bound but unconnected socket holds the number, so that the OS
  * gives it to nobody else (not to another WSS port, nor to a link's outgoing socket) and the
@@ -75,6 +76,17 @@ final class WssPort {
     private void startListener(ServerSocketChannel channel) {
         listener = new PortListener(hub, this, channel);
         listener.start();
+    }
+
+    /**
+     * Begins a drain of the listener (see {@link PortListener#beginDrain}); the port stops
+     * listening once its listener has ended, or at the next {@link #stopListening}.
+     *
+     * @return the listener to wait for, or null when there is none to wait for
+     */
+    PortListener beginDrain() {
+        InetAddress reach = bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
+        return listener != null && listener.beginDrain(reach) ? listener : null;
     }
 
     /** Stops listening at once, so that a connect is refused; keeps the number. @return true when it was listening */

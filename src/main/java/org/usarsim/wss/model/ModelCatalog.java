@@ -15,8 +15,9 @@ import java.util.logging.Logger;
 /**
  * The propagation models: the built-in ones, found with {@link ServiceLoader} on the application's
  * class path, NoopPropagationModel first; then those of the plugin jars in each given folder
- * ({@link PluginFolder}), folder by folder, jars in name order. A model that fails to load, or whose
- * name is taken by one loaded before it, is reported with a WARNING and skipped.
+ * ({@link PluginFolder}), folder by folder, jars in name order. A model that fails to load, whose
+ * {@code settings()} declaration is broken ({@link Setting#declarationProblem}), or whose name is
+ * taken by one loaded before it, is reported with a WARNING and skipped.
  */
 public final class ModelCatalog {
 
@@ -120,6 +121,11 @@ public final class ModelCatalog {
                 if (name == null || name.isBlank()) {
                     LOG.warning("skipping a propagation model in " + source + ": " + model.getClass().getName()
                             + ".name() returned " + (name == null ? "null" : "'" + name + "'"));
+                    continue;
+                }
+                String declared = declarationProblem(model);
+                if (declared != null) {
+                    LOG.warning("skipping the propagation model " + name + " in " + source + ": " + declared);
                 } else {
                     found.add(new Named(name, model));
                 }
@@ -136,6 +142,15 @@ public final class ModelCatalog {
             }
         }
         return found;
+    }
+
+    /** What is wrong with the model's {@code settings()}, or null; a settings() that throws is a problem too. */
+    private static String declarationProblem(PropagationModel model) {
+        try {
+            return Setting.declarationProblem(model.settings());
+        } catch (RuntimeException e) {
+            return "settings() failed: " + reason(e);
+        }
     }
 
     /**
@@ -179,6 +194,11 @@ public final class ModelCatalog {
             }
         }
         return null;
+    }
+
+    /** The models, in load order: NoopPropagationModel, the other built-ins, the plugins. */
+    public List<PropagationModel> models() {
+        return List.copyOf(models.values());
     }
 
     /** The names of the models, in load order: NoopPropagationModel, the other built-ins, the plugins. */

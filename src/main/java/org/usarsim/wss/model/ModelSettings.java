@@ -4,9 +4,9 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * The settings handed to a model: string values by property name ({@code usarsim.host},
- * {@code distance.cutoff}, ...). Values given here were already checked by the server; a model
- * reads them with a default for any that is missing.
+ * The settings handed to a model: string values by key ({@code usarsim.host},
+ * {@code distance.cutoff}, ...), one for each {@link Setting} the model declares. The server checked
+ * every value with its setting's rule before; a model reads them with a fallback for any missing.
  */
 public final class ModelSettings {
 
@@ -28,6 +28,11 @@ public final class ModelSettings {
     public int getInt(String key, int fallback) {
         String value = values.get(key);
         return value == null ? fallback : Integer.parseInt(value.strip());
+    }
+
+    public boolean getBoolean(String key, boolean fallback) {
+        String value = values.get(key);
+        return value == null ? fallback : Boolean.parseBoolean(value.strip());
     }
 
     public Map<String, String> asMap() {

@@ -1,5 +1,7 @@
 package org.usarsim.wss.model;
 
+import java.util.List;
+
 /**
  * A propagation model decides, for every pair of robots, the signal strength between them and
  * whether they may talk. Implementations are found with {@link java.util.ServiceLoader}: list the
@@ -18,7 +20,20 @@ public interface PropagationModel {
         return getClass().getSimpleName();
     }
 
-    /** Takes the settings (headless: the properties file; GUI: the stored preferences). */
+    /**
+     * The settings the model takes, declared once: headless accepts their keys in the properties
+     * file, the GUI builds a dialog from them, both check every value with {@link Setting#problem}.
+     * None by default. Keys are the model's own ({@code mymodel.gain}); {@code wss.*} is the
+     * server's. See docs/models.md.
+     */
+    default List<Setting> settings() {
+        return List.of();
+    }
+
+    /**
+     * Takes the settings (headless: the properties file; GUI: the stored preferences): a value for
+     * every key of {@link #settings()}, checked with its rule, the default where none was given.
+     */
     default void configure(ModelSettings settings) {
     }
 
@@ -41,7 +56,10 @@ public interface PropagationModel {
 
     boolean isActive();
 
-    /** Whether {@link #showConfigurationDialog} does anything. */
+    /**
+     * Whether {@link #showConfigurationDialog} shows a dialog of the model's own, which the GUI
+     * then opens instead of the one it builds from {@link #settings()}.
+     */
     default boolean isConfigurable() {
         return false;
     }

@@ -31,4 +31,16 @@ public interface WssEventListener {
 
     default void dataSent(String from, String to, int bytes) {
     }
+
+    /** A DNS gave connections from {@code from} to {@code to}'s {@code targetPort} their own WSS port. */
+    default void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
+    }
+
+    /** A WSS port started or stopped listening (a robot came or went, a pair broke or resumed). */
+    default void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
+    }
+
+    /** A WSS port was given back to the OS (its robot was kicked out); the same DNS would get a new one. */
+    default void portForgotten(String from, String to, int targetPort, int wssPort) {
+    }
 }

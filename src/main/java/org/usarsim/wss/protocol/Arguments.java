@@ -9,7 +9,7 @@ import java.util.regex.Pattern;
 /** Reads the values of a command's fields: robot names and ports, with the errors they get. */
 public final class Arguments {
 
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?[0-9]{1,10}");
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?[0-9]+");
 
     private Arguments() {
     }
@@ -27,9 +27,10 @@ public final class Arguments {
     }
 
     /**
-     * INIT's {@code Port} field: a comma-separated list, whitespace around the commas tolerated,
-     * duplicates dropped, order kept. A missing or empty field is an empty list (a robot that
-     * accepts no connections).
+     * INIT's {@code Port} field: a comma-separated list of integers, whitespace around the commas
+     * tolerated, duplicates dropped, order kept. A missing or empty field is an empty list (a robot
+     * that accepts no connections). Any integer is accepted, as the original does (0, -1, 70000):
+     * the robot registers, and a port outside 1..65535 is never dialled (see Robot.resolvePort).
      */
     public static List<Integer> portList(Command command) throws ProtocolException {
         String list = command.value("Port");
@@ -42,22 +43,25 @@ public final class Arguments {
             if (port == null) {
                 throw new ProtocolException(Replies.PORTS_MUST_BE_INTEGER);
             }
-            ports.add(checkRange(port));
+            ports.add(port);
         }
         return new ArrayList<>(ports);
     }
 
-    /** DNS's optional {@code Port} field: 0 when missing, empty or 0 (the target's first port). */
+    /**
+     * DNS's optional {@code Port} field: 0 when missing or 0 (the target's first port), else the
+     * integer as asked, in range or not. An empty value is not an integer, as in the original.
+     */
     public static int targetPort(Command command) throws ProtocolException {
         String value = command.value("Port");
-        if (value == null || value.isEmpty()) {
+        if (value == null) {
             return 0;
         }
         Integer port = integer(value);
         if (port == null) {
             throw new ProtocolException(Replies.PORT_MUST_BE_INTEGER);
         }
-        return port == 0 ? 0 : checkRange(port);
+        return port;
     }
 
     /** REVERSEDNS's {@code Port} field, as asked; it must be an integer. */
@@ -69,14 +73,10 @@ public final class Arguments {
         return value;
     }
 
-    private static int checkRange(int port) throws ProtocolException {
-        if (port < 1 || port > 65535) {
-            throw new ProtocolException(Replies.PORT_OUT_OF_RANGE);
-        }
-        return port;
-    }
-
-    /** A decimal integer of ASCII digits with an optional sign, or null. */
+    /**
+     * A decimal integer of ASCII digits with an optional sign and any number of leading zeros,
+     * from -2147483648 to 2147483647 (a 32-bit int, as the original's conversion), or null.
+     */
     static Integer integer(String text) {
         if (!DECIMAL.matcher(text).matches()) {
             return null;

@@ -18,13 +18,21 @@ public record Command(String type, List<Field> fields) {
         fields = List.copyOf(fields);
     }
 
-    /** The value of the first segment with this key (case-sensitive), or null when there is none. */
+    /**
+     * The value of the last segment with this key (case-sensitive), or null when there is none.
+     * The last one counts, as in the original: {@code GETSS {Robot A} {Robot B}} asks for B.
+     */
     public String value(String key) {
-        for (Field field : fields) {
-            if (field.key().equals(key)) {
-                return field.value();
+        for (int i = fields.size() - 1; i >= 0; i--) {
+            if (fields.get(i).key().equals(key)) {
+                return fields.get(i).value();
             }
         }
         return null;
+    }
+
+    /** True for a line with no segment at all ({@code INIT}, {@code GETSS} alone): the original takes it for an unknown method. */
+    public boolean hasNoSegment() {
+        return fields.isEmpty();
     }
 }

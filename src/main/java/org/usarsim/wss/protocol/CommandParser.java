@@ -16,13 +16,19 @@ public final class CommandParser {
     }
 
     /**
-     * @return the command, or null for a blank line (which is ignored, never answered)
+     * @return the command, or null for a blank line (empty or spaces only: ignored, never
+     *     answered). A line of other whitespace only (tabs, vertical tab, form feed, the separators
+     *     0x1C-0x1F, a CR that is not the line end's) is a command with an empty word and no
+     *     segment: an unknown method, answered as the original answers one.
      * @throws ProtocolException with the reason to answer
      */
     public static Command parse(String line) throws ProtocolException {
+        if (line.chars().allMatch(c -> c == ' ')) {
+            return null;
+        }
         String text = line.strip();
         if (text.isEmpty()) {
-            return null;
+            return new Command("", List.of());
         }
         int i = 0;
         while (i < text.length() && !Character.isWhitespace(text.charAt(i)) && text.charAt(i) != '{') {

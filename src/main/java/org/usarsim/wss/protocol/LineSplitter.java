@@ -6,7 +6,8 @@ import java.nio.charset.StandardCharsets;
 /**
  * Cuts the bytes of a control connection into lines: LF or CR LF ends a line, lines may arrive
  * split across reads or several in one read. A line longer than {@link #MAX_LINE_BYTES} is
- * reported once, as soon as it is too long, and the rest of it is skipped up to its line end.
+ * reported once, as soon as it is too long (a CR right past the limit waits for the next byte,
+ * since it may be the line end's), and the rest of it is skipped up to its line end.
  */
 public final class LineSplitter {
 
@@ -41,8 +42,10 @@ public final class LineSplitter {
         if (skipping || length == 0) {
             return;
         }
-        // One byte of slack for the CR of a CR LF that may follow.
-        if (current.size() + length > MAX_LINE_BYTES + 1) {
+        // One byte of slack for the CR of a CR LF that may follow: a byte past the limit is too
+        // long at once unless it is a CR; the byte after that CR decides.
+        int size = current.size() + length;
+        if (size > MAX_LINE_BYTES + 1 || size == MAX_LINE_BYTES + 1 && bytes[offset + length - 1] != '\r') {
             current.reset();
             skipping = true;
             sink.lineTooLong();

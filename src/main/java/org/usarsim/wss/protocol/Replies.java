@@ -27,7 +27,6 @@ public final class Replies {
     public static final String MALFORMED_UNCLOSED_BRACE = "Malformed.Line.Unclosed.Brace";
     public static final String MALFORMED_NESTED_BRACE = "Malformed.Line.Nested.Brace";
     public static final String MALFORMED_EMPTY_SEGMENT = "Malformed.Line.Empty.Segment";
-    public static final String PORT_OUT_OF_RANGE = "Port.Must.Be.Between.1.And.65535";
     public static final String NAME_MUST_NOT_CONTAIN_WHITESPACE = "Robot.Name.Must.Not.Contain.Whitespace";
     /** A fault of the server's own (logged as a WARNING); the connection stays usable. */
     public static final String INTERNAL_ERROR = "Server.Internal.Error";

@@ -5,8 +5,9 @@ import java.util.function.Supplier;
 
 /**
  * USARSim's answers to the two commands the WSS's models send: {@code GETPOS} and
- * {@code GETOBS {From a} {To b}}. Every other line has no answer, as in USARSim. The only place
- * a reply of the world server is written.
+ * {@code GETOBS {From a} {To b}}, command words and keys in any case ({@code getpos},
+ * {@code GetObs {from a} {TO b}}) as USARSim matches them. Every other line has no answer, as in
+ * USARSim. The only place a reply of the world server is written.
  */
 final class PositionProtocol {
 
@@ -21,7 +22,7 @@ final class PositionProtocol {
             end++;
         }
         String rest = text.substring(end);
-        return switch (text.substring(0, end)) {
+        return switch (text.substring(0, end).toUpperCase(Locale.ROOT)) {
             case "GETPOS" -> positions(now.get());
             case "GETOBS" -> obstacles(rest, now);
             default -> null;
@@ -57,9 +58,9 @@ final class PositionProtocol {
             }
             String[] keyValue = segments.substring(i + 1, close).strip().split("\\s+", 2);
             if (keyValue.length == 2) {
-                if (keyValue[0].equals("From") && from == null) {
+                if (keyValue[0].equalsIgnoreCase("From") && from == null) {
                     from = keyValue[1].strip();
-                } else if (keyValue[0].equals("To") && to == null) {
+                } else if (keyValue[0].equalsIgnoreCase("To") && to == null) {
                     to = keyValue[1].strip();
                 }
             }

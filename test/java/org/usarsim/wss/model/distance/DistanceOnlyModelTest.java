@@ -26,6 +26,11 @@ import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.simulator.DataConnection;
+import org.usarsim.wss.model.simulator.FakeSimulator;
+import org.usarsim.wss.model.simulator.ModelRig;
+import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.RobotState;
 import org.usarsim.wss.protocol.Replies;
 
 /**

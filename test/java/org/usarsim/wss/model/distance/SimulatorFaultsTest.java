@@ -23,6 +23,10 @@ import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Sockets;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
+import org.usarsim.wss.model.simulator.DataConnection;
+import org.usarsim.wss.model.simulator.FakeSimulator;
+import org.usarsim.wss.model.simulator.ModelRig;
+import org.usarsim.wss.model.simulator.PathLoss;
 import org.usarsim.wss.protocol.Replies;
 
 /**

@@ -17,11 +17,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
-import org.usarsim.wss.model.distance.DataConnection;
-import org.usarsim.wss.model.distance.FakeSimulator;
-import org.usarsim.wss.model.distance.ModelRig;
-import org.usarsim.wss.model.distance.PathLoss;
-import org.usarsim.wss.model.distance.RobotState;
+import org.usarsim.wss.model.simulator.DataConnection;
+import org.usarsim.wss.model.simulator.FakeSimulator;
+import org.usarsim.wss.model.simulator.ModelRig;
+import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.RobotState;
 import org.usarsim.wss.protocol.Replies;
 
 /** The Obstacle model for real: a fake simulator answering GETPOS and GETOBS, robots on a hub. */

@@ -1,6 +1,8 @@
 package org.usarsim.wss.model.distance;
 
 import java.util.Map;
+import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * The original's DistanceOnly model: S = Pd0 - 10 N log10(d / d0) with d the 3-D distance between

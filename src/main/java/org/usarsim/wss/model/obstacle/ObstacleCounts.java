@@ -3,8 +3,8 @@ package org.usarsim.wss.model.obstacle;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Predicate;
-import org.usarsim.wss.model.distance.NamePair;
-import org.usarsim.wss.model.distance.RobotState;
+import org.usarsim.wss.model.simulator.NamePair;
+import org.usarsim.wss.model.simulator.RobotState;
 
 /**
  * The latest obstacle count the simulator gave per pair, and where the two robots were when it was

@@ -1,6 +1,7 @@
 package org.usarsim.wss.model.obstacle;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -8,10 +9,11 @@ import java.util.Set;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
-import org.usarsim.wss.model.distance.NamePair;
-import org.usarsim.wss.model.distance.RobotState;
-import org.usarsim.wss.model.distance.SimulatorConnection;
-import org.usarsim.wss.model.distance.SimulatorModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.simulator.NamePair;
+import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.SimulatorConnection;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * The original's realisation of the manual's RayTracing idea: the DistanceOnly strength minus a
@@ -25,11 +27,28 @@ public final class ObstaclePropagationModel extends SimulatorModel {
 
     private static final Logger LOG = Logger.getLogger(ObstaclePropagationModel.class.getName());
 
-    private double attenuation = 6.325;
-    private double cacheDistance = 1.0;
+    private static final List<Setting> OBSTACLES = List.of(
+            Setting.number("obstacle.attenuation", "Attenuation per obstacle", "6.325").from(0).unit("dB")
+                    .help("The loss for each obstacle between two robots"),
+            Setting.number("obstacle.cacheDistance", "Cache distance", "1.0").from(0).unit("m")
+                    .help("How far a robot moves before the obstacles between it and the others are counted again"));
+
+    /** The declared defaults: the values until {@link #configure}. */
+    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(OBSTACLES));
+
+    private double attenuation = DEFAULTS.getDouble("obstacle.attenuation", 0);
+    private double cacheDistance = DEFAULTS.getDouble("obstacle.cacheDistance", 0);
     private volatile ObstacleCounts counts = new ObstacleCounts(cacheDistance);
     /** Whether the last batch of GETOBS went unanswered (used by the poller only). */
     private boolean getobsUnanswered;
+
+    /** The simulator models' settings, then obstacle.attenuation and obstacle.cacheDistance. */
+    @Override
+    public List<Setting> settings() {
+        List<Setting> all = new ArrayList<>(super.settings());
+        all.addAll(OBSTACLES);
+        return List.copyOf(all);
+    }
 
     @Override
     public void configure(ModelSettings settings) {

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 

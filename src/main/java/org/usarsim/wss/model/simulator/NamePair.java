@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 /** Two robot names in ascending order: one unordered pair. */
 public record NamePair(String first, String second) {

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
@@ -16,6 +16,7 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.hub.Wait;
 
 /** What both simulator models share: a poll that fails, a stop and a new start, a reply cut by a timeout. */

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 /** Where the simulator says a robot is, in metres, and whether its battery is empty. */
 public record RobotState(String name, double x, double y, double z, boolean batteryEmpty) {

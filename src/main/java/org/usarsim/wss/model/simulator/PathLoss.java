@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 /**
  * The log-distance path loss of the original: S = Pd0 - 10 N log10(d / d0) dBm at d metres; a pair

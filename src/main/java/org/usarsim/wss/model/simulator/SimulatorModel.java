@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 import java.util.ArrayList;
@@ -12,6 +12,7 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -27,15 +28,40 @@ public abstract class SimulatorModel implements PropagationModel {
 
     private static final long MAX_BACKOFF_MS = 10_000;
 
+    /** The settings of every simulator model: the simulator's connection, the path loss, the link stability. */
+    static final List<Setting> SETTINGS = List.of(
+            Setting.host("usarsim.host", "Host", "127.0.0.1")
+                    .help("The machine of the simulator's position socket: a host name or an IP address"),
+            Setting.integer("usarsim.port", "Port", 7435).from(1).to(65535).noun("a port number")
+                    .help("The simulator's position port, 7435 as a rule; not 3000, which is USARSim's robot port"),
+            Setting.integer("usarsim.interval", "Poll interval", 1000).from(100).to(60000).unit("ms")
+                    .help("Milliseconds between two requests for the robots' positions (GETPOS)"),
+            Setting.integer("usarsim.timeout", "Timeout", 2000).from(100).to(60000).unit("ms")
+                    .help("Milliseconds to wait for the simulator's answer"),
+            Setting.number("distance.cutoff", "Cutoff", "-93").unit("dBm")
+                    .help("Below this signal strength two robots cannot talk; -93 dBm is a property of the channel, best left as it is"),
+            Setting.number("distance.pd0", "Pd0", "-49.67").unit("dBm").help("The signal strength at distance d0"),
+            Setting.number("distance.n", "N", "1").above(0)
+                    .help("The attenuation factor of the environment: how fast the signal fades with distance"),
+            Setting.number("distance.d0", "d0", "2").above(0).unit("m").help("The distance at which the strength is Pd0"),
+            Setting.number("distance.margin", "Margin", "0").from(0).unit("dB")
+                    .help("A broken link resumes only when the strength is above Cutoff + Margin, so that a pair at the edge does not flap"),
+            Setting.number("distance.holdTime", "Hold time", "0").from(0).unit("s")
+                    .help("A link stays broken, or resumed, at least this many seconds before it changes again"));
+
     private final Logger log = Logger.getLogger(getClass().getName());
 
-    private String host = "127.0.0.1";
-    private int port = 7435;
-    private int intervalMs = 1000;
-    private int timeoutMs = 2000;
-    private PathLoss pathLoss = new PathLoss(-49.67, 1, 2, -93);
-    private double margin;
-    private double holdSeconds;
+    /** The declared defaults: the values until {@link #configure}. */
+    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(SETTINGS));
+
+    private String host = DEFAULTS.getString("usarsim.host", null);
+    private int port = DEFAULTS.getInt("usarsim.port", 0);
+    private int intervalMs = DEFAULTS.getInt("usarsim.interval", 0);
+    private int timeoutMs = DEFAULTS.getInt("usarsim.timeout", 0);
+    private PathLoss pathLoss = new PathLoss(DEFAULTS.getDouble("distance.pd0", 0), DEFAULTS.getDouble("distance.n", 0),
+            DEFAULTS.getDouble("distance.d0", 0), DEFAULTS.getDouble("distance.cutoff", 0));
+    private double margin = DEFAULTS.getDouble("distance.margin", 0);
+    private double holdSeconds = DEFAULTS.getDouble("distance.holdTime", 0);
 
     private volatile RobotLinkModel linkModel;
     private volatile WssEventListener listener = new WssEventListener() {
@@ -44,6 +70,12 @@ public abstract class SimulatorModel implements PropagationModel {
     private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile Poller poller;
+
+    /** The simulator's connection (usarsim.*), the path loss (distance.*) and the link stability (distance.margin, distance.holdTime). */
+    @Override
+    public List<Setting> settings() {
+        return SETTINGS;
+    }
 
     @Override
     public void configure(ModelSettings settings) {
@@ -117,11 +149,6 @@ public abstract class SimulatorModel implements PropagationModel {
     @Override
     public boolean isActive() {
         return poller != null;
-    }
-
-    @Override
-    public boolean isConfigurable() {
-        return true;
     }
 
     /** The strength from the last known positions: NaN while either robot's position is unknown. */

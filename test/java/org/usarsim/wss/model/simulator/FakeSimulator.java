@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.distance;
+package org.usarsim.wss.model.simulator;
 
 import java.io.BufferedReader;
 import java.io.IOException;
@@ -18,6 +18,7 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongFunction;
+import java.util.function.Supplier;
 
 /**
  * A scripted USARSim position socket on 127.0.0.1: answers GETPOS with the robots placed here (or
@@ -38,6 +39,7 @@ public final class FakeSimulator implements AutoCloseable {
     private volatile ServerSocket server;
     private volatile Mode mode = Mode.ANSWER;
     private volatile long getobsDelayMs;
+    private volatile Supplier<String> garbage = () -> "this is not a reply";
     private LongFunction<List<RobotState>> script;
     private long scriptBase;
 
@@ -82,6 +84,12 @@ public final class FakeSimulator implements AutoCloseable {
 
     public void mode(Mode mode) {
         this.mode = mode;
+    }
+
+    /** Answers each GETPOS with the next of these lines (no line end in them) from now on: mode GARBAGE. */
+    public void garbage(Supplier<String> lines) {
+        garbage = lines;
+        mode = Mode.GARBAGE;
     }
 
     public long getposCount() {
@@ -167,7 +175,7 @@ public final class FakeSimulator implements AutoCloseable {
                 long n = getpos.incrementAndGet();
                 return switch (now) {
                     case SILENT -> null;
-                    case GARBAGE -> "this is not a reply";
+                    case GARBAGE -> garbage.get();
                     default -> positions(n);
                 };
             }

@@ -1,0 +1,66 @@
+package org.usarsim.wss.app;
+
+import java.util.concurrent.atomic.AtomicReference;
+import org.usarsim.wss.gui.Servers;
+import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * The window's servers, built as headless mode builds its one ({@link Server}): the settings of
+ * the --config file or the defaults, with the window's port and event log choice.
+ */
+final class WindowServers implements Servers {
+
+    private final Settings settings;
+    private final AtomicReference<Server> current = new AtomicReference<>();
+
+    WindowServers(Settings settings) {
+        this.settings = settings;
+    }
+
+    @Override
+    public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Server.StartFailure {
+        String problem = Setting.find(Settings.SERVER, "wss.port").problem(port);
+        if (problem != null) {
+            throw new Server.StartFailure("the port '" + port + "' is not " + problem);
+        }
+        HubConfig config = settings.hubConfig().withControlPort(Integer.parseInt(port.strip()));
+        Server server = Server.create(config, model, eventLog ? settings.eventLogDir() : null);
+        server.hub().addListener(listener);
+        current.set(server);
+        try {
+            server.start();
+        } catch (Server.StartFailure e) {
+            current.compareAndSet(server, null);
+            throw e;
+        }
+        return new Running() {
+            @Override
+            public int port() {
+                return server.hub().controlPort();
+            }
+
+            @Override
+            public HubSnapshot snapshot() {
+                return server.hub().snapshot();
+            }
+
+            @Override
+            public void stop() {
+                current.compareAndSet(server, null);
+                server.close();
+            }
+        };
+    }
+
+    /** Stops the server that runs or starts now, if any (SIGTERM while the window is open). */
+    void stopCurrent() {
+        Server server = current.getAndSet(null);
+        if (server != null) {
+            server.close();
+        }
+    }
+}

@@ -1,0 +1,14 @@
+package org.usarsim.wss.gui;
+
+import org.usarsim.wss.model.ModelSettings;
+
+/**
+ * What the command line asks of the window: a port, a model and "Enable Logging" over the stored
+ * ones (null: the stored one), the model settings of a --config file for this session's runs
+ * (null: the stored ones), and whether to press Start at once.
+ */
+public record Launch(String port, String model, Boolean eventLog, ModelSettings modelSettings, boolean start) {
+
+    /** Nothing over the stored settings; Start not pressed. */
+    public static final Launch STORED = new Launch(null, null, null, null, false);
+}

@@ -1,0 +1,274 @@
+package org.usarsim.wss.gui;
+
+import java.awt.BorderLayout;
+import java.awt.Dimension;
+import java.awt.GridLayout;
+import java.awt.Rectangle;
+import java.awt.event.WindowAdapter;
+import java.awt.event.WindowEvent;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.logging.Logger;
+import javax.swing.BorderFactory;
+import javax.swing.JFrame;
+import javax.swing.JOptionPane;
+import javax.swing.JPanel;
+import javax.swing.JSplitPane;
+import javax.swing.SwingUtilities;
+import javax.swing.SwingWorker;
+import javax.swing.Timer;
+import javax.swing.WindowConstants;
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PropagationModel;
+
+/**
+ * The main window (the manual's Figure 1): the control bar, "Connected Robots", the ports and
+ * connections tables, and the log. Starts and stops a server through {@link Servers}, off the
+ * event thread; shows the hub through a {@link NetworkView} and the log through a
+ * {@link WindowLog}, both taken on a Swing timer every {@link #REFRESH_MS} ms. Everything here
+ * runs on the event thread.
+ */
+public final class MainWindow {
+
+    static final String TITLE = "WSS";
+    static final int REFRESH_MS = 250;
+    private static final Logger LOG = Logger.getLogger(MainWindow.class.getName());
+
+    private final JFrame frame = new JFrame(TITLE);
+    private final ControlBar bar;
+    private final RobotsPanel robots = new RobotsPanel();
+    private final PortsPanel ports = new PortsPanel();
+    private final LinksPanel links = new LinksPanel();
+    private final LogPanel log = new LogPanel();
+    private final NetworkView view = new NetworkView();
+    private final Timer timer;
+    private final Servers servers;
+    private final Map<String, PropagationModel> models = new LinkedHashMap<>();
+    private final WindowSettings settings;
+    private final ModelPreferences modelPreferences;
+    private final WindowLog windowLog;
+    private final Runnable onClosed;
+    /** A --config file's model settings, used for every start until a dialog stores new ones. */
+    private ModelSettings runSettings;
+    private ControlBar.State state = ControlBar.State.STOPPED;
+    private Servers.Running running;
+    private boolean closing;
+
+    private MainWindow(Servers servers, List<PropagationModel> modelList, WindowSettings settings,
+            ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
+        this.servers = servers;
+        modelList.forEach(model -> models.put(model.name(), model));
+        this.settings = settings;
+        this.modelPreferences = modelPreferences;
+        this.windowLog = windowLog;
+        this.onClosed = onClosed;
+        this.runSettings = launch.modelSettings();
+        bar = new ControlBar(List.copyOf(models.keySet()));
+        bar.port.setText(launch.port() != null ? launch.port() : settings.port());
+        bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : settings.eventLog());
+        String model = launch.model() != null ? launch.model() : settings.model();
+        if (models.containsKey(model)) {
+            bar.model.setSelectedItem(model);
+        } else {
+            LOG.warning("the model " + model + " of the last run is not here any more; " + bar.model.getSelectedItem() + " instead");
+        }
+        bar.start.addActionListener(e -> startOrStop());
+        bar.model.addActionListener(e -> showState());
+        bar.configure.addActionListener(e -> configure());
+        timer = new Timer(REFRESH_MS, e -> refresh());
+        layOut();
+        showState();
+    }
+
+    /**
+     * Builds and shows the window; presses Start when the launch asks. {@code onClosed} runs once the
+     * window is closed and the server stopped (the application exits there). Event thread.
+     */
+    public static MainWindow open(Servers servers, List<PropagationModel> models, WindowSettings settings,
+            ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
+        MainWindow window = new MainWindow(servers, models, settings, modelPreferences, windowLog, launch, onClosed);
+        window.frame.setVisible(true);
+        window.timer.start();
+        if (launch.start()) {
+            SwingUtilities.invokeLater(window.bar.start::doClick);
+        }
+        return window;
+    }
+
+    /** The window itself (tests and the benchmark find its components by name). */
+    public JFrame frame() {
+        return frame;
+    }
+
+    private void layOut() {
+        frame.setName("wss");
+        frame.setDefaultCloseOperation(WindowConstants.DO_NOTHING_ON_CLOSE);
+        frame.addWindowListener(new WindowAdapter() {
+            @Override
+            public void windowClosing(WindowEvent e) {
+                close();
+            }
+        });
+        JPanel right = new JPanel(new GridLayout(2, 1, 0, 8));
+        right.add(ports);
+        right.add(links);
+        JSplitPane tables = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, robots, right);
+        tables.setResizeWeight(0.3);
+        tables.setBorder(null);
+        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tables, log);
+        center.setResizeWeight(0.75);
+        center.setBorder(null);
+        JPanel content = new JPanel(new BorderLayout(0, 8));
+        content.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
+        content.add(bar, BorderLayout.NORTH);
+        content.add(center, BorderLayout.CENTER);
+        frame.setContentPane(content);
+        frame.setMinimumSize(new Dimension(640, 480));
+        Rectangle bounds = settings.bounds();
+        if (bounds != null) {
+            frame.setBounds(bounds);
+        } else {
+            frame.setSize(960, 700);
+            frame.setLocationByPlatform(true);
+        }
+    }
+
+    private PropagationModel selectedModel() {
+        return models.get((String) bar.model.getSelectedItem());
+    }
+
+    private void showState() {
+        PropagationModel model = selectedModel();
+        bar.show(state, model != null && ModelDialogs.isConfigurable(model));
+    }
+
+    private void setState(ControlBar.State newState) {
+        state = newState;
+        showState();
+    }
+
+    private void refresh() {
+        HubSnapshot snapshot = view.poll();
+        if (snapshot != null) {
+            robots.show(snapshot.robots());
+            ports.show(snapshot.ports());
+            links.show(snapshot.links());
+        }
+        log.append(windowLog.drain());
+    }
+
+    private void startOrStop() {
+        if (state == ControlBar.State.STOPPED) {
+            start();
+        } else if (state == ControlBar.State.RUNNING) {
+            stop();
+        }
+    }
+
+    private void start() {
+        String port = bar.port.getText().strip();
+        PropagationModel model = selectedModel();
+        boolean eventLog = bar.eventLog.isSelected();
+        try {
+            if (runSettings != null) {
+                model.configure(runSettings);
+            } else {
+                ModelDialogs.configureFromPreferences(model, modelPreferences);
+            }
+        } catch (RuntimeException e) {
+            failed(model.name() + " did not accept its settings: " + e.getMessage());
+            return;
+        }
+        setState(ControlBar.State.STARTING);
+        new SwingWorker<Servers.Running, Void>() {
+            @Override
+            protected Servers.Running doInBackground() throws Exception {
+                return servers.start(port, model, eventLog, view);
+            }
+
+            @Override
+            protected void done() {
+                try {
+                    running = get();
+                } catch (ExecutionException e) {
+                    setState(ControlBar.State.STOPPED);
+                    if (closing) {
+                        finishClosing();
+                    } else {
+                        Throwable cause = e.getCause();
+                        failed(cause.getMessage() != null ? cause.getMessage() : cause.toString());
+                    }
+                    return;
+                } catch (InterruptedException e) {
+                    throw new IllegalStateException("the event thread was interrupted", e);
+                }
+                settings.storeRun(port, model.name(), eventLog);
+                view.attach(running);
+                setState(ControlBar.State.RUNNING);
+                if (closing) {
+                    stop();
+                }
+            }
+        }.execute();
+    }
+
+    /** Says why in the log and in a message dialog; the window stays usable. */
+    private void failed(String message) {
+        LOG.warning(message);
+        SwingUtilities.invokeLater(() -> JOptionPane.showMessageDialog(frame, message, TITLE, JOptionPane.ERROR_MESSAGE));
+    }
+
+    private void stop() {
+        Servers.Running stopping = running;
+        running = null;
+        setState(ControlBar.State.STOPPING);
+        new SwingWorker<Void, Void>() {
+            @Override
+            protected Void doInBackground() {
+                stopping.stop();
+                return null;
+            }
+
+            @Override
+            protected void done() {
+                view.detach();
+                setState(ControlBar.State.STOPPED);
+                if (closing) {
+                    finishClosing();
+                }
+            }
+        }.execute();
+    }
+
+    private void configure() {
+        PropagationModel model = selectedModel();
+        if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences)) {
+            runSettings = null;
+        }
+    }
+
+    /** Closing the window: stops the server as SIGTERM does, then {@code onClosed}. */
+    private void close() {
+        if (closing) {
+            return;
+        }
+        closing = true;
+        if (state == ControlBar.State.STOPPED) {
+            finishClosing();
+        } else if (state == ControlBar.State.RUNNING) {
+            stop();
+        }
+        // STARTING or STOPPING: the worker's done() goes on from here.
+    }
+
+    private void finishClosing() {
+        settings.storeBounds(frame.getBounds());
+        timer.stop();
+        view.close();
+        frame.dispose();
+        onClosed.run();
+    }
+}

@@ -1,0 +1,35 @@
+package org.usarsim.wss.gui;
+
+import java.awt.BorderLayout;
+import java.util.List;
+import java.util.stream.Collectors;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JScrollPane;
+import javax.swing.JTable;
+import org.usarsim.wss.hub.HubSnapshot.RobotEntry;
+
+/** "Connected Robots": each registered robot's name, the address it registered from, its accepting ports. */
+final class RobotsPanel extends JPanel {
+
+    private final RowsModel<RobotEntry> model = new RowsModel<>(List.of(
+            new RowsModel.Column<>("Name", String.class, RobotEntry::name),
+            new RowsModel.Column<>("IP", String.class, RobotEntry::address),
+            new RowsModel.Column<>("Ports", String.class,
+                    robot -> robot.ports().stream().map(String::valueOf).collect(Collectors.joining(",")))));
+
+    RobotsPanel() {
+        super(new BorderLayout(0, 4));
+        JTable table = new JTable(model);
+        table.setName("robots");
+        table.setAutoCreateRowSorter(true);
+        table.setFillsViewportHeight(true);
+        add(new JLabel("Connected Robots"), BorderLayout.NORTH);
+        add(new JScrollPane(table), BorderLayout.CENTER);
+    }
+
+    /** Event thread. */
+    void show(List<RobotEntry> robots) {
+        model.setRows(robots);
+    }
+}

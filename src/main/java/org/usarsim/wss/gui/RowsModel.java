@@ -1,0 +1,53 @@
+package org.usarsim.wss.gui;
+
+import java.util.List;
+import java.util.function.Function;
+import javax.swing.table.AbstractTableModel;
+
+/** A table of immutable rows, replaced as a whole from the read model; only a real change repaints. */
+final class RowsModel<T> extends AbstractTableModel {
+
+    /** One column: its header, its type (what it sorts as) and how a row shows in it. */
+    record Column<T>(String header, Class<?> type, Function<T, Object> value) {
+    }
+
+    private final List<Column<T>> columns;
+    private List<T> rows = List.of();
+
+    RowsModel(List<Column<T>> columns) {
+        this.columns = List.copyOf(columns);
+    }
+
+    /** Event thread. */
+    void setRows(List<T> newRows) {
+        if (!newRows.equals(rows)) {
+            rows = List.copyOf(newRows);
+            fireTableDataChanged();
+        }
+    }
+
+    @Override
+    public int getRowCount() {
+        return rows.size();
+    }
+
+    @Override
+    public int getColumnCount() {
+        return columns.size();
+    }
+
+    @Override
+    public String getColumnName(int column) {
+        return columns.get(column).header();
+    }
+
+    @Override
+    public Class<?> getColumnClass(int column) {
+        return columns.get(column).type();
+    }
+
+    @Override
+    public Object getValueAt(int row, int column) {
+        return columns.get(column).value().apply(rows.get(row));
+    }
+}

@@ -1,0 +1,35 @@
+package org.usarsim.wss.gui;
+
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * How the window starts a server: the same way headless mode does (the application supplies it),
+ * so that the window never builds a hub, an event log or a model run of its own.
+ */
+public interface Servers {
+
+    /**
+     * Starts a server on that control port with that model (configured already), the CSV event
+     * log when {@code eventLog}, and {@code listener} receiving its events from the first robot on.
+     * Slow (a model may connect to the simulator): never on the event thread.
+     *
+     * @throws Exception when it does not start; the message says why in one line, and nothing is
+     *                   left listening
+     */
+    Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Exception;
+
+    /** A server that runs. */
+    interface Running {
+
+        /** The control port it listens on (the one the OS chose when asked for 0). */
+        int port();
+
+        /** Its robots, ports and links at one instant (takes the hub's lock briefly: never on the event thread). */
+        HubSnapshot snapshot();
+
+        /** Stops it as SIGTERM does: every socket closed, the event log closed. */
+        void stop();
+    }
+}

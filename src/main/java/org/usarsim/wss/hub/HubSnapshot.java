@@ -1,0 +1,33 @@
+package org.usarsim.wss.hub;
+
+import java.util.List;
+
+/**
+ * The hub's state at one instant, taken under its lock: what a window that starts observing late,
+ * or checks itself, shows. Each list is sorted (robots by name, ports and links by from, to, port).
+ */
+public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<LinkEntry> links) {
+
+    public static final HubSnapshot EMPTY = new HubSnapshot(List.of(), List.of(), List.of());
+
+    public HubSnapshot {
+        robots = List.copyOf(robots);
+        ports = List.copyOf(ports);
+        links = List.copyOf(links);
+    }
+
+    /** A registered robot: its name, the address its control connection came from, its accepting ports. */
+    public record RobotEntry(String name, String address, List<Integer> ports) {
+        public RobotEntry {
+            ports = List.copyOf(ports);
+        }
+    }
+
+    /** A WSS port for connections from one robot to one port of another, and whether it listens now. */
+    public record PortEntry(String from, String to, int targetPort, int wssPort, boolean listening) {
+    }
+
+    /** An established connection through a WSS port, with the WSS's outgoing port to the target. */
+    public record LinkEntry(String from, String to, int targetPort, int wssPort, int outgoingPort) {
+    }
+}

@@ -1,0 +1,392 @@
+package org.usarsim.wss.model;
+
+import java.math.BigDecimal;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
+import java.nio.file.Path;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Set;
+
+/**
+ * One setting a model (or the server) declares: its key, a label for dialogs, its type, default,
+ * allowed range, unit and a line of help. {@link #problem} is the one rule for its values, used by
+ * the headless properties file, the GUI's dialogs and stored preferences alike; its words say what
+ * is expected ("a whole number of milliseconds from 100 to 60000").
+ *
+ * <p>Declared with a factory and refinements, each returning a new, immutable setting:
+ * <pre>
+ * Setting.integer("usarsim.port", "Port", 7435).from(1).to(65535).noun("a port number").help("...")
+ * Setting.number("distance.d0", "d0", "2").above(0).unit("m").help("...")
+ * </pre>
+ */
+public final class Setting {
+
+    /** What a value is. Values are always strings, stripped of surrounding whitespace. */
+    public enum Type {
+        /** A whole number ({@code int}); see {@link #from}, {@link #to}. */
+        INTEGER,
+        /** A finite decimal number ({@code double}); see {@link #from}, {@link #above}, {@link #to}, {@link #below}. */
+        NUMBER,
+        /** {@code true} or {@code false}, in any case; a check box in the dialogs. */
+        BOOLEAN,
+        /** Any text that is not empty. */
+        TEXT,
+        /** A host name or an IP address: not empty, no whitespace. */
+        HOST,
+        /** An IP address of this machine, or a name that resolves to one. */
+        ADDRESS,
+        /** An existing directory. */
+        DIRECTORY,
+        /** One of a fixed list of words. */
+        CHOICE
+    }
+
+    private final String key;
+    private final String label;
+    private final Type type;
+    private final String defaultValue;
+    private final List<String> choices;
+    // Set by the refinements, each on a fresh copy: a setting never changes once returned.
+    private Double min;
+    private boolean minExclusive;
+    private Double max;
+    private boolean maxExclusive;
+    private String unit;
+    private String help = "";
+    private String noun;
+    private String note;
+    private boolean emptyAllowed;
+
+    private Setting(String key, String label, Type type, String defaultValue, List<String> choices) {
+        this.key = Objects.requireNonNull(key, "key");
+        this.label = Objects.requireNonNull(label, "label");
+        this.type = Objects.requireNonNull(type, "type");
+        this.defaultValue = Objects.requireNonNull(defaultValue, "defaultValue").strip();
+        this.choices = List.copyOf(choices);
+    }
+
+    private static Setting of(String key, String label, Type type, String defaultValue) {
+        return new Setting(key, label, type, defaultValue, List.of());
+    }
+
+    /** A copy to refine. */
+    private Setting copy() {
+        Setting copy = new Setting(key, label, type, defaultValue, choices);
+        copy.min = min;
+        copy.minExclusive = minExclusive;
+        copy.max = max;
+        copy.maxExclusive = maxExclusive;
+        copy.unit = unit;
+        copy.help = help;
+        copy.noun = noun;
+        copy.note = note;
+        copy.emptyAllowed = emptyAllowed;
+        return copy;
+    }
+
+    /** A whole number. */
+    public static Setting integer(String key, String label, int defaultValue) {
+        return of(key, label, Type.INTEGER, String.valueOf(defaultValue));
+    }
+
+    /** A finite decimal number; the default as it is to be shown, e.g. {@code "-49.67"}. */
+    public static Setting number(String key, String label, String defaultValue) {
+        return of(key, label, Type.NUMBER, defaultValue);
+    }
+
+    /** True or false: a check box. */
+    public static Setting bool(String key, String label, boolean defaultValue) {
+        return of(key, label, Type.BOOLEAN, String.valueOf(defaultValue));
+    }
+
+    /** Text that is not empty. */
+    public static Setting text(String key, String label, String defaultValue) {
+        return of(key, label, Type.TEXT, defaultValue);
+    }
+
+    /** A host name or an IP address. */
+    public static Setting host(String key, String label, String defaultValue) {
+        return of(key, label, Type.HOST, defaultValue);
+    }
+
+    /** An IP address of this machine (or a name of one). */
+    public static Setting address(String key, String label, String defaultValue) {
+        return of(key, label, Type.ADDRESS, defaultValue);
+    }
+
+    /** An existing directory. */
+    public static Setting directory(String key, String label, String defaultValue) {
+        return of(key, label, Type.DIRECTORY, defaultValue);
+    }
+
+    /** One of these words, exactly. */
+    public static Setting choice(String key, String label, String defaultValue, List<String> choices) {
+        return new Setting(key, label, Type.CHOICE, defaultValue, choices);
+    }
+
+    // ---- refinements ----
+
+    /** The smallest value allowed, itself allowed. */
+    public Setting from(double minimum) {
+        Setting copy = copy();
+        copy.min = minimum;
+        copy.minExclusive = false;
+        return copy;
+    }
+
+    /** Values must be above this one (NUMBER). */
+    public Setting above(double minimum) {
+        Setting copy = from(minimum);
+        copy.minExclusive = true;
+        return copy;
+    }
+
+    /** The largest value allowed, itself allowed. */
+    public Setting to(double maximum) {
+        Setting copy = copy();
+        copy.max = maximum;
+        copy.maxExclusive = false;
+        return copy;
+    }
+
+    /** Values must be below this one (NUMBER). */
+    public Setting below(double maximum) {
+        Setting copy = to(maximum);
+        copy.maxExclusive = true;
+        return copy;
+    }
+
+    /** The unit, as shown beside the field: {@code ms}, {@code s}, {@code m}, {@code dB}, ... */
+    public Setting unit(String symbol) {
+        Setting copy = copy();
+        copy.unit = symbol;
+        return copy;
+    }
+
+    /** A line saying what the setting does: the dialogs' tooltip, {@code --help} and the docs. */
+    public Setting help(String line) {
+        Setting copy = copy();
+        copy.help = line == null ? "" : line;
+        return copy;
+    }
+
+    /** What a value is called in {@link #expected}, instead of the type's word: "a port number". */
+    public Setting noun(String words) {
+        Setting copy = copy();
+        copy.noun = words;
+        return copy;
+    }
+
+    /** A remark on a special value, added to {@link #expected} in parentheses: "0: any free port". */
+    public Setting note(String remark) {
+        Setting copy = copy();
+        copy.note = remark;
+        return copy;
+    }
+
+    /** An empty value is accepted too, and means this: "none". */
+    public Setting orEmpty(String meaning) {
+        Setting copy = note("empty: " + meaning);
+        copy.emptyAllowed = true;
+        return copy;
+    }
+
+    // ---- the declaration ----
+
+    public String key() {
+        return key;
+    }
+
+    public String label() {
+        return label;
+    }
+
+    public Type type() {
+        return type;
+    }
+
+    public String defaultValue() {
+        return defaultValue;
+    }
+
+    /** The unit's symbol, or null. */
+    public String unit() {
+        return unit;
+    }
+
+    /** The label with its unit, as a dialog shows it: "Timeout (ms)". */
+    public String labelWithUnit() {
+        return unit == null ? label : label + " (" + unit + ")";
+    }
+
+    public String help() {
+        return help;
+    }
+
+    // ---- the rule ----
+
+    /**
+     * Null when the value (stripped of surrounding whitespace) is accepted; else the words for
+     * what is expected, e.g. "a port number from 1 to 65535", to follow "is not".
+     */
+    public String problem(String value) {
+        return value != null && accepts(value.strip()) ? null : expected();
+    }
+
+    /** What a value must be: "a number of metres above 0", "true or false", ... */
+    public String expected() {
+        StringBuilder words = new StringBuilder(noun != null ? noun : switch (type) {
+            case INTEGER -> "a whole number";
+            case NUMBER -> "a number";
+            case BOOLEAN -> "true or false";
+            case TEXT -> "some text";
+            case HOST -> "a host name or IP address";
+            case ADDRESS -> "an IP address of this machine";
+            case DIRECTORY -> "an existing directory";
+            case CHOICE -> "one of " + String.join(", ", choices);
+        });
+        boolean numeric = type == Type.INTEGER || type == Type.NUMBER;
+        String range = numeric ? range() : "";
+        if (numeric && unit != null) {
+            words.append(range.isEmpty() ? " (" + unit + ")" : " of " + unitWords(unit));
+        }
+        words.append(range);
+        if (note != null) {
+            words.append(" (").append(note).append(')');
+        }
+        return words.toString();
+    }
+
+    /** The range in words, with a leading space or comma; empty when there is none. */
+    private String range() {
+        if (min != null && max != null && !minExclusive && !maxExclusive) {
+            return " from " + format(min) + " to " + format(max);
+        }
+        String low = min == null ? null : minExclusive ? " above " + format(min) : ", " + format(min) + " or more";
+        String high = max == null ? null : maxExclusive ? " below " + format(max) : ", " + format(max) + " or less";
+        if (low != null && high != null) {
+            return low + " and" + high.replaceFirst("^,", "");
+        }
+        return low != null ? low : high != null ? high : "";
+    }
+
+    private static String unitWords(String unit) {
+        return switch (unit) {
+            case "ms" -> "milliseconds";
+            case "s" -> "seconds";
+            case "m" -> "metres";
+            default -> unit;
+        };
+    }
+
+    private static String format(double value) {
+        return BigDecimal.valueOf(value).stripTrailingZeros().toPlainString();
+    }
+
+    private boolean accepts(String value) {
+        if (value.isEmpty()) {
+            return emptyAllowed;
+        }
+        return switch (type) {
+            case INTEGER -> {
+                try {
+                    yield inRange(Integer.parseInt(value));
+                } catch (NumberFormatException e) {
+                    yield false;
+                }
+            }
+            case NUMBER -> {
+                try {
+                    double number = Double.parseDouble(value);
+                    yield Double.isFinite(number) && inRange(number);
+                } catch (NumberFormatException e) {
+                    yield false;
+                }
+            }
+            case BOOLEAN -> value.equalsIgnoreCase("true") || value.equalsIgnoreCase("false");
+            case TEXT -> true;
+            case HOST -> value.chars().noneMatch(Character::isWhitespace);
+            case ADDRESS -> isAddress(value);
+            case DIRECTORY -> isDirectory(value);
+            case CHOICE -> choices.contains(value);
+        };
+    }
+
+    private boolean inRange(double number) {
+        boolean low = min == null || (minExclusive ? number > min : number >= min);
+        boolean high = max == null || (maxExclusive ? number < max : number <= max);
+        return low && high;
+    }
+
+    private static boolean isAddress(String value) {
+        try {
+            InetAddress.getByName(value);
+            return true;
+        } catch (UnknownHostException | SecurityException e) {
+            return false;
+        }
+    }
+
+    private static boolean isDirectory(String value) {
+        try {
+            return Files.isDirectory(Path.of(value));
+        } catch (InvalidPathException e) {
+            return false;
+        }
+    }
+
+    // ---- lists of settings ----
+
+    /** Every setting's default, by key, in declaration order. */
+    public static Map<String, String> defaults(List<Setting> settings) {
+        Map<String, String> values = new LinkedHashMap<>();
+        settings.forEach(setting -> values.put(setting.key(), setting.defaultValue()));
+        return values;
+    }
+
+    /** The setting of this key in the list, or null. */
+    public static Setting find(List<Setting> settings, String key) {
+        return settings.stream().filter(setting -> setting.key().equals(key)).findFirst().orElse(null);
+    }
+
+    /**
+     * What is wrong with a model's declaration, or null: a setting that is null, a key that is
+     * blank, a {@code wss.*} key (the server's), a key declared twice, a default its own rule refuses.
+     */
+    public static String declarationProblem(List<Setting> settings) {
+        if (settings == null) {
+            return "settings() returned null";
+        }
+        Set<String> keys = new HashSet<>();
+        for (Setting setting : settings) {
+            if (setting == null) {
+                return "settings() holds null";
+            }
+            if (setting.key().isBlank() || setting.key().chars().anyMatch(Character::isWhitespace)) {
+                return "setting key '" + setting.key() + "' is blank or holds whitespace";
+            }
+            if (setting.key().startsWith("wss.")) {
+                return "setting " + setting.key() + ": the wss.* keys are the server's";
+            }
+            if (!keys.add(setting.key())) {
+                return "setting " + setting.key() + " is declared twice";
+            }
+            String problem = setting.problem(setting.defaultValue());
+            if (problem != null) {
+                return "setting " + setting.key() + ": the default '" + setting.defaultValue() + "' is not " + problem;
+            }
+        }
+        return null;
+    }
+
+    @Override
+    public String toString() {
+        return key + " = " + defaultValue + " (" + expected() + ")";
+    }
+}

@@ -1,0 +1,42 @@
+package org.usarsim.wss;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.stream.Stream;
+import org.junit.jupiter.api.Test;
+
+/** Which package may know which: app knows the others; the window never imports app; the model SPI neither. */
+class PackagesTest {
+
+    private static final Path SOURCES = Path.of("src/main/java/org/usarsim/wss");
+
+    /** The sources of a package (and its sub-packages) that import one of these packages. */
+    private static List<String> importing(String packageName, String... forbidden) throws IOException {
+        try (Stream<Path> files = Files.walk(SOURCES.resolve(packageName))) {
+            return files.filter(file -> file.toString().endsWith(".java")).filter(file -> {
+                try {
+                    String source = Files.readString(file, StandardCharsets.UTF_8);
+                    return Stream.of(forbidden).anyMatch(name -> source.contains("import org.usarsim.wss." + name + "."));
+                } catch (IOException e) {
+                    throw new UncheckedIOException(e);
+                }
+            }).map(Path::toString).toList();
+        }
+    }
+
+    @Test
+    void guiDoesNotImportApp() throws IOException {
+        assertEquals(List.of(), importing("gui", "app"));
+    }
+
+    @Test
+    void theModelsDoNotImportGuiOrApp() throws IOException {
+        assertEquals(List.of(), importing("model", "gui", "app"));
+    }
+}

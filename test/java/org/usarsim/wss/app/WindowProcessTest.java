@@ -1,0 +1,89 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.InputStream;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.gui.Gui;
+
+/**
+ * {@code java -jar wss.jar} without {@code --headless}, as a process: the window with
+ * {@code --config} and {@code --start} (on the tests' display), SIGTERM while it is open, and no
+ * display at all.
+ */
+@Timeout(60)
+class WindowProcessTest {
+
+    @TempDir
+    Path dir;
+
+    private ServerProcess server;
+
+    @AfterEach
+    void kill() throws Exception {
+        if (server != null) {
+            server.kill();
+        }
+    }
+
+    private Path config() throws Exception {
+        return Files.write(dir.resolve("wss.properties"), List.of("wss.bindAddress = 127.0.0.1", "wss.port = 0"));
+    }
+
+    @Test
+    void theWindowStartsAtOnceWithStartAndSigtermStopsItWithExitZero() throws Exception {
+        Gui.requireDisplay();
+        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--config", config().toString(), "--start");
+        int port = Integer.parseInt(server.awaitListening().group(1));
+        try (Socket robot = new Socket("127.0.0.1", port)) {
+            robot.setSoTimeout(10_000);
+            robot.getOutputStream().write("INIT {Robot R1}\r\n".getBytes(StandardCharsets.UTF_8));
+            InputStream in = robot.getInputStream();
+            assertEquals("INITREPLY {Status OK}\r\n", new String(in.readNBytes(23), StandardCharsets.UTF_8));
+            server.sigterm();
+            assertEquals(0, server.awaitExit());
+            assertEquals(-1, in.read(), "the robot's control connection was closed");
+        }
+        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("running headless")), server.stdoutSoFar().toString());
+    }
+
+    @Test
+    void startWithHeadlessIsAMistake() throws Exception {
+        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--headless", "--start");
+        assertEquals(2, server.awaitExit());
+        assertTrue(server.stderr().startsWith("wss: --start is for the window; headless, the server starts at once"), server.stderr());
+    }
+
+    @Test
+    void helpNamesTheWindowAndStart() throws Exception {
+        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--help");
+        assertEquals(0, server.awaitExit());
+        String help = String.join("\n", server.stdoutSoFar());
+        assertTrue(help.contains("java -jar wss.jar [--config FILE] [--start]"), help);
+        assertTrue(help.contains("--start             in the window, press Start at once"), help);
+    }
+
+    @Test
+    void withoutADisplayItSaysSoInOneLineAndRunsHeadless() throws Exception {
+        Map<String, String> noDisplay = new HashMap<>();
+        noDisplay.put("DISPLAY", null);
+        server = ServerProcess.start(dir.resolve("prefs"), noDisplay, "--config", config().toString());
+        server.awaitListening();
+        assertEquals(1, server.stdoutSoFar().stream()
+                .filter(line -> line.endsWith("INFO no display (DISPLAY is unset): running headless")).count(),
+                server.stdoutSoFar().toString());
+        server.sigterm();
+        assertEquals(0, server.awaitExit());
+    }
+}

@@ -1,0 +1,369 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.gui.Gui.cells;
+import static org.usarsim.wss.gui.Gui.find;
+import static org.usarsim.wss.gui.Gui.onEdt;
+import static org.usarsim.wss.gui.Gui.run;
+import static org.usarsim.wss.gui.Gui.until;
+
+import java.awt.event.WindowEvent;
+import java.io.IOException;
+import java.net.ConnectException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Logger;
+import java.util.prefs.Preferences;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+import javax.swing.JButton;
+import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
+import javax.swing.JFrame;
+import javax.swing.JTable;
+import javax.swing.JTextArea;
+import javax.swing.JTextField;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.gui.Gui;
+import org.usarsim.wss.gui.Launch;
+import org.usarsim.wss.gui.MainWindow;
+import org.usarsim.wss.gui.ModelPreferences;
+import org.usarsim.wss.gui.TestPreferences;
+import org.usarsim.wss.gui.WindowLog;
+import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.hub.ScriptedModel;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.sim.WorldServer;
+
+/**
+ * The main window, for real: opened under a display, driven through its components (buttons
+ * pressed, fields typed, tables and the log read), with real robots over real sockets and the
+ * servers the application itself starts ({@link WindowServers}).
+ */
+@Timeout(60)
+class WindowTest {
+
+    private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");
+
+    @TempDir
+    Path eventLogs;
+
+    private final ScriptedModel model = new ScriptedModel();
+    private CountDownLatch closed;
+    private Preferences preferences;
+    private WindowLog windowLog;
+    private JFrame frame;
+
+    @BeforeAll
+    static void display() {
+        Gui.requireDisplay();
+    }
+
+    @BeforeEach
+    void open() throws Exception {
+        preferences = TestPreferences.create();
+        windowLog = new WindowLog();
+        Logger.getLogger("").addHandler(windowLog);
+        frame = openWindow(new Launch("0", "ScriptedModel", false, null, false));
+    }
+
+    private JFrame openWindow(Launch launch) throws Exception {
+        return openWindow(launch, List.of(new NoopPropagationModel(), model));
+    }
+
+    private JFrame openWindow(Launch launch, List<PropagationModel> models) throws Exception {
+        CountDownLatch windowClosed = new CountDownLatch(1);
+        closed = windowClosed;
+        Properties properties = new Properties();
+        properties.setProperty("wss.bindAddress", "127.0.0.1");
+        properties.setProperty("wss.eventLogDir", eventLogs.toString());
+        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
+        return onEdt(() -> MainWindow.open(servers, models,
+                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+                windowLog, launch, windowClosed::countDown).frame());
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (closed.getCount() > 0) {
+            closeWindow();
+        }
+        Logger.getLogger("").removeHandler(windowLog);
+        TestPreferences.remove(preferences);
+    }
+
+    private void closeWindow() throws InterruptedException {
+        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
+        assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
+        assertFalse(onEdt(frame::isDisplayable));
+    }
+
+    /** The window's component of that type and name; from the test's thread or the event thread. */
+    private <T extends java.awt.Component> T component(Class<T> type, String name) {
+        if (javax.swing.SwingUtilities.isEventDispatchThread()) {
+            return find(frame.getContentPane(), type, name);
+        }
+        return onEdt(() -> find(frame.getContentPane(), type, name));
+    }
+
+    private String button() {
+        JButton start = component(JButton.class, "start");
+        return onEdt(start::getText);
+    }
+
+    private String log() {
+        JTextArea log = component(JTextArea.class, "log");
+        return onEdt(log::getText);
+    }
+
+    private List<List<String>> table(String name) {
+        JTable table = component(JTable.class, name);
+        return onEdt(() -> cells(table));
+    }
+
+    private void waitForTable(String name, List<List<String>> expected) {
+        JTable table = component(JTable.class, name);
+        until(name + " shows " + expected, () -> cells(table).equals(expected));
+    }
+
+    /** Presses Start and waits for "Stop"; returns the control port the log names. */
+    private int start() {
+        JButton start = component(JButton.class, "start");
+        run(start::doClick);
+        until("the server runs", () -> start.getText().equals("Stop"));
+        until("the log names the port", () -> LISTENING.matcher(find(frame.getContentPane(), JTextArea.class, "log").getText()).find());
+        Matcher matcher = LISTENING.matcher(log());
+        int port = -1;
+        while (matcher.find()) {
+            port = Integer.parseInt(matcher.group(1)); // the last start's
+        }
+        return port;
+    }
+
+    private void stop() {
+        JButton start = component(JButton.class, "start");
+        run(start::doClick);
+        until("the server stopped", () -> start.getText().equals("Start"));
+    }
+
+    @Test
+    void showsRobotsPortsAndLinksAsTheyComeBreakResumeAndGo() throws Exception {
+        assertEquals("WSS", onEdt(frame::getTitle));
+        assertEquals("Start", button());
+        int port = start();
+        assertFalse(onEdt(() -> component(JTextField.class, "port").isEnabled()), "the port is locked while running");
+        assertFalse(onEdt(() -> component(JComboBox.class, "model").isEnabled()), "the model is locked while running");
+        assertFalse(onEdt(() -> component(JCheckBox.class, "eventLog").isEnabled()), "logging is locked while running");
+        try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3")) {
+            ServerSocket r1Accepts = r1.initAccepting("r1");
+            ServerSocket r2Accepts = r2.initAccepting("r2");
+            waitForTable("robots", List.of(
+                    List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort())),
+                    List.of("r2", "127.0.0.3", String.valueOf(r2Accepts.getLocalPort()))));
+
+            int toR2 = r1.dns("r2", 0);
+            int toR1 = r2.dns("r1", 0);
+            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes");
+            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes");
+            waitForTable("ports", List.of(r1r2, r2r1));
+
+            try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
+                waitForTable("links", List.of(List.of("r1", "r2", String.valueOf(atR2.getPort()))));
+
+                model.links().breakConnectionsForPair("r1", "r2");
+                waitForTable("ports", List.of(no(r1r2), no(r2r1)));
+                waitForTable("links", List.of());
+                assertThrows(ConnectException.class, () -> r1.connect(toR2).close());
+
+                model.links().resumeConnectionsForPair("r1", "r2");
+                waitForTable("ports", List.of(r1r2, r2r1));
+            }
+
+            // The filter: case-insensitive wildcards over "from to"; Clear shows every row again.
+            JTextField filter = component(JTextField.class, "portsFilter");
+            run(() -> filter.setText("R2 *1"));
+            waitForTable("ports", List.of(r2r1));
+            run(() -> filter.setText("r?"));
+            waitForTable("ports", List.of(r1r2, r2r1));
+            run(() -> filter.setText("nobody"));
+            waitForTable("ports", List.of());
+            run(() -> component(JButton.class, "portsClear").doClick());
+            assertEquals("", onEdt(filter::getText));
+            waitForTable("ports", List.of(r1r2, r2r1));
+
+            // Sortable: a click on "From" sorts the robots, a second one reverses them.
+            JTable robots = component(JTable.class, "robots");
+            run(() -> robots.getRowSorter().toggleSortOrder(0));
+            run(() -> robots.getRowSorter().toggleSortOrder(0));
+            until("r2 comes first", () -> cells(robots).get(0).get(0).equals("r2"));
+
+            model.links().kickOutRobot("r2");
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort()))));
+            waitForTable("ports", List.of());
+            until("the log says r2 was kicked", () -> find(frame.getContentPane(), JTextArea.class, "log").getText()
+                    .contains("debug: kicked out r2"));
+            stop();
+            waitForTable("robots", List.of());
+            assertThrows(IOException.class, () -> new Socket("127.0.0.1", port).close(), "nothing listens after Stop");
+        }
+        assertTrue(onEdt(() -> component(JTextField.class, "port").isEnabled()), "the port is editable again");
+    }
+
+    private static List<String> no(List<String> portRow) {
+        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no");
+    }
+
+    @Test
+    void aPortInUseOrABadPortIsSaidAndStartWorksOnceFixed() throws Exception {
+        try (ServerSocket taken = new ServerSocket()) {
+            taken.bind(new InetSocketAddress("127.0.0.1", 0));
+            JTextField portField = component(JTextField.class, "port");
+            run(() -> portField.setText(String.valueOf(taken.getLocalPort())));
+            run(() -> component(JButton.class, "start").doClick());
+            String message = Gui.closeMessage("WSS");
+            assertTrue(message.startsWith("cannot listen for robots on 127.0.0.1:" + taken.getLocalPort()), message);
+            until("the log says it", () -> find(frame.getContentPane(), JTextArea.class, "log").getText()
+                    .contains("WARNING: " + message));
+            assertEquals("Start", button());
+
+            run(() -> portField.setText("70000"));
+            run(() -> component(JButton.class, "start").doClick());
+            assertEquals("the port '70000' is not a port number from 0 to 65535 (0: any free port)", Gui.closeMessage("WSS"));
+
+            run(() -> portField.setText("0"));
+            start();
+            stop();
+        }
+    }
+
+    @Test
+    void aModelThatDoesNotStartIsSaidAndStartWorksOnceFixed() throws Exception {
+        model.failStarts("the simulator at 127.0.0.1:1 cannot be reached");
+        run(() -> component(JButton.class, "start").doClick());
+        assertEquals("ScriptedModel did not start: the simulator at 127.0.0.1:1 cannot be reached", Gui.closeMessage("WSS"));
+        until("the log says it", () -> find(frame.getContentPane(), JTextArea.class, "log").getText()
+                .contains("WARNING: ScriptedModel did not start"));
+        assertEquals("Start", button());
+        assertTrue(onEdt(() -> component(JComboBox.class, "model").isEnabled()));
+        model.failStarts(null);
+        int port = start();
+        new Socket("127.0.0.1", port).close();
+    }
+
+    @Test
+    void aSimulatorThatCannotBeReachedIsSaidAndStartWorksOnceItRuns() throws Exception {
+        closeWindow();
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(distanceOnly.settings()));
+        settings.put("usarsim.host", "127.0.0.1");
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.timeout", "500");
+        // As --config gives them: the file's model settings for this session's starts.
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(settings), false),
+                List.of(new NoopPropagationModel(), distanceOnly));
+        assertTrue(onEdt(() -> component(JButton.class, "configure").isEnabled()), "DistanceOnly has settings");
+        run(() -> component(JButton.class, "start").doClick());
+        String message = Gui.closeMessage("WSS");
+        assertTrue(message.startsWith("DistanceOnlyPropagationModel did not start: cannot reach the simulator at 127.0.0.1:"
+                + simulatorPort), message);
+        assertEquals("Start", button());
+
+        WorldServer world = WorldServer.start(Path.of("docs/examples/corridor.world"), InetAddress.getByName("127.0.0.1"), simulatorPort);
+        try {
+            int port = start();
+            try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
+                base.init("Base");
+                scout.init("Scout");
+                waitForTable("robots", List.of(List.of("Base", "127.0.0.2", ""), List.of("Scout", "127.0.0.3", "")));
+            }
+            stop();
+        } finally {
+            world.close();
+        }
+    }
+
+    @Test
+    void closingTheWindowStopsTheServer() throws Exception {
+        int port = start();
+        try (TestRobot robot = new TestRobot(port, "127.0.0.2")) {
+            robot.init("r1");
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "")));
+            closeWindow();
+            assertEquals(-1, robot.control.getInputStream().read(), "the robot's control connection is closed");
+        }
+        assertThrows(IOException.class, () -> new Socket("127.0.0.1", port).close(), "nothing listens after closing");
+    }
+
+    @Test
+    void enableLoggingWritesTheCsvEventLog() throws Exception {
+        run(() -> component(JCheckBox.class, "eventLog").setSelected(true));
+        int port = start();
+        try (TestRobot robot = new TestRobot(port, "127.0.0.2")) {
+            robot.init("r1");
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "")));
+        }
+        waitForTable("robots", List.of());
+        stop();
+        try (Stream<Path> files = Files.list(eventLogs)) {
+            List<Path> logs = files.toList();
+            assertEquals(1, logs.size(), logs.toString());
+            List<String> lines = Files.readAllLines(logs.get(0));
+            assertTrue(lines.get(0).startsWith("REGISTERED,") && lines.get(0).contains(",r1,127.0.0.2,"), lines.toString());
+            assertTrue(lines.get(1).startsWith("DEREGISTERED,") && lines.get(1).endsWith(",r1"), lines.toString());
+        }
+    }
+
+    @Test
+    void remembersPortModelAndLoggingAndStartsAtOnceWhenAsked() throws Exception {
+        run(() -> component(JCheckBox.class, "eventLog").setSelected(false));
+        run(() -> component(JTextField.class, "port").setText("0"));
+        start();
+        closeWindow();
+        WindowSettings stored = new WindowSettings(preferences.node("window"));
+        assertEquals("0", stored.port());
+        assertEquals("ScriptedModel", stored.model());
+        assertFalse(stored.eventLog());
+
+        // A second window opens with what the first stored, and --start presses Start.
+        CountDownLatch secondClosed = new CountDownLatch(1);
+        Properties properties = new Properties();
+        properties.setProperty("wss.bindAddress", "127.0.0.1");
+        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
+        frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel(), model),
+                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+                windowLog, new Launch(null, null, null, null, true), secondClosed::countDown).frame());
+        until("the second window's server runs", () -> find(frame.getContentPane(), JButton.class, "start").getText().equals("Stop"));
+        assertEquals("ScriptedModel", onEdt(() -> component(JComboBox.class, "model").getSelectedItem()));
+        assertEquals("0", onEdt(() -> component(JTextField.class, "port").getText()));
+        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
+        assertTrue(secondClosed.await(10, TimeUnit.SECONDS));
+    }
+}

@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
 import static org.usarsim.wss.hub.Sockets.linkThreads;
+import static org.usarsim.wss.hub.Sockets.portThreads;
 import static org.usarsim.wss.hub.Sockets.randomBytes;
 import static org.usarsim.wss.hub.Sockets.readExactly;
 import static org.usarsim.wss.hub.Sockets.readExactlyBytes;
@@ -600,7 +601,7 @@ class LinkLifecycleTest {
             shortConnection(r2, port, r1Accepts, i);
         }
         Wait.until("the warm-up's link threads ended", () -> linkThreads() == 0);
-        long before = Wait.settle("descriptors settle", LinkLifecycleTest::openDescriptors, n -> true);
+        long before = Wait.settle("descriptors settle", Sockets::openDescriptors, n -> true);
 
         for (int i = 0; i < 300; i++) {
             shortConnection(r2, port, r1Accepts, i);
@@ -618,7 +619,7 @@ class LinkLifecycleTest {
 
         Wait.until("every link thread ended", () -> linkThreads() == 0);
         Wait.until("one accepting thread for the WSS port", () -> portThreads(port) == 1);
-        long after = Wait.settle("descriptors return to their level", LinkLifecycleTest::openDescriptors,
+        long after = Wait.settle("descriptors return to their level", Sockets::openDescriptors,
                 n -> n <= before + 5);
         assertTrue(after <= before + 5, "open descriptors before " + before + ", after " + after);
     }
@@ -720,20 +721,6 @@ class LinkLifecycleTest {
                 in.setSoTimeout(TestRobot.TIMEOUT_MS);
                 assertArrayEquals(data, readExactlyBytes(in.getInputStream(), data.length), "connection " + i);
             }
-        }
-    }
-
-    /** Threads accepting on a WSS port. */
-    private static long portThreads(int port) {
-        String name = "wss-port " + port;
-        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals(name)).count();
-    }
-
-    private static long openDescriptors() {
-        try (Stream<Path> entries = Files.list(Path.of("/proc/self/fd"))) {
-            return entries.count();
-        } catch (IOException e) {
-            throw new AssertionError("cannot list /proc/self/fd", e);
         }
     }
 

@@ -11,7 +11,10 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.Random;
+import java.util.stream.Stream;
 
 /** What the socket tests do with the bytes and ends of a connection. */
 public final class Sockets {
@@ -23,6 +26,17 @@ public final class Sockets {
         byte[] data = new byte[size];
         new Random(seed).nextBytes(data);
         return data;
+    }
+
+    /**
+     * A stream of sequence numbers, for checking order: the bytes from {@code position} on, each
+     * 8-byte big-endian number in turn (0, 1, 2 ...).
+     */
+    public static void sequence(byte[] bytes, long position) {
+        for (int i = 0; i < bytes.length; i++) {
+            long at = position + i;
+            bytes[i] = (byte) ((at / 8) >>> (8 * (7 - at % 8)));
+        }
     }
 
     public static String readExactly(InputStream in, int length) throws IOException {
@@ -72,6 +86,21 @@ public final class Sockets {
             return;
         }
         assertEquals(-1, read, what + ": end of stream");
+    }
+
+    /** Threads accepting on a WSS port. */
+    public static long portThreads(int port) {
+        String name = "wss-port " + port;
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals(name)).count();
+    }
+
+    /** This process's open descriptors. */
+    public static long openDescriptors() {
+        try (Stream<Path> entries = Files.list(Path.of("/proc/self/fd"))) {
+            return entries.count();
+        } catch (IOException e) {
+            throw new AssertionError("cannot list /proc/self/fd", e);
+        }
     }
 
     /** The server's threads that forward a connection. */

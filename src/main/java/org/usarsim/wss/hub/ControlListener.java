@@ -15,6 +15,12 @@ import java.util.logging.Logger;
 final class ControlListener implements Runnable {
 
     private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
+    /**
+     * Connections the OS completes before the listener accepts them. A whole team starts at once:
+     * a SYN that finds the queue full is dropped and retransmitted only a second later. The OS
+     * caps it at net.core.somaxconn (4,096 on current Linux; docs/reliability.md).
+     */
+    static final int BACKLOG = 1024;
 
     private final Hub hub;
     private final ServerSocketChannel server;
@@ -27,7 +33,7 @@ final class ControlListener implements Runnable {
         this.server = ServerSocketChannel.open();
         try {
             server.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-            server.bind(address, 128);
+            server.bind(address, BACKLOG);
         } catch (IOException e) {
             server.close();
             throw e;

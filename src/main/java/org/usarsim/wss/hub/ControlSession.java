@@ -8,7 +8,6 @@ import java.nio.channels.ClosedChannelException;
 import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.OptionalDouble;
-import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
@@ -101,7 +100,7 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         } catch (ProtocolException e) {
             reply = e.reply();
         } catch (RuntimeException e) {
-            LOG.log(Level.WARNING, peer + ": failed to answer '" + line + "': " + e, e);
+            hub.warnings.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
             reply = Replies.error(Replies.INTERNAL_ERROR);
         }
         String answered = reply;
@@ -111,7 +110,8 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
 
     @Override
     public void lineTooLong() {
-        LOG.warning(peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error");
+        hub.warnings.warn(LOG, "over-long lines", address,
+                peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error");
         send(Replies.error(Replies.LINE_TOO_LONG));
     }
 

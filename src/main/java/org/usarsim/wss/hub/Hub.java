@@ -48,6 +48,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final PropagationModel model;
     private final EventFanOut events = new EventFanOut();
     private final SocketBuffers socketBuffers;
+    /** Every WARNING a client can cause goes through it (docs/reliability.md). */
+    final WarningLimiter warnings = WarningLimiter.standard();
     private final Object lock = new Object();
     private final Map<String, Robot> robots = new HashMap<>();
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
@@ -135,6 +137,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.clear();
         }
         links.forEach(Link::close);
+        warnings.close();
         LOG.info("WSS stopped");
     }
 
@@ -285,14 +288,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             if (port == null) {
                 long held = ports.keySet().stream().filter(k -> k.from().equals(from)).count();
                 if (held >= config.maxPortsPerRobot()) {
-                    LOG.warning(from + " holds " + held + " WSS ports as source, the most wss.maxPortsPerRobot allows;"
-                            + " no new one for " + key);
+                    warnings.warn(LOG, "DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
+                            + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key);
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 try {
                     port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
                 } catch (IOException e) {
-                    LOG.warning("could not allocate a WSS port for " + key + ": " + e.getMessage());
+                    warnings.warn(LOG, "ports not allocated", robots.get(from).address(),
+                            "could not allocate a WSS port for " + key + ": " + e.getMessage());
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 ports.put(key, port);
@@ -345,7 +349,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 refusal = model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
             }
             if (refusal != null) {
-                LOG.warning(port + ": refused a connection: " + refusal);
+                warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
                 Closing.quietly(socket);
                 return;
             }
@@ -353,7 +357,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 link = new Link(this, port, socket, new InetSocketAddress(target.address(), key.targetPort()),
                         config.chunkSize(), socketBuffers, events);
             } catch (IOException e) {
-                LOG.warning(port + ": could not open a socket to the target: " + e.getMessage());
+                warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
                 Closing.quietly(socket);
                 return;
             }

@@ -140,9 +140,9 @@ final class Link implements Runnable {
             target.socket().connect(targetAddress, CONNECT_TIMEOUT_MS);
         } catch (IOException e) {
             if (!closed.get()) {
-                LOG.warning(this + ": the target at " + targetAddress.getAddress().getHostAddress() + ":"
-                        + targetAddress.getPort() + " did not accept (" + e.getMessage()
-                        + "); closing the source's connection");
+                hub.warnings.warn(LOG, "unreachable targets", source.socket().getInetAddress(), this + ": the target at "
+                        + targetAddress.getAddress().getHostAddress() + ":" + targetAddress.getPort() + " did not accept ("
+                        + e.getMessage() + "); closing the source's connection");
             }
             return false;
         }

@@ -176,7 +176,8 @@ final class PortListener implements Runnable {
                     return;
                 }
                 // Out of descriptors, say: the port still listens, so try again in a moment.
-                LOG.warning(port + ": accept failed, trying again: " + e);
+                hub.warnings.warn(LOG, "failed accepts", channel.socket().getInetAddress(),
+                        port + ": accept failed, trying again: " + e);
                 Pause.briefly();
                 continue;
             }

@@ -1,0 +1,165 @@
+package org.usarsim.wss.hub;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.net.InetAddress;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.LogCapture;
+
+/** The limit on warnings one client can cause, with a clock and a timer moved by hand. */
+class WarningLimiterTest {
+
+    private static final String LOGGER = "org.usarsim.wss.hub.WarningLimiterTest";
+    private static final long MINUTE = TimeUnit.SECONDS.toNanos(60);
+
+    private final Logger log = Logger.getLogger(LOGGER);
+    private final LogCapture capture = LogCapture.of(LOGGER, Level.ALL);
+    private long now = 1_000_000_000L;
+    /** What the limiter asked the timer to run, and when (on the test's clock). */
+    private final List<Long> dueAt = new ArrayList<>();
+    private final List<Runnable> due = new ArrayList<>();
+    private boolean timerStopped;
+    private final WarningLimiter limiter = new WarningLimiter(5, MINUTE, () -> now, new WarningLimiter.Timer() {
+        @Override
+        public void after(long delayNs, Runnable task) {
+            dueAt.add(now + delayNs);
+            due.add(task);
+        }
+
+        @Override
+        public void stop() {
+            timerStopped = true;
+        }
+    });
+
+    @AfterEach
+    void detach() {
+        capture.close();
+    }
+
+    private static InetAddress address(String text) throws Exception {
+        return InetAddress.getByName(text);
+    }
+
+    private void warn(String kind, String source, String message) throws Exception {
+        limiter.warn(log, kind, address(source), message);
+    }
+
+    /** Moves the clock to the first task's time and runs it. */
+    private void runTimer() {
+        now = dueAt.remove(0);
+        due.remove(0).run();
+    }
+
+    @Test
+    void theFirstFiveAreWrittenTheRestCountedAndSaidInOneLineAtTheIntervalsEnd() throws Exception {
+        for (int i = 0; i < 12; i++) {
+            warn("refused connections", "127.0.0.2", "refused #" + i);
+            now += TimeUnit.SECONDS.toNanos(1);
+        }
+        assertEquals(List.of("refused #0", "refused #1", "refused #2", "refused #3", "refused #4"), capture.messages(Level.WARNING));
+        assertEquals(List.of(1_000_000_000L + MINUTE), dueAt, "one summary, due when the interval that began with the first ends");
+
+        runTimer();
+        assertEquals("refused connections: 7 more like this from 127.0.0.2 in the last 60 s",
+                capture.messages(Level.WARNING).get(5));
+        assertEquals(6, capture.records.size());
+
+        warn("refused connections", "127.0.0.2", "refused again");
+        assertEquals("refused again", capture.messages(Level.WARNING).get(6), "a new interval writes again");
+    }
+
+    @Test
+    void eachKindAndEachSourceHasItsOwnLimit() throws Exception {
+        for (int i = 0; i < 8; i++) {
+            warn("refused connections", "127.0.0.2", "A" + i);
+            warn("refused connections", "127.0.0.3", "B" + i);
+            warn("over-long lines", "127.0.0.2", "C" + i);
+        }
+        List<String> written = capture.messages(Level.WARNING);
+        assertEquals(15, written.size(), written.toString());
+        for (String prefix : List.of("A", "B", "C")) {
+            assertEquals(5, written.stream().filter(m -> m.startsWith(prefix)).count(), written.toString());
+        }
+        now += MINUTE;
+        for (int i = 0; i < 3; i++) {
+            runTimer();
+        }
+        assertEquals(List.of("refused connections: 3 more like this from 127.0.0.2 in the last 60 s",
+                "refused connections: 3 more like this from 127.0.0.3 in the last 60 s",
+                "over-long lines: 3 more like this from 127.0.0.2 in the last 60 s"),
+                capture.messages(Level.WARNING).subList(15, 18), "each summary once, though every timer task runs");
+    }
+
+    @Test
+    void anIntervalWithoutExtraWarningsWritesNoSummary() throws Exception {
+        for (int i = 0; i < 5; i++) {
+            warn("over-long lines", "127.0.0.2", "line " + i);
+        }
+        assertEquals(List.of(), dueAt);
+        now += 2 * MINUTE;
+        limiter.flush();
+        limiter.close();
+        assertEquals(5, capture.records.size(), capture.toString());
+    }
+
+    @Test
+    void aLateTimerStillWritesTheSummaryBeforeTheNextIntervalsFirstWarning() throws Exception {
+        for (int i = 0; i < 6; i++) {
+            warn("refused connections", "127.0.0.2", "first interval " + i);
+        }
+        now += MINUTE + 1;
+        warn("refused connections", "127.0.0.2", "second interval");
+        List<String> written = capture.messages(Level.WARNING);
+        assertEquals(List.of("refused connections: 1 more like this from 127.0.0.2 in the last 60 s", "second interval"),
+                written.subList(5, 7));
+        runTimer();
+        assertEquals(7, capture.records.size(), "the timer finds nothing more to say");
+    }
+
+    @Test
+    void closingWritesWhatIsCountedWithTheTimeSoFarAndStopsTheTimer() throws Exception {
+        for (int i = 0; i < 9; i++) {
+            warn("over-long lines", "127.0.0.4", "line " + i);
+        }
+        now += TimeUnit.MILLISECONDS.toNanos(12_300);
+        limiter.close();
+        assertEquals("over-long lines: 4 more like this from 127.0.0.4 in the last 13 s",
+                capture.messages(Level.WARNING).get(5));
+        assertEquals(true, timerStopped);
+    }
+
+    @Test
+    void theServersTimerWritesTheSummaryOnItsOwnThenItsThreadEnds() throws Exception {
+        long before = warningsThreads();
+        WarningLimiter real = new WarningLimiter(2, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
+        for (int i = 0; i < 5; i++) {
+            real.warn(log, "refused connections", address("127.0.0.5"), "refused " + i);
+        }
+        assertEquals(before + 1, warningsThreads(), "a thread while a summary is due");
+        Wait.until("the summary", () -> capture.count(Level.WARNING, "3 more like this from 127.0.0.5") == 1);
+        Wait.until("the timer's thread ended", () -> warningsThreads() == before);
+        real.close();
+        for (int i = 0; i < 3; i++) {
+            real.warn(log, "refused connections", address("127.0.0.5"), "after the close");
+        }
+        assertEquals(2, capture.count(Level.WARNING, "after the close"), "limited still, though no summary can be scheduled");
+    }
+
+    private static long warningsThreads() {
+        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals("wss-warnings")).count();
+    }
+
+    @Test
+    void theWarningKeepsItsException() throws Exception {
+        IllegalStateException bug = new IllegalStateException("a bug");
+        limiter.warn(log, "failed answers", address("127.0.0.2"), "failed", bug);
+        assertEquals(bug, capture.records.get(0).getThrown());
+    }
+}

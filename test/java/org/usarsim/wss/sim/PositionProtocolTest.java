@@ -117,6 +117,27 @@ class PositionProtocolTest {
     }
 
     @Test
+    void getobsTakesTheFirstFromAndToThatHaveAValue() {
+        assertEquals("NUMOBS {From Robot1} {To Robot2} {ObstCount 2.0000}",
+                answer("GETOBS {From Robot1} {From Robot2} {To Robot2} {to Robot1}"));
+        assertEquals("NUMOBS {From Robot1} {To Robot2} {ObstCount 2.0000}", answer("GETOBS {From} {From Robot1} {To Robot2}"));
+    }
+
+    /** The segment grammar the control protocol and the simulator client read too (protocol.SegmentParser). */
+    @ParameterizedTest
+    @ValueSource(strings = {
+        "GETOBS {} {From Robot1} {To Robot2}",
+        "GETOBS {From Robot1} {To {Robot2}",
+        "GETOBS {From Robot1} {To Robot2}}",
+        "GETOBS} {From Robot1} {To Robot2}",
+    })
+    void aGetobsThatBreaksTheSegmentGrammarHasNoAnswer(String line) {
+        assertNull(PositionProtocol.answer(line, () -> {
+            throw new AssertionError("the world is not looked at for '" + line + "'");
+        }), line);
+    }
+
+    @Test
     void getposIgnoresWhatFollows() {
         assertEquals(answer("GETPOS"), answer("GETPOS {Robot Robot1}"));
         assertEquals(answer("GETPOS"), answer("  GETPOS  "));

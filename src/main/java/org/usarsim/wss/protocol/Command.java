@@ -3,9 +3,11 @@ package org.usarsim.wss.protocol;
 import java.util.List;
 
 /**
- * One parsed control line: {@code TYPE {Key Value} {Key Value} ...}.
+ * One parsed line of the segment grammar ({@link SegmentParser}): {@code TYPE {Key Value} {Key Value} ...}.
+ * A control command, a simulator's reply or a world server's request; {@link #value} and
+ * {@link #hasNoSegment} are the control protocol's rules.
  *
- * @param type   the command word, case-sensitive (INIT, GETSS, DNS, REVERSEDNS, ...)
+ * @param type   the word as sent (on a control line, case-sensitive: INIT, GETSS, DNS, REVERSEDNS, ...)
  * @param fields the segments in the order they were sent
  */
 public record Command(String type, List<Field> fields) {

@@ -34,6 +34,17 @@ public final class Replies {
     private Replies() {
     }
 
+    /** The reason a control line that breaks the segment grammar gets (docs/protocol.md, 1.2). */
+    static String malformed(SegmentException.Problem problem) {
+        return switch (problem) {
+            case NO_WORD -> MALFORMED_NO_COMMAND;
+            case TEXT_OUTSIDE_BRACES -> MALFORMED_TEXT_OUTSIDE_BRACES;
+            case UNCLOSED_BRACE -> MALFORMED_UNCLOSED_BRACE;
+            case NESTED_BRACE -> MALFORMED_NESTED_BRACE;
+            case EMPTY_SEGMENT -> MALFORMED_EMPTY_SEGMENT;
+        };
+    }
+
     /** The bytes to write for a reply: the line and CR LF, to be sent in one write. */
     public static byte[] wire(String reply) {
         return (reply + LINE_END).getBytes(StandardCharsets.UTF_8);

@@ -1,13 +1,18 @@
 package org.usarsim.wss.sim;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.function.Supplier;
+import org.usarsim.wss.protocol.Command;
+import org.usarsim.wss.protocol.SegmentException;
+import org.usarsim.wss.protocol.SegmentParser;
 
 /**
  * USARSim's answers to the two commands the WSS's models send: {@code GETPOS} and
  * {@code GETOBS {From a} {To b}}, command words and keys in any case ({@code getpos},
- * {@code GetObs {from a} {TO b}}) as USARSim matches them. Every other line has no answer, as in
- * USARSim. The only place a reply of the world server is written.
+ * {@code GetObs {from a} {TO b}}) as USARSim matches them, in the segment grammar of
+ * {@link SegmentParser}. Every other line has no answer, as in USARSim. The only place a reply of
+ * the world server is written.
  */
 final class PositionProtocol {
 
@@ -16,15 +21,9 @@ final class PositionProtocol {
 
     /** The reply to a line, without its line end, or null when USARSim would say nothing. */
     static String answer(String line, Supplier<Snapshot> now) {
-        String text = line.strip();
-        int end = 0;
-        while (end < text.length() && text.charAt(end) != '{' && !Character.isWhitespace(text.charAt(end))) {
-            end++;
-        }
-        String rest = text.substring(end);
-        return switch (text.substring(0, end).toUpperCase(Locale.ROOT)) {
+        return switch (SegmentParser.word(line).toUpperCase(Locale.ROOT)) {
             case "GETPOS" -> positions(now.get());
-            case "GETOBS" -> obstacles(rest, now);
+            case "GETOBS" -> obstacles(line, now);
             default -> null;
         };
     }
@@ -40,37 +39,34 @@ final class PositionProtocol {
         return reply.toString();
     }
 
-    /** {@code {From a} {To b}} in either order, other segments ignored; null when either is missing or a segment is malformed. */
-    private static String obstacles(String segments, Supplier<Snapshot> now) {
-        String from = null;
-        String to = null;
-        int i = 0;
-        while (true) {
-            while (i < segments.length() && Character.isWhitespace(segments.charAt(i))) {
-                i++;
-            }
-            if (i == segments.length()) {
-                break;
-            }
-            int close = segments.indexOf('}', i);
-            if (segments.charAt(i) != '{' || close < 0) {
-                return null;
-            }
-            String[] keyValue = segments.substring(i + 1, close).strip().split("\\s+", 2);
-            if (keyValue.length == 2) {
-                if (keyValue[0].equalsIgnoreCase("From") && from == null) {
-                    from = keyValue[1].strip();
-                } else if (keyValue[0].equalsIgnoreCase("To") && to == null) {
-                    to = keyValue[1].strip();
-                }
-            }
-            i = close + 1;
+    /**
+     * {@code {From a} {To b}} in either order, other segments ignored, the first of each key that has a
+     * value counting; null when either is missing or the line is malformed.
+     */
+    private static String obstacles(String line, Supplier<Snapshot> now) {
+        List<Command.Field> fields;
+        try {
+            fields = SegmentParser.parse(line).fields();
+        } catch (SegmentException e) {
+            return null;
         }
+        String from = first(fields, "From");
+        String to = first(fields, "To");
         if (from == null || to == null) {
             return null;
         }
         int count = now.get().obstacles(from, to);
         return "NUMOBS {From " + from + "} {To " + to + "} {ObstCount " + String.format(Locale.ROOT, "%.4f", (double) count) + "}";
+    }
+
+    /** The value of the first segment with this key, in any case, and a value; null when there is none. */
+    private static String first(List<Command.Field> fields, String key) {
+        for (Command.Field field : fields) {
+            if (field.key().equalsIgnoreCase(key) && !field.value().isEmpty()) {
+                return field.value();
+            }
+        }
+        return null;
     }
 
     /** Four decimals, never "-0.0000". */

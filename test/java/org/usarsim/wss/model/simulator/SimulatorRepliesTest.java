@@ -47,6 +47,9 @@ class SimulatorRepliesTest {
         "POSITIONS {Robots 1} {Name A Location 1,2,3",
         "POSITIONS {Robots 1} {Name {A} Location 1,2,3}",
         "POSITIONS {Robots 1} stray {Name A Location 1,2,3}",
+        "POSITIONS {Robots 1} {Name A Location 1,2,3} {}",
+        "POSITIONS {Robots 1} {Name A Location 1,2,3}}",
+        "POSITIONS} {Robots 0}",
         "NUMOBS {From A} {To B} {ObstCount 1}",
     })
     void rejectsMalformedPositions(String line) {

@@ -4,11 +4,15 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.usarsim.wss.protocol.Command;
+import org.usarsim.wss.protocol.SegmentException;
+import org.usarsim.wss.protocol.SegmentParser;
 
 /**
  * Reads the simulator's replies:
  * {@code POSITIONS {Robots 2} {Name R1 Location 1.25,-3.0,0.45 BatteryEmpty False} {Name R2 ...}} and
- * {@code NUMOBS {From a} {To b} {ObstCount 3.0000}}. Extra whitespace is tolerated; anything else
+ * {@code NUMOBS {From a} {To b} {ObstCount 3.0000}}, in the segment grammar of
+ * {@link SegmentParser} (extra whitespace tolerated). Fields it does not use are ignored; anything else
  * is a {@link SimulatorReplyException} naming what is wrong.
  */
 final class SimulatorReplies {
@@ -21,12 +25,7 @@ final class SimulatorReplies {
 
     /** The type of a reply line: its first word. */
     static String type(String line) {
-        String stripped = line.strip();
-        int end = 0;
-        while (end < stripped.length() && !Character.isWhitespace(stripped.charAt(end)) && stripped.charAt(end) != '{') {
-            end++;
-        }
-        return stripped.substring(0, end);
+        return SegmentParser.word(line);
     }
 
     /** The robots of a POSITIONS line, by name, in the order given. */
@@ -138,31 +137,28 @@ final class SimulatorReplies {
         return new ObstacleCount(NamePair.of(from, to), value >= 0 && Double.isFinite(value) ? value : Double.NaN);
     }
 
-    /** The {...} segments after the type word, each as its whitespace-separated words. */
+    /**
+     * The {...} segments after the type word, each as its whitespace-separated words (the key first):
+     * a robot's segment holds several key-value pairs, {@code {Name R1 Location 1,2,3}}.
+     */
     private static List<List<String>> segments(String line, String type) throws SimulatorReplyException {
-        String rest = line.strip();
-        if (!type(rest).equals(type)) {
+        if (!type(line).equals(type)) {
             throw malformed(line, "it is not a " + type + " reply");
         }
-        rest = rest.substring(type.length());
+        List<Command.Field> fields;
+        try {
+            fields = SegmentParser.parse(line).fields();
+        } catch (SegmentException e) {
+            throw malformed(line, e.problem().description());
+        }
         List<List<String>> segments = new ArrayList<>();
-        int i = 0;
-        while (i < rest.length()) {
-            char c = rest.charAt(i);
-            if (Character.isWhitespace(c)) {
-                i++;
-            } else if (c == '{') {
-                int close = rest.indexOf('}', i);
-                int nested = rest.indexOf('{', i + 1);
-                if (close < 0 || (nested >= 0 && nested < close)) {
-                    throw malformed(line, "a { is not closed");
-                }
-                String inside = rest.substring(i + 1, close).strip();
-                segments.add(inside.isEmpty() ? List.of() : List.of(inside.split("\\s+")));
-                i = close + 1;
-            } else {
-                throw malformed(line, "text outside {...}");
+        for (Command.Field field : fields) {
+            List<String> words = new ArrayList<>();
+            words.add(field.key());
+            if (!field.value().isEmpty()) {
+                words.addAll(List.of(field.value().split("\\p{javaWhitespace}+")));
             }
+            segments.add(words);
         }
         return segments;
     }

@@ -105,7 +105,7 @@ class BadSettingsTest {
         assertTrue(error(absent).startsWith("cannot read " + absent), "an absent file");
     }
 
-    /** Through the real process: exit 2, one line on standard error, nothing listened. */
+    /** Through Main.run, as the command line runs it: exit 2, one line on standard error, nothing listened. */
     @ParameterizedTest
     @CsvSource(delimiter = '|', value = {
         "usarsim.interval=often|usarsim.interval = 'often'",
@@ -116,11 +116,11 @@ class BadSettingsTest {
         Path file = content.equals("ENCODING")
                 ? file("wss.port=0\nusarsim.host=h\u00f6st\n".getBytes(StandardCharsets.ISO_8859_1))
                 : file("wss.bindAddress=127.0.0.1\nwss.port=0\n" + content + "\n");
-        ServerProcess server = ServerProcess.start("--headless", "--config", file.toString());
-        assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
+        MainRun server = MainRun.of("--headless", "--config", file.toString());
+        assertEquals(2, server.exitCode(), "exit code; stderr: " + server.stderr());
         String error = server.stderr().strip();
         assertFalse(error.contains("\n"), "one line: " + error);
         assertTrue(error.contains(expected), error);
-        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+        assertTrue(server.stdoutLines().stream().noneMatch(line -> line.contains("listening")), server.stdoutLines().toString());
     }
 }

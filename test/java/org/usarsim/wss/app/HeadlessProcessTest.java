@@ -13,14 +13,12 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -30,13 +28,12 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * Runs the real server as a child process, as a user does:
  * {@code java -cp <classes> org.usarsim.wss.app.Main --headless --config FILE}. Every config
- * binds 127.0.0.1 and lets the OS choose the control port, read back from the log.
+ * binds 127.0.0.1 and lets the OS choose the control port, read back from the log. A bad
+ * command line or config ends before anything runs: CommandLineTest, in the test JVM.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class HeadlessProcessTest {
@@ -159,37 +156,6 @@ class HeadlessProcessTest {
         }
     }
 
-    @ParameterizedTest
-    @CsvSource({
-        "wss.colour, blue",
-        "wss.chunkSize, big",
-        "distance.n, zero",
-        "wss.model, NoSuchModel",
-    })
-    void badConfigExitsTwoBeforeBinding(String key, String value) throws Exception {
-        ServerProcess server = start("--headless", "--config", config(Map.of(key, value)).toString());
-        assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
-        String error = server.stderr().strip();
-        assertFalse(error.isEmpty(), "an error on standard error");
-        assertFalse(error.contains("\n"), "a one-line error: " + error);
-        assertTrue(error.contains(key), "names the key: " + error);
-        assertTrue(error.contains(value), "names the value: " + error);
-        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")),
-                "never listened: " + server.stdoutSoFar());
-    }
-
-    /** With the configured port held by someone else, a bad config still gives 2: checked before binding. */
-    @Test
-    void badModelIsReportedBeforeTheControlPortIsBound() throws Exception {
-        ServerSocket taken = holdPort();
-        Map<String, String> overrides = new LinkedHashMap<>();
-        overrides.put("wss.port", String.valueOf(taken.getLocalPort()));
-        overrides.put("wss.model", "NoSuchModel");
-        ServerProcess server = start("--headless", "--config", config(overrides).toString());
-        assertEquals(2, server.awaitExit(), "exit code; stderr: " + server.stderr());
-        assertTrue(server.stderr().contains("NoSuchModel"), server.stderr());
-    }
-
     @Test
     void controlPortInUseExitsOne() throws Exception {
         ServerSocket taken = holdPort();
@@ -204,52 +170,11 @@ class HeadlessProcessTest {
         assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
     }
 
-    @Test
-    void unknownArgumentExitsTwo() throws Exception {
-        ServerProcess server = start("--headless", "--verbose", "--config", config(Map.of()).toString());
-        assertEquals(2, server.awaitExit());
-        assertTrue(server.stderr().contains("--verbose"), "names the argument: " + server.stderr());
-        assertTrue(server.stderr().contains("usage"), "shows the usage: " + server.stderr());
-        assertTrue(server.stdoutSoFar().isEmpty(), server.stdoutSoFar().toString());
-    }
-
-    @Test
-    void configWithoutAFileExitsTwo() throws Exception {
-        ServerProcess server = start("--headless", "--config");
-        assertEquals(2, server.awaitExit());
-        assertTrue(server.stderr().contains("--config"), server.stderr());
-    }
-
-    @Test
-    void missingConfigFileExitsTwo() throws Exception {
-        Path absent = dir.resolve("absent.properties");
-        ServerProcess server = start("--headless", "--config", absent.toString());
-        assertEquals(2, server.awaitExit());
-        String error = server.stderr().strip();
-        assertTrue(error.contains(absent.toString()), "names the file: " + error);
-        assertFalse(error.contains("\n"), "a one-line error: " + error);
-    }
-
-    @Test
-    void helpPrintsUsageAndExitsZero() throws Exception {
-        ServerProcess server = start("--help");
-        assertEquals(0, server.awaitExit());
-        assertTrue(String.join("\n", server.stdoutSoFar()).contains("usage"), server.stdoutSoFar().toString());
-    }
-
     // ---- helpers ----
 
     /** A config binding 127.0.0.1 on a port of the OS's choosing, with these overrides. */
     private Path config(Map<String, String> overrides) throws IOException {
-        Map<String, String> values = new LinkedHashMap<>();
-        values.put("wss.bindAddress", "127.0.0.1");
-        values.put("wss.port", "0");
-        values.putAll(overrides);
-        StringBuilder text = new StringBuilder("# written by HeadlessProcessTest\n");
-        values.forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
-        Path file = Files.createTempFile(dir, "wss", ".properties");
-        Files.writeString(file, text, StandardCharsets.UTF_8);
-        return file;
+        return ServerProcess.config(dir, overrides);
     }
 
     private ServerSocket holdPort() throws IOException {

@@ -26,7 +26,8 @@ import org.usarsim.wss.model.PluginJars;
 
 /**
  * Model plugins in the real server process: from the folder named by wss.pluginDir, and from the
- * plugins/ folder beside wss.jar when run with {@code java -jar}.
+ * plugins/ folder beside wss.jar when run with {@code java -jar}. The settings a plugin's
+ * presence decides are checked through Main.run in the test JVM (exit 2 before anything runs).
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class PluginProcessTest {
@@ -92,13 +93,12 @@ class PluginProcessTest {
     @Test
     void aPluginDirThatDoesNotExistExitsTwoBeforeBinding() throws Exception {
         Path absent = dir.resolve("no such folder");
-        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
-                config("wss.pluginDir = " + absent));
-        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        MainRun server = MainRun.of("--headless", "--config", config("wss.pluginDir = " + absent).toString());
+        assertEquals(2, server.exitCode(), "stderr: " + server.stderr());
         String error = server.stderr().strip();
         assertFalse(error.contains("\n"), "a one-line error: " + error);
         assertTrue(error.contains("wss.pluginDir = '" + absent + "'"), "names the key and the value: " + error);
-        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+        assertTrue(server.stdoutLines().stream().noneMatch(line -> line.contains("listening")), server.stdoutLines().toString());
     }
 
     // ---- a plugin's settings ----
@@ -134,20 +134,19 @@ class PluginProcessTest {
     void aBadValueForAPluginsKeyExitsTwoBeforeBinding() throws Exception {
         Path plugins = dir.resolve("plugins");
         PluginJars.tunedJar(plugins.resolve("tuned.jar"), classes);
-        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
-                config("wss.pluginDir = " + plugins, "wss.model = Tuned", "tuned.level = 11"));
-        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        MainRun server = MainRun.of("--headless", "--config",
+                config("wss.pluginDir = " + plugins, "wss.model = Tuned", "tuned.level = 11").toString());
+        assertEquals(2, server.exitCode(), "stderr: " + server.stderr());
         String error = server.stderr().strip();
         assertFalse(error.contains("\n"), "a one-line error: " + error);
         assertTrue(error.endsWith(": tuned.level = '11' is not a whole number from 1 to 10"), error);
-        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
+        assertTrue(server.stdoutLines().stream().noneMatch(line -> line.contains("listening")), server.stdoutLines().toString());
     }
 
     @Test
     void aPluginsKeyWithoutThePluginIsAnUnknownKey() throws Exception {
-        ServerProcess server = start(List.of("-cp", PluginJars.serverClasses().toString(), Main.class.getName()),
-                config("tuned.gain = 1"));
-        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
+        MainRun server = MainRun.of("--headless", "--config", config("tuned.gain = 1").toString());
+        assertEquals(2, server.exitCode(), "stderr: " + server.stderr());
         String error = server.stderr().strip();
         assertFalse(error.contains("\n"), "a one-line error: " + error);
         assertTrue(error.contains("unknown key tuned.gain (value '1'); known keys: wss.port, "), error);

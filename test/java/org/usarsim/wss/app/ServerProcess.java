@@ -7,9 +7,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.BlockingQueue;
@@ -43,6 +45,19 @@ public final class ServerProcess {
     private final ByteArrayOutputStream stderr = new ByteArrayOutputStream();
     private final Thread outReader;
     private final Thread errReader;
+
+    /** A properties file in {@code dir} binding 127.0.0.1 on a port of the OS's choosing, with these overrides. */
+    static Path config(Path dir, Map<String, String> overrides) throws IOException {
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put("wss.bindAddress", "127.0.0.1");
+        values.put("wss.port", "0");
+        values.putAll(overrides);
+        StringBuilder text = new StringBuilder("# written by a test\n");
+        values.forEach((key, value) -> text.append(key).append('=').append(value).append('\n'));
+        Path file = Files.createTempFile(dir, "wss", ".properties");
+        Files.writeString(file, text, StandardCharsets.UTF_8);
+        return file;
+    }
 
     /** {@code java -cp <the server's classes> org.usarsim.wss.app.Main ARGS}. */
     public static ServerProcess start(String... args) throws Exception {

@@ -20,7 +20,7 @@ import org.usarsim.wss.gui.Gui;
 /**
  * {@code java -jar wss.jar} without {@code --headless}, as a process: the window with
  * {@code --config} and {@code --start} (on the tests' display), SIGTERM while it is open, and no
- * display at all.
+ * display at all. The command line's mistakes and --help: CommandLineTest.
  */
 @Timeout(60)
 class WindowProcessTest {
@@ -56,22 +56,6 @@ class WindowProcessTest {
             assertEquals(-1, in.read(), "the robot's control connection was closed");
         }
         assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("running headless")), server.stdoutSoFar().toString());
-    }
-
-    @Test
-    void startWithHeadlessIsAMistake() throws Exception {
-        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--headless", "--start");
-        assertEquals(2, server.awaitExit());
-        assertTrue(server.stderr().startsWith("wss: --start is for the window; headless, the server starts at once"), server.stderr());
-    }
-
-    @Test
-    void helpNamesTheWindowAndStart() throws Exception {
-        server = ServerProcess.start(dir.resolve("prefs"), Map.of(), "--help");
-        assertEquals(0, server.awaitExit());
-        String help = String.join("\n", server.stdoutSoFar());
-        assertTrue(help.contains("java -jar wss.jar [--config FILE] [--start]"), help);
-        assertTrue(help.contains("--start             in the window, press Start at once"), help);
     }
 
     @Test

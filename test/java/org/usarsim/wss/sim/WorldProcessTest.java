@@ -13,8 +13,6 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -23,12 +21,9 @@ import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.junit.jupiter.api.io.TempDir;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.CsvSource;
 import org.usarsim.wss.app.ServerProcess;
 
-/** {@code Main --world FILE --bind 127.0.0.1 --port 0} as a user runs it, in a child process. */
+/** {@code Main --world FILE --bind 127.0.0.1 --port 0} as a user runs it, in a child process; its mistakes: WorldCommandLineTest. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
 class WorldProcessTest {
 
@@ -36,9 +31,6 @@ class WorldProcessTest {
     private static final Pattern LISTENING = Pattern.compile(
             "^\\d{4}-\\d\\d-\\d\\d \\d\\d:\\d\\d:\\d\\d\\.\\d{3} INFO world server listening on 127\\.0\\.0\\.1:(\\d+)"
             + " with 2 robots and 4 walls from " + Pattern.quote(CORRIDOR) + "$");
-
-    @TempDir
-    Path dir;
 
     private final List<ServerProcess> servers = new ArrayList<>();
     private final List<AutoCloseable> closeables = new ArrayList<>();
@@ -91,25 +83,6 @@ class WorldProcessTest {
     }
 
     @Test
-    void aBadWorldFileExitsTwoBeforeBinding() throws Exception {
-        Path world = dir.resolve("bad.world");
-        Files.writeString(world, "# a mistake on line 3\nrobot A 0,0,0\npath A speed 0 loop 5,5\n", StandardCharsets.UTF_8);
-        ServerProcess server = start("--world", world.toString(), "--bind", "127.0.0.1", "--port", "0");
-        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
-        assertEquals("wss: " + world + ":3: the speed must be above 0 metres per second: 0 (path A speed 0 loop 5,5)\n",
-                server.stderr().replace("\r\n", "\n"));
-        assertTrue(server.stdoutSoFar().stream().noneMatch(line -> line.contains("listening")), server.stdoutSoFar().toString());
-    }
-
-    @Test
-    void aMissingWorldFileExitsTwo() throws Exception {
-        Path absent = dir.resolve("absent.world");
-        ServerProcess server = start("--world", absent.toString(), "--bind", "127.0.0.1", "--port", "0");
-        assertEquals(2, server.awaitExit());
-        assertEquals("wss: " + absent + ": no such file", server.stderr().strip());
-    }
-
-    @Test
     void aPortInUseExitsOneNamingAddressAndPort() throws Exception {
         ServerSocket taken = new ServerSocket(0, 50, InetAddress.getByName("127.0.0.1"));
         closeables.add(taken);
@@ -119,35 +92,6 @@ class WorldProcessTest {
         assertFalse(error.contains("\n"), "one line: " + error);
         assertTrue(error.startsWith("wss: cannot listen on 127.0.0.1:" + taken.getLocalPort() + ": "), error);
         assertTrue(error.toLowerCase().contains("in use"), "says why: " + error);
-    }
-
-    @ParameterizedTest(name = "[{index}] {0}")
-    @CsvSource(delimiter = '|', value = {
-        "--port 7435                                      | --port and --bind are for the world server",
-        "--bind 127.0.0.1                                 | --port and --bind are for the world server",
-        "--headless --port 0                              | --port and --bind are for the world server",
-        "--world " + CORRIDOR + " --headless              | without --headless or --config",
-        "--world " + CORRIDOR + " --port 65536            | --port 65536 is not a port number from 0 to 65535",
-        "--world " + CORRIDOR + " --port seven            | --port seven is not a port number",
-        "--world " + CORRIDOR + " --bind no.such.host.invalid | --bind no.such.host.invalid is not an address",
-        "--world                                          | --world needs a value",
-        "--world " + CORRIDOR + " --port                  | --port needs a value",
-    })
-    void commandLineMistakesExitTwo(String args, String message) throws Exception {
-        ServerProcess server = start(args.strip().split(" +"));
-        assertEquals(2, server.awaitExit(), "stderr: " + server.stderr());
-        assertTrue(server.stderr().startsWith("wss: "), server.stderr());
-        assertTrue(server.stderr().contains(message), server.stderr());
-        assertTrue(server.stdoutSoFar().isEmpty(), server.stdoutSoFar().toString());
-    }
-
-    @Test
-    void helpDescribesTheWorldServer() throws Exception {
-        ServerProcess server = start("--help");
-        assertEquals(0, server.awaitExit());
-        String help = String.join("\n", server.stdoutSoFar());
-        assertTrue(help.contains("--world FILE [--port N] [--bind ADDRESS]"), help);
-        assertTrue(help.contains("default 7435"), help);
     }
 
     // ---- helpers ----

@@ -4,6 +4,7 @@ import java.io.PrintStream;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
+import java.util.List;
 import java.util.logging.Formatter;
 import java.util.logging.Handler;
 import java.util.logging.Level;
@@ -11,7 +12,7 @@ import java.util.logging.LogRecord;
 import java.util.logging.Logger;
 import java.util.logging.StreamHandler;
 
-/** Sends the server's log to standard output, one line per event, each with a timestamp. */
+/** Sends the server's log to standard output (Main.run's {@code out}), one line per event, each with a timestamp. */
 final class LogSetup {
 
     private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS");
@@ -40,8 +41,38 @@ final class LogSetup {
         }
     }
 
-    static void toStandardOutput(Level level) {
-        install(System.out, level);
+    /**
+     * The root logger's handlers and level as they are now; {@link Saved#restore()} puts them back
+     * (Main.run does when it returns, so a run inside another program leaves its logging as it was).
+     */
+    static Saved save() {
+        Logger root = Logger.getLogger("");
+        return new Saved(List.of(root.getHandlers()), root.getLevel());
+    }
+
+    /** The root logger's handlers and level at {@link #save()}. */
+    static final class Saved {
+        private final List<Handler> handlers;
+        private final Level level;
+
+        private Saved(List<Handler> handlers, Level level) {
+            this.handlers = handlers;
+            this.level = level;
+        }
+
+        /** Flushes the handlers added since (not closed: their streams belong to the caller) and puts back the saved ones. */
+        void restore() {
+            Logger root = Logger.getLogger("");
+            for (Handler handler : root.getHandlers()) {
+                if (!handlers.contains(handler)) {
+                    handler.flush();
+                    root.removeHandler(handler);
+                }
+            }
+            List<Handler> now = List.of(root.getHandlers());
+            handlers.stream().filter(handler -> !now.contains(handler)).forEach(root::addHandler);
+            root.setLevel(level);
+        }
     }
 
     static void install(PrintStream out, Level level) {

@@ -2,13 +2,13 @@ package org.usarsim.wss.app;
 
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
+import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -24,15 +24,23 @@ import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.sim.WorldFileException;
 import org.usarsim.wss.sim.WorldServer;
 import sun.misc.Signal;
+import sun.misc.SignalHandler;
 
 /**
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
  * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS]} runs a USARSim-compatible
- * world server instead (docs/world.md). Exit codes: 0 after SIGTERM or Ctrl-C, 1 when the server
- * cannot start (port in use, model will not start), 2 for a bad command line, configuration or world file.
+ * world server instead (docs/world.md). {@link #run} does it all and returns the exit code
+ * ({@link #OK}, {@link #CANNOT_START}, {@link #BAD_INPUT}); {@link #main} only exits with it.
  */
 public final class Main {
+
+    /** Exit code: --help, or stopped by SIGTERM, Ctrl-C or closing the window. */
+    public static final int OK = 0;
+    /** Exit code: the server cannot start (port in use, model will not start). */
+    public static final int CANNOT_START = 1;
+    /** Exit code: a bad command line, properties file or world file, found before anything listens. */
+    public static final int BAD_INPUT = 2;
 
     static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
             + "       java -jar wss.jar --headless [--config FILE]\n"
@@ -46,13 +54,46 @@ public final class Main {
             + "                      wss.model and wss.eventLog override the stored ones, its model settings\n"
             + "                      the stored ones for this session\n"
             + "  --world FILE        instead of the WSS, serve USARSim's position protocol from a world file (docs/world.md)\n"
-            + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default 7435)\n"
-            + "  --bind ADDRESS      the address the world server listens on (default 0.0.0.0: every interface)";
+            + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")\n"
+            + "  --bind ADDRESS      the address the world server listens on (default " + Defaults.ALL_INTERFACES
+            + ": every interface)";
+
+    /** Why a run ends before it serves: the exit code and the one line for standard error. */
+    private static final class Failure extends Exception {
+        final int code;
+
+        Failure(int code, String message) {
+            super(message);
+            this.code = code;
+        }
+    }
 
     private Main() {
     }
 
     public static void main(String[] args) {
+        System.exit(run(System.out, System.err, args));
+    }
+
+    /**
+     * Runs the WSS (or the world server, or --help) as the command line asks: the log goes to
+     * {@code out}, a failure's one line to {@code err}. A server runs until SIGTERM, Ctrl-C or
+     * closing the window, then is closed; the exit code is returned. The root logger and the
+     * signal handlers are put back as they were before it returns.
+     */
+    public static int run(PrintStream out, PrintStream err, String... args) {
+        LogSetup.Saved logging = LogSetup.save();
+        try {
+            return parseAndRun(out, args);
+        } catch (Failure e) {
+            err.println("wss: " + e.getMessage());
+            return e.code;
+        } finally {
+            logging.restore();
+        }
+    }
+
+    private static int parseAndRun(PrintStream out, String... args) throws Failure {
         Path config = null;
         boolean headless = false;
         boolean start = false;
@@ -69,7 +110,7 @@ public final class Main {
                     break;
                 case "--config":
                     if (i + 1 == args.length) {
-                        fail(2, "--config needs a file\n" + USAGE);
+                        throw badInput("--config needs a file\n" + USAGE);
                     }
                     config = Path.of(args[++i]);
                     break;
@@ -78,7 +119,7 @@ public final class Main {
                 case "--bind": {
                     String option = args[i];
                     if (i + 1 == args.length) {
-                        fail(2, option + " needs a value\n" + USAGE);
+                        throw badInput(option + " needs a value\n" + USAGE);
                     }
                     String value = args[++i];
                     if (option.equals("--world")) {
@@ -92,53 +133,56 @@ public final class Main {
                 }
                 case "--help":
                 case "-h":
-                    System.out.println(HELP);
-                    System.out.print(Settings.help(Settings.defaults().catalog()));
-                    return;
+                    out.println(HELP);
+                    out.print(Settings.help(Settings.defaults().catalog()));
+                    return OK;
                 default:
-                    fail(2, "unknown argument " + args[i] + "\n" + USAGE);
+                    throw badInput("unknown argument " + args[i] + "\n" + USAGE);
             }
         }
         if (world != null && (headless || config != null)) {
-            fail(2, "--world runs the world server alone, without --headless or --config\n" + USAGE);
+            throw badInput("--world runs the world server alone, without --headless or --config\n" + USAGE);
         }
         if (world != null && start) {
-            fail(2, "--start presses the window's Start; the world server starts at once\n" + USAGE);
+            throw badInput("--start presses the window's Start; the world server starts at once\n" + USAGE);
         }
         if (headless && start) {
-            fail(2, "--start is for the window; headless, the server starts at once\n" + USAGE);
+            throw badInput("--start is for the window; headless, the server starts at once\n" + USAGE);
         }
         if (world == null && (port != null || bind != null)) {
-            fail(2, "--port and --bind are for the world server: they need --world FILE\n" + USAGE);
+            throw badInput("--port and --bind are for the world server: they need --world FILE\n" + USAGE);
         }
         if (world != null) {
-            runWorld(world, port == null ? "7435" : port, bind == null ? "0.0.0.0" : bind);
-            return;
+            return runWorld(out, world, port == null ? String.valueOf(Defaults.WORLD_PORT) : port,
+                    bind == null ? Defaults.ALL_INTERFACES : bind);
         }
         Properties file = new Properties();
-        Settings settings = null;
+        Settings settings;
         try {
             if (config != null) {
                 file = Settings.read(config);
             }
             // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
             Function<Settings, ModelCatalog> catalog = server -> {
-                LogSetup.toStandardOutput(server.logLevel());
+                LogSetup.install(out, server.logLevel());
                 return Settings.modelsFor(server);
             };
             settings = Settings.of(file, config == null ? "the defaults" : config.toString(), catalog);
         } catch (SettingsException e) {
-            fail(2, e.getMessage());
+            throw badInput(e.getMessage());
         }
         String noDisplay = headless ? null : noDisplay();
         if (headless || noDisplay != null) {
             if (noDisplay != null) {
                 Logger.getLogger(Main.class.getName()).info(noDisplay + ": running headless");
             }
-            runHeadless(settings, config);
-        } else {
-            runWindow(settings, file, config != null, start);
+            return runHeadless(settings, config);
         }
+        return runWindow(settings, file, config != null, start);
+    }
+
+    private static Failure badInput(String message) {
+        return new Failure(BAD_INPUT, message);
     }
 
     /** Why no window can open here, or null when one can. */
@@ -155,15 +199,15 @@ public final class Main {
         }
     }
 
-    private static PropagationModel knownModel(ModelCatalog catalog, String name) {
+    private static PropagationModel knownModel(ModelCatalog catalog, String name) throws Failure {
         PropagationModel model = catalog.find(name);
         if (model == null) {
-            fail(2, "wss.model = '" + name + "' is not a known model; known: " + String.join(", ", catalog.names()));
+            throw badInput("wss.model = '" + name + "' is not a known model; known: " + String.join(", ", catalog.names()));
         }
         return model;
     }
 
-    private static void runHeadless(Settings settings, Path config) {
+    private static int runHeadless(Settings settings, Path config) throws Failure {
         ModelCatalog catalog = settings.catalog();
         PropagationModel model = knownModel(catalog, settings.modelName());
         Logger log = Logger.getLogger(Main.class.getName());
@@ -171,55 +215,55 @@ public final class Main {
             log.warning(config + ": " + key + " is not a setting of " + model.name() + " (it is one of "
                     + String.join(", ", declaring(catalog, key)) + "): ignored");
         }
-        Server server = null;
+        Server server;
         try {
             server = Server.create(settings.hubConfig(), model, settings.eventLog() ? settings.eventLogDir() : null);
         } catch (Server.StartFailure e) {
-            fail(1, e.getMessage());
+            throw new Failure(CANNOT_START, e.getMessage());
         }
-        Server running = server;
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
-        onStopSignal(() -> {
+        try (StopSignal stop = new StopSignal()) {
             try {
-                running.close();
-            } finally {
-                System.exit(0);
+                model.configure(settings.modelSettings());
+                server.start();
+            } catch (Server.StartFailure e) {
+                throw new Failure(CANNOT_START, e.getMessage());
+            } catch (RuntimeException e) {
+                throw new Failure(CANNOT_START, model.name() + " did not start: " + e.getMessage());
             }
-        });
-        try {
-            model.configure(settings.modelSettings());
-            running.start();
-        } catch (Server.StartFailure e) {
-            fail(1, e.getMessage());
-        } catch (RuntimeException e) {
-            fail(1, model.name() + " did not start: " + e.getMessage());
+            try {
+                stop.await();
+            } finally {
+                server.close();
+            }
         }
-        waitForStopSignal();
+        return OK;
     }
 
     /**
-     * The main window, starting servers as headless mode does; closing it (or SIGTERM) stops the
-     * server and exits 0. The keys {@code file} sets (none without --config) go over the stored ones.
+     * The main window, starting servers as headless mode does, until it is closed (or SIGTERM,
+     * which stops the server). The keys {@code file} sets (none without --config) go over the stored ones.
      */
-    private static void runWindow(Settings settings, Properties file, boolean fromFile, boolean start) {
-        WindowLog windowLog = new WindowLog();
-        Logger.getLogger("").addHandler(windowLog);
+    private static int runWindow(Settings settings, Properties file, boolean fromFile, boolean start) throws Failure {
         ModelCatalog catalog = settings.catalog();
         Launch launch = new Launch(file.containsKey("wss.port") ? settings.get("wss.port") : null,
                 file.containsKey("wss.model") ? knownModel(catalog, settings.modelName()).name() : null,
                 file.containsKey("wss.eventLog") ? settings.eventLog() : null,
                 fromFile ? settings.modelSettings() : null, start);
+        WindowLog windowLog = new WindowLog();
+        Logger.getLogger("").addHandler(windowLog);
         List<PropagationModel> models = catalog.names().stream().map(catalog::find).toList();
         WindowServers servers = new WindowServers(settings);
-        onStopSignal(() -> {
+        try (StopSignal stop = new StopSignal()) {
+            SwingUtilities.invokeLater(() -> MainWindow.open(servers, models, new WindowSettings(), new ModelPreferences(),
+                    windowLog, launch, stop::stop));
             try {
-                servers.stopCurrent();
+                stop.await();
             } finally {
-                System.exit(0);
+                servers.stopCurrent();
             }
-        });
-        SwingUtilities.invokeLater(() -> MainWindow.open(servers, models, new WindowSettings(), new ModelPreferences(),
-                windowLog, launch, () -> System.exit(0)));
+        }
+        return OK;
     }
 
     /** The names of the models that declare this key. */
@@ -229,7 +273,7 @@ public final class Main {
     }
 
     /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */
-    private static void runWorld(Path file, String portText, String bindText) {
+    private static int runWorld(PrintStream out, Path file, String portText, String bindText) throws Failure {
         int port = -1;
         try {
             port = Integer.parseInt(portText);
@@ -237,55 +281,68 @@ public final class Main {
             // reported below
         }
         if (port < 0 || port > 65535) {
-            fail(2, "--port " + portText + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
+            throw badInput("--port " + portText + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
         }
-        InetAddress address = null;
+        InetAddress address;
         try {
             address = InetAddress.getByName(bindText);
         } catch (UnknownHostException e) {
-            fail(2, "--bind " + bindText + " is not an address of this machine: " + e.getMessage());
+            throw badInput("--bind " + bindText + " is not an address of this machine: " + e.getMessage());
         }
-        LogSetup.toStandardOutput(Level.INFO);
-        AtomicReference<WorldServer> running = new AtomicReference<>();
-        Runnable stop = () -> {
-            try {
-                WorldServer server = running.get();
-                if (server != null) {
-                    server.close();
-                }
-            } finally {
-                System.exit(0);
-            }
-        };
+        LogSetup.install(out, Level.INFO);
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
-        onStopSignal(stop);
-        try {
-            running.set(WorldServer.start(file, address, port));
-        } catch (WorldFileException e) {
-            fail(2, e.getMessage());
-        } catch (IOException e) {
-            fail(1, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
+        try (StopSignal stop = new StopSignal()) {
+            WorldServer server;
+            try {
+                server = WorldServer.start(file, address, port);
+            } catch (WorldFileException e) {
+                throw badInput(e.getMessage());
+            } catch (IOException e) {
+                throw new Failure(CANNOT_START, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
+            }
+            try {
+                stop.await();
+            } finally {
+                server.close();
+            }
         }
-        waitForStopSignal();
+        return OK;
     }
 
-    /** What SIGTERM and Ctrl-C (SIGINT) do; it ends with System.exit. */
-    private static void onStopSignal(Runnable stop) {
-        Signal.handle(new Signal("TERM"), signal -> stop.run());
-        Signal.handle(new Signal("INT"), signal -> stop.run());
-    }
+    /**
+     * What a running server waits on: SIGTERM, Ctrl-C (SIGINT) or {@link #stop()} (the window
+     * closed) ends the wait. Closing puts back the signal handlers found.
+     */
+    private static final class StopSignal implements AutoCloseable {
+        private static final Signal TERM = new Signal("TERM");
+        private static final Signal INT = new Signal("INT");
 
-    /** Keeps the main thread until a stop signal's handler exits the JVM. */
-    private static void waitForStopSignal() {
-        try {
-            new CountDownLatch(1).await();
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        private final CountDownLatch stopped = new CountDownLatch(1);
+        private final SignalHandler termBefore;
+        private final SignalHandler intBefore;
+
+        StopSignal() {
+            termBefore = Signal.handle(TERM, signal -> stop());
+            intBefore = Signal.handle(INT, signal -> stop());
         }
-    }
 
-    private static void fail(int status, String message) {
-        System.err.println("wss: " + message);
-        System.exit(status);
+        void stop() {
+            stopped.countDown();
+        }
+
+        /** Until stopped; an interrupt ends the wait too. */
+        void await() {
+            try {
+                stopped.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+
+        @Override
+        public void close() {
+            Signal.handle(TERM, termBefore);
+            Signal.handle(INT, intBefore);
+        }
     }
 }

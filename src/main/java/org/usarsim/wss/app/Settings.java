@@ -39,9 +39,9 @@ public final class Settings {
 
     /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
-            Setting.integer("wss.port", "Control port", 50000).from(0).to(65535).noun("a port number").note("0: any free port")
+            Setting.integer("wss.port", "Control port", Defaults.CONTROL_PORT).from(0).to(65535).noun("a port number").note("0: any free port")
                     .help("The control port robots connect to; 0 lets the OS choose one, which the start line names"),
-            Setting.address("wss.bindAddress", "Bind address", "0.0.0.0").note("0.0.0.0: all")
+            Setting.address("wss.bindAddress", "Bind address", Defaults.ALL_INTERFACES).note(Defaults.ALL_INTERFACES + ": all")
                     .help("The address the control port and every WSS port listen on"),
             Setting.text("wss.model", "Model", "NoopPropagationModel").noun("the name of a propagation model")
                     .help("The propagation model: its name, or its simple or fully qualified class name"),

@@ -30,7 +30,7 @@ import org.usarsim.wss.model.simulator.DataConnection;
 import org.usarsim.wss.model.simulator.FakeSimulator;
 import org.usarsim.wss.model.simulator.ModelRig;
 import org.usarsim.wss.model.simulator.PathLoss;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.protocol.Replies;
 
 /**
@@ -305,8 +305,8 @@ class DistanceOnlyModelTest {
         rig.robot("B", at(-92), 0, 0);
         rig.polls(2);
         rig.events.clear();
-        RobotState a = new RobotState("A", 0, 0, 0, false);
-        rig.sim.script(k -> List.of(a, new RobotState("B", at(k % 2 == 1 ? -94 : -92), 0, 0, false)));
+        ReportedRobot a = new ReportedRobot("A", 0, 0, 0, false);
+        rig.sim.script(k -> List.of(a, new ReportedRobot("B", at(k % 2 == 1 ? -94 : -92), 0, 0, false)));
         rig.polls(polls);
         return rig.events("OUT_OF_RANGE", "IN_RANGE");
     }
@@ -326,7 +326,7 @@ class DistanceOnlyModelTest {
         rig(Map.of("distance.margin", "3"));
         List<ModelRig.Event> changes = oscillate(8);
         assertEquals(List.of("OUT_OF_RANGE"), changes.stream().map(ModelRig.Event::type).toList(), "one break, no flapping");
-        rig.sim.script(k -> List.of(new RobotState("A", 0, 0, 0, false), new RobotState("B", at(-89.5), 0, 0, false)));
+        rig.sim.script(k -> List.of(new ReportedRobot("A", 0, 0, 0, false), new ReportedRobot("B", at(-89.5), 0, 0, false)));
         Wait.until("the link comes back above cutoff + margin", () -> rig.events("IN_RANGE").size() == 1);
     }
 

@@ -16,6 +16,7 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.hub.Wait;
 
@@ -28,7 +29,7 @@ class SimulatorModelTest {
         volatile boolean fail;
 
         @Override
-        protected double strength(RobotState a, RobotState b) {
+        protected double strength(ReportedRobot a, ReportedRobot b) {
             if (fail) {
                 throw new IllegalStateException("a bug in the model");
             }
@@ -41,7 +42,7 @@ class SimulatorModelTest {
         }
 
         @Override
-        protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+        protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
             return true;
         }
     }
@@ -106,10 +107,10 @@ class SimulatorModelTest {
                 Socket simulator = server.accept()) {
             OutputStream out = simulator.getOutputStream();
             out.write("NUMOBS {From A} {To B} {Obs".getBytes(StandardCharsets.US_ASCII));
-            assertEquals(Map.of(), connection.obstacles(List.of(NamePair.of("A", "B"))), "no whole answer within 200 ms");
+            assertEquals(Map.of(), connection.obstacles(List.of(RobotPair.of("A", "B"))), "no whole answer within 200 ms");
             out.write("tCount 1.0000}\r\nPOSITIONS {Robots 1} {Name A Location 1,2,3 BatteryEmpty False}\r\n"
                     .getBytes(StandardCharsets.US_ASCII));
-            assertEquals(Map.of("A", new RobotState("A", 1, 2, 3, false)), connection.positions(),
+            assertEquals(Map.of("A", new ReportedRobot("A", 1, 2, 3, false)), connection.positions(),
                     "the late NUMOBS is skipped whole, not read as garbage");
         }
     }

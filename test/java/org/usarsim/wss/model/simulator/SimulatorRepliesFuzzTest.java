@@ -53,8 +53,8 @@ class SimulatorRepliesFuzzTest {
                 // As SimulatorConnection does: the type word picks the reader; any other type is refused.
                 String type = SimulatorReplies.type(line);
                 if (type.equals(SimulatorReplies.POSITIONS)) {
-                    Map<String, RobotState> robots = SimulatorReplies.positions(line);
-                    for (RobotState robot : robots.values()) {
+                    Map<String, ReportedRobot> robots = SimulatorReplies.positions(line);
+                    for (ReportedRobot robot : robots.values()) {
                         assertTrue(Double.isFinite(robot.x()) && Double.isFinite(robot.y()) && Double.isFinite(robot.z()),
                                 () -> "a position that is not finite from '" + line + "'" + replay);
                     }

@@ -1,7 +1,7 @@
 package org.usarsim.wss.model.distance;
 
 import java.util.Map;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
@@ -13,7 +13,7 @@ import org.usarsim.wss.model.simulator.SimulatorModel;
 public final class DistanceOnlyPropagationModel extends SimulatorModel {
 
     @Override
-    protected double strength(RobotState a, RobotState b) {
+    protected double strength(ReportedRobot a, ReportedRobot b) {
         return pathLoss().strength(a.distanceTo(b));
     }
 
@@ -23,7 +23,7 @@ public final class DistanceOnlyPropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
         return true;
     }
 }

@@ -9,9 +9,9 @@ import java.util.Set;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.simulator.NamePair;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorConnection;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
@@ -72,8 +72,8 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected double strength(RobotState a, RobotState b) {
-        return pathLoss().strength(a.distanceTo(b)) - counts.count(NamePair.of(a.name(), b.name())) * attenuation;
+    protected double strength(ReportedRobot a, ReportedRobot b) {
+        return pathLoss().strength(a.distanceTo(b)) - counts.count(RobotPair.of(a.name(), b.name())) * attenuation;
     }
 
     @Override
@@ -82,7 +82,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
         return !listed.isEmpty();
     }
 
@@ -92,17 +92,17 @@ public final class ObstaclePropagationModel extends SimulatorModel {
      * batch is reported once, and again once it answers.
      */
     @Override
-    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
+    protected void beforeDecisions(Map<String, ReportedRobot> listed, List<RobotPair> pairs, SimulatorConnection simulator)
             throws IOException {
         ObstacleCounts known = counts;
-        Set<NamePair> current = new HashSet<>(pairs);
+        Set<RobotPair> current = new HashSet<>(pairs);
         known.retain(current::contains);
-        List<NamePair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
+        List<RobotPair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
         if (stale.isEmpty()) {
             return;
         }
-        Map<NamePair, Double> answers = simulator.obstacles(stale);
-        for (NamePair pair : stale) {
+        Map<RobotPair, Double> answers = simulator.obstacles(stale);
+        for (RobotPair pair : stale) {
             known.put(pair, answers.getOrDefault(pair, Double.NaN), listed);
         }
         if (answers.isEmpty() && !getobsUnanswered) {

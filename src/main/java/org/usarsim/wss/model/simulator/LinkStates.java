@@ -3,6 +3,7 @@ package org.usarsim.wss.model.simulator;
 import java.util.Collection;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import org.usarsim.wss.model.RobotPair;
 
 /**
  * Whether each pair's link is up, decided from its strength at every poll. A live link goes down
@@ -18,7 +19,7 @@ final class LinkStates {
     private final double cutoff;
     private final double margin;
     private final long holdNanos;
-    private final Map<NamePair, State> states = new ConcurrentHashMap<>();
+    private final Map<RobotPair, State> states = new ConcurrentHashMap<>();
 
     LinkStates(double cutoff, double margin, double holdSeconds) {
         this.cutoff = cutoff;
@@ -27,7 +28,7 @@ final class LinkStates {
     }
 
     /** Decides the pair's state for the strength measured at {@code nowNanos}; NaN counts as out of range. */
-    boolean decide(NamePair pair, double strength, long nowNanos) {
+    boolean decide(RobotPair pair, double strength, long nowNanos) {
         State state = states.get(pair);
         if (state == null) {
             state = new State(strength >= cutoff, nowNanos);
@@ -43,7 +44,7 @@ final class LinkStates {
     }
 
     /** The pair's decided state: TRUE or FALSE, or null when it was never decided. */
-    Boolean live(NamePair pair) {
+    Boolean live(RobotPair pair) {
         State state = states.get(pair);
         return state == null ? null : state.live();
     }

@@ -12,6 +12,7 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 
@@ -66,7 +67,7 @@ public abstract class SimulatorModel implements PropagationModel {
     private volatile RobotLinkModel linkModel;
     private volatile WssEventListener listener = new WssEventListener() {
     };
-    private volatile Map<String, RobotState> positions = Map.of();
+    private volatile Map<String, ReportedRobot> positions = Map.of();
     private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile Poller poller;
@@ -154,9 +155,9 @@ public abstract class SimulatorModel implements PropagationModel {
     /** The strength from the last known positions: NaN while either robot's position is unknown. */
     @Override
     public double getSignalStrengthForPair(String from, String to) {
-        Map<String, RobotState> known = positions;
-        RobotState a = known.get(from);
-        RobotState b = known.get(to);
+        Map<String, ReportedRobot> known = positions;
+        ReportedRobot a = known.get(from);
+        ReportedRobot b = known.get(to);
         return a == null || b == null ? Double.NaN : strength(a, b);
     }
 
@@ -166,29 +167,29 @@ public abstract class SimulatorModel implements PropagationModel {
      */
     @Override
     public boolean connectionIsPossibleForPair(String from, String to) {
-        Boolean live = links.live(NamePair.of(from, to));
+        Boolean live = links.live(RobotPair.of(from, to));
         if (live != null) {
             return live;
         }
-        Map<String, RobotState> known = positions;
-        RobotState a = known.get(from);
-        RobotState b = known.get(to);
+        Map<String, ReportedRobot> known = positions;
+        ReportedRobot a = known.get(from);
+        ReportedRobot b = known.get(to);
         return a == null || b == null ? allowsUnknownRobots() : strength(a, b) >= pathLoss.cutoff();
     }
 
     // ---- what a subclass decides ----
 
     /** The strength in dBm between two robots the simulator lists; NaN when it cannot be known. */
-    protected abstract double strength(RobotState a, RobotState b);
+    protected abstract double strength(ReportedRobot a, ReportedRobot b);
 
     /** Whether a robot with no known position may connect. */
     protected abstract boolean allowsUnknownRobots();
 
     /** Whether registered robots absent from this position list are kicked. */
-    protected abstract boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed);
+    protected abstract boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed);
 
     /** Called at every poll before the pairs are decided, with the pairs to decide. */
-    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
+    protected void beforeDecisions(Map<String, ReportedRobot> listed, List<RobotPair> pairs, SimulatorConnection simulator)
             throws IOException {
     }
 
@@ -285,13 +286,13 @@ public abstract class SimulatorModel implements PropagationModel {
         private void poll(SimulatorConnection simulator) throws IOException {
             RobotLinkModel hub = linkModel;
             List<String> registeredBefore = hub.getListOfRegisteredRobots();
-            Map<String, RobotState> listed = simulator.positions();
+            Map<String, ReportedRobot> listed = simulator.positions();
             if (stopped) {
                 return;
             }
             boolean kickAbsent = kicksRobotsAbsentFrom(listed);
             for (String robot : registeredBefore) {
-                RobotState state = listed.get(robot);
+                ReportedRobot state = listed.get(robot);
                 if (state == null && kickAbsent) {
                     log.info("kicking " + robot + ": the simulator does not list it");
                     hub.kickOutRobot(robot);
@@ -303,15 +304,15 @@ public abstract class SimulatorModel implements PropagationModel {
             }
             List<String> present = new ArrayList<>();
             for (String robot : hub.getListOfRegisteredRobots()) {
-                RobotState state = listed.get(robot);
+                ReportedRobot state = listed.get(robot);
                 if (state != null && !state.batteryEmpty()) {
                     present.add(robot);
                 }
             }
-            List<NamePair> pairs = new ArrayList<>();
+            List<RobotPair> pairs = new ArrayList<>();
             for (int i = 0; i < present.size(); i++) {
                 for (int j = i + 1; j < present.size(); j++) {
-                    pairs.add(NamePair.of(present.get(i), present.get(j)));
+                    pairs.add(RobotPair.of(present.get(i), present.get(j)));
                 }
             }
             beforeDecisions(listed, pairs, simulator);
@@ -323,9 +324,9 @@ public abstract class SimulatorModel implements PropagationModel {
             LinkStates states = links;
             states.retainOnly(new HashSet<>(present));
             long now = System.nanoTime();
-            for (NamePair pair : pairs) {
-                RobotState a = listed.get(pair.first());
-                RobotState b = listed.get(pair.second());
+            for (RobotPair pair : pairs) {
+                ReportedRobot a = listed.get(pair.first());
+                ReportedRobot b = listed.get(pair.second());
                 double strength = strength(a, b);
                 if (states.decide(pair, strength, now)) {
                     if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {

@@ -37,7 +37,7 @@ final class MySimulatorModel extends SimulatorModel {
     }
 
     @Override
-    protected double strength(ReportedRobot a, ReportedRobot b) {
+    protected double strength(ReportedRobot a, ReportedRobot b, double obstacles) {
         return 0;
     }
 

@@ -1,7 +1,8 @@
 package org.usarsim.wss.model.obstacle;
 
+import java.util.Collection;
+import java.util.HashMap;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Predicate;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.simulator.ReportedRobot;
@@ -9,7 +10,8 @@ import org.usarsim.wss.model.simulator.ReportedRobot;
 /**
  * The latest obstacle count the simulator gave per pair, and where the two robots were when it was
  * asked: a count is asked again once either robot has moved more than the cache distance from
- * there, and at every poll while it is unknown.
+ * there, and at every poll while it is unknown. Used by the poller only: what it answers is
+ * published with the poll's positions.
  */
 final class ObstacleCounts {
 
@@ -17,16 +19,22 @@ final class ObstacleCounts {
     }
 
     private final double cacheDistance;
-    private final Map<RobotPair, Entry> entries = new ConcurrentHashMap<>();
+    private final Map<RobotPair, Entry> entries = new HashMap<>();
 
     ObstacleCounts(double cacheDistance) {
         this.cacheDistance = cacheDistance;
     }
 
-    /** The pair's latest count; NaN when it was never asked or the simulator did not know it. */
-    double count(RobotPair pair) {
-        Entry entry = entries.get(pair);
-        return entry == null ? Double.NaN : entry.count();
+    /** The latest count of each of these pairs that has one; NaN where the simulator did not know it. */
+    Map<RobotPair, Double> counts(Collection<RobotPair> pairs) {
+        Map<RobotPair, Double> known = new HashMap<>();
+        for (RobotPair pair : pairs) {
+            Entry entry = entries.get(pair);
+            if (entry != null) {
+                known.put(pair, entry.count());
+            }
+        }
+        return known;
     }
 
     /** Whether the pair's count must be asked (again) now that its robots are at {@code positions}. */

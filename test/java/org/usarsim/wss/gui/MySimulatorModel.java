@@ -3,7 +3,7 @@ package org.usarsim.wss.gui;
 import java.util.List;
 import java.util.Map;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /** A plugin's simulator model: a {@link SimulatorModel} that is neither of the built-in ones, under a name of its own. */
@@ -37,7 +37,7 @@ final class MySimulatorModel extends SimulatorModel {
     }
 
     @Override
-    protected double strength(RobotState a, RobotState b) {
+    protected double strength(ReportedRobot a, ReportedRobot b, double obstacles) {
         return 0;
     }
 
@@ -47,7 +47,7 @@ final class MySimulatorModel extends SimulatorModel {
     }
 
     @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
         return false;
     }
 }

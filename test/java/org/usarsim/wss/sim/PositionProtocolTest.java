@@ -15,8 +15,8 @@ class PositionProtocolTest {
 
     /** The example of the spec: Robot1 and Robot2, the second with an empty battery. */
     private static final Snapshot SPEC = new World(List.of(
-            new Robot("Robot1", new Point(1.25, -3, 0.45), null, OptionalDouble.empty()),
-            new Robot("Robot2", new Point(10, 2.5, 0.45), null, OptionalDouble.of(0))),
+            new WorldRobot("Robot1", new Point(1.25, -3, 0.45), null, OptionalDouble.empty()),
+            new WorldRobot("Robot2", new Point(10, 2.5, 0.45), null, OptionalDouble.of(0))),
             List.of(new Wall(5, -10, 5, 10), new Wall(7, -10, 7, 10))).at(0);
 
     private static String answer(String line) {
@@ -39,7 +39,7 @@ class PositionProtocolTest {
         Locale before = Locale.getDefault();
         Locale.setDefault(Locale.GERMANY);
         try {
-            Snapshot odd = new World(List.of(new Robot("R", new Point(1234567.123456, -0.00004, -1e-9), null, OptionalDouble.empty())),
+            Snapshot odd = new World(List.of(new WorldRobot("R", new Point(1234567.123456, -0.00004, -1e-9), null, OptionalDouble.empty())),
                     List.of()).at(0);
             assertEquals("POSITIONS {Robots 1} {Name R Location 1234567.1235,0.0000,0.0000 BatteryEmpty False}",
                     PositionProtocol.positions(odd));

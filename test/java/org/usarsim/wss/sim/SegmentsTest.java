@@ -88,8 +88,8 @@ class SegmentsTest {
         assertEquals(0, new World(List.of(still("A", 0, 0), still("B", 9, 9)), List.of()).at(0).obstacles("A", "B"));
     }
 
-    private static Robot still(String name, double x, double y) {
-        return new Robot(name, new Point(x, y, 0), null, OptionalDouble.empty());
+    private static WorldRobot still(String name, double x, double y) {
+        return new WorldRobot(name, new Point(x, y, 0), null, OptionalDouble.empty());
     }
 
     @Test

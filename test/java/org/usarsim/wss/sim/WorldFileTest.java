@@ -171,6 +171,6 @@ class WorldFileTest {
     }
 
     private static List<String> names(Snapshot snapshot) {
-        return snapshot.robots().stream().map(RobotState::name).toList();
+        return snapshot.robots().stream().map(RobotAt::name).toList();
     }
 }

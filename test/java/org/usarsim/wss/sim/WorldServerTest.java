@@ -42,9 +42,9 @@ class WorldServerTest {
             + " {Name Mover Location 10.0000,0.0000,0.0000 BatteryEmpty False}\r\n";
 
     private final World world = new World(List.of(
-            new Robot("Robot1", new Point(1.25, -3, 0.45), null, OptionalDouble.empty()),
-            new Robot("Robot2", new Point(10, 2.5, 0.45), null, OptionalDouble.of(5)),
-            new Robot("Mover", new Point(0, 0, 0), new Route(new Point(0, 0, 0), List.of(new Point(10, 0, 0)), 1, false),
+            new WorldRobot("Robot1", new Point(1.25, -3, 0.45), null, OptionalDouble.empty()),
+            new WorldRobot("Robot2", new Point(10, 2.5, 0.45), null, OptionalDouble.of(5)),
+            new WorldRobot("Mover", new Point(0, 0, 0), new Route(new Point(0, 0, 0), List.of(new Point(10, 0, 0)), 1, false),
                     OptionalDouble.empty())),
             List.of(new Wall(5, -10, 5, 10), new Wall(7, -10, 7, 10), new Wall(-1, 1, 1, 1)));
 

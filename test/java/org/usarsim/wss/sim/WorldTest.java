@@ -83,18 +83,18 @@ class WorldTest {
 
     @Test
     void batteryIsEmptyFromItsLifeOn() {
-        Robot robot = new Robot("R", new Point(0, 0, 0), null, OptionalDouble.of(30));
+        WorldRobot robot = new WorldRobot("R", new Point(0, 0, 0), null, OptionalDouble.of(30));
         assertFalse(robot.at(0).batteryEmpty(), "at the start");
         assertFalse(robot.at(29.999).batteryEmpty(), "just before");
         assertTrue(robot.at(30).batteryEmpty(), "once 30 s have passed");
         assertTrue(robot.at(3000).batteryEmpty(), "and for ever after");
-        assertTrue(new Robot("R", new Point(0, 0, 0), null, OptionalDouble.of(0)).at(0).batteryEmpty(), "a life of 0: empty from the start");
-        assertFalse(new Robot("R", new Point(0, 0, 0), null, OptionalDouble.empty()).at(1e9).batteryEmpty(), "no battery life: never empty");
+        assertTrue(new WorldRobot("R", new Point(0, 0, 0), null, OptionalDouble.of(0)).at(0).batteryEmpty(), "a life of 0: empty from the start");
+        assertFalse(new WorldRobot("R", new Point(0, 0, 0), null, OptionalDouble.empty()).at(1e9).batteryEmpty(), "no battery life: never empty");
     }
 
     @Test
     void aRobotWithoutARouteStandsStill() {
-        Robot robot = new Robot("R", new Point(1, 2, 3), null, OptionalDouble.empty());
+        WorldRobot robot = new WorldRobot("R", new Point(1, 2, 3), null, OptionalDouble.empty());
         assertEquals(new Point(1, 2, 3), robot.at(0).position());
         assertEquals(new Point(1, 2, 3), robot.at(99).position());
     }
@@ -102,10 +102,10 @@ class WorldTest {
     @Test
     void snapshotsKeepFileOrderAndAreImmutable() {
         World world = new World(List.of(
-                new Robot("Zed", new Point(0, 0, 0), null, OptionalDouble.empty()),
-                new Robot("Alf", new Point(0, 0, 0), lShape(false), OptionalDouble.of(5))), List.of(new Wall(0, 1, 1, 1)));
+                new WorldRobot("Zed", new Point(0, 0, 0), null, OptionalDouble.empty()),
+                new WorldRobot("Alf", new Point(0, 0, 0), lShape(false), OptionalDouble.of(5))), List.of(new Wall(0, 1, 1, 1)));
         Snapshot at6 = world.at(6);
-        assertEquals(List.of("Zed", "Alf"), at6.robots().stream().map(RobotState::name).toList());
+        assertEquals(List.of("Zed", "Alf"), at6.robots().stream().map(RobotAt::name).toList());
         assertAt(10, 2, 0, at6.robot("Alf").orElseThrow().position());
         assertTrue(at6.robot("Alf").orElseThrow().batteryEmpty());
         assertThrows(UnsupportedOperationException.class, () -> at6.robots().clear());

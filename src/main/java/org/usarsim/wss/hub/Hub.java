@@ -20,6 +20,7 @@ import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -51,10 +52,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Every WARNING a client can cause goes through it (docs/reliability.md). */
     final WarningLimiter warnings = WarningLimiter.standard();
     private final Object lock = new Object();
-    private final Map<String, Robot> robots = new HashMap<>();
+    private final Map<String, RegisteredRobot> robots = new HashMap<>();
     private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
     /** Pairs the model broke and has not resumed. */
-    private final Set<Pair> broken = new HashSet<>();
+    private final Set<RobotPair> broken = new HashSet<>();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -167,7 +168,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * @return false when the name stays taken (nothing changes then)
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
-        Robot robot = new Robot(name, address, acceptPorts, session);
+        RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
         List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
@@ -242,7 +243,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** Under the lock. */
     private boolean isSessionOf(String name, ControlSession session) {
-        Robot robot = robots.get(name);
+        RegisteredRobot robot = robots.get(name);
         return robot != null && robot.session() == session;
     }
 
@@ -275,7 +276,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
         synchronized (lock) {
-            Robot target = robots.get(to);
+            RegisteredRobot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
                 return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
             }
@@ -337,15 +338,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean allowed = modelAllows(key.from(), key.to());
         Link link;
         synchronized (lock) {
-            Robot source = robots.get(key.from());
-            Robot target = robots.get(key.to());
+            RegisteredRobot source = robots.get(key.from());
+            RegisteredRobot target = robots.get(key.to());
             String refusal = null;
             if (closed || !port.listensWith(listener) || source == null || target == null) {
                 refusal = "the port no longer listens";
             } else if (config.matchSourceAddress() && !peer.equals(source.address())) {
                 refusal = "the connection came from " + peer.getHostAddress() + " but " + key.from()
                         + " registered from " + source.address().getHostAddress();
-            } else if (!allowed || broken.contains(Pair.of(key.from(), key.to()))) {
+            } else if (!allowed || broken.contains(RobotPair.of(key.from(), key.to()))) {
                 refusal = model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
             }
             if (refusal != null) {
@@ -401,7 +402,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     @Override
     public boolean breakConnectionsForPair(String robotA, String robotB) {
-        Pair pair = Pair.of(robotA, robotB);
+        RobotPair pair = RobotPair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
         List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
@@ -424,7 +425,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
-        Pair pair = Pair.of(robotA, robotB);
+        RobotPair pair = RobotPair.of(robotA, robotB);
         List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
@@ -441,7 +442,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     @Override
     public void kickOutRobot(String name) {
-        Robot robot;
+        RegisteredRobot robot;
         List<Link> links = new ArrayList<>();
         List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
@@ -481,7 +482,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
         List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
         synchronized (lock) {
-            for (Robot robot : robots.values()) {
+            for (RegisteredRobot robot : robots.values()) {
                 robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
             }
             for (WssPort port : ports.values()) {
@@ -554,9 +555,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * target port, and the model neither broke nor forbids the pair. Under the lock.
      */
     private boolean shouldListen(PortKey key, boolean modelAllows) {
-        Robot target = robots.get(key.to());
+        RegisteredRobot target = robots.get(key.to());
         return modelAllows && robots.containsKey(key.from()) && target != null
-                && target.ports().contains(key.targetPort()) && !broken.contains(Pair.of(key.from(), key.to()));
+                && target.ports().contains(key.targetPort()) && !broken.contains(RobotPair.of(key.from(), key.to()));
     }
 
     /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */

@@ -1,5 +1,7 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.model.RobotPair;
+
 /** What a WSS port is for: connections from one robot to one port of another. */
 record PortKey(String from, String to, int targetPort) {
 
@@ -7,8 +9,8 @@ record PortKey(String from, String to, int targetPort) {
         return from.equals(robot) || to.equals(robot);
     }
 
-    boolean isBetween(Pair pair) {
-        return pair.equals(Pair.of(from, to));
+    boolean isBetween(RobotPair pair) {
+        return pair.equals(RobotPair.of(from, to));
     }
 
     @Override

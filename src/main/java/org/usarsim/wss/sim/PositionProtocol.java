@@ -30,7 +30,7 @@ final class PositionProtocol {
 
     static String positions(Snapshot world) {
         StringBuilder reply = new StringBuilder("POSITIONS {Robots ").append(world.robots().size()).append('}');
-        for (RobotState robot : world.robots()) {
+        for (RobotAt robot : world.robots()) {
             Point p = robot.position();
             reply.append(" {Name ").append(robot.name())
                     .append(" Location ").append(metres(p.x())).append(',').append(metres(p.y())).append(',').append(metres(p.z()))

@@ -4,14 +4,14 @@ import java.util.List;
 import java.util.Optional;
 
 /** The world at one moment: every robot's state, in file order, and the walls. Immutable. */
-record Snapshot(List<RobotState> robots, List<Wall> walls) {
+record Snapshot(List<RobotAt> robots, List<Wall> walls) {
 
     Snapshot {
         robots = List.copyOf(robots);
         walls = List.copyOf(walls);
     }
 
-    Optional<RobotState> robot(String name) {
+    Optional<RobotAt> robot(String name) {
         return robots.stream().filter(robot -> robot.name().equals(name)).findFirst();
     }
 
@@ -20,8 +20,8 @@ record Snapshot(List<RobotState> robots, List<Wall> walls) {
      * when either robot is not in the world.
      */
     int obstacles(String from, String to) {
-        Optional<RobotState> a = robot(from);
-        Optional<RobotState> b = robot(to);
+        Optional<RobotAt> a = robot(from);
+        Optional<RobotAt> b = robot(to);
         if (a.isEmpty() || b.isEmpty()) {
             return -1;
         }

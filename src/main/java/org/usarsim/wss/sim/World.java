@@ -5,10 +5,10 @@ import java.util.List;
 /** The robots (in file order) and the walls of a world file; immutable. */
 final class World {
 
-    private final List<Robot> robots;
+    private final List<WorldRobot> robots;
     private final List<Wall> walls;
 
-    World(List<Robot> robots, List<Wall> walls) {
+    World(List<WorldRobot> robots, List<Wall> walls) {
         this.robots = List.copyOf(robots);
         this.walls = List.copyOf(walls);
     }

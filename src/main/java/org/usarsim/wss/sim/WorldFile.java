@@ -30,7 +30,7 @@ final class WorldFile {
     private static final Pattern NUMBER = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
 
     private final String source;
-    private final Map<String, Robot> robots = new LinkedHashMap<>();
+    private final Map<String, WorldRobot> robots = new LinkedHashMap<>();
     private final Map<String, Integer> pathLines = new LinkedHashMap<>();
     private final List<Wall> walls = new ArrayList<>();
     private int lineNumber;
@@ -98,7 +98,7 @@ final class WorldFile {
             }
             battery = OptionalDouble.of(seconds);
         }
-        robots.put(name, new Robot(name, new Point(start[0], start[1], start[2]), null, battery));
+        robots.put(name, new WorldRobot(name, new Point(start[0], start[1], start[2]), null, battery));
     }
 
     /** {@code path NAME speed V loop|once X,Y[,Z] ...} */
@@ -106,7 +106,7 @@ final class WorldFile {
         if (words.length < 6) {
             throw error("a path is 'path NAME speed METRES_PER_SECOND loop|once X,Y[,Z] ...' with at least one waypoint");
         }
-        Robot robot = robots.get(words[1]);
+        WorldRobot robot = robots.get(words[1]);
         if (robot == null) {
             throw error("a path for " + words[1] + ", which is no robot declared above");
         }
@@ -130,7 +130,7 @@ final class WorldFile {
             double[] xyz = coordinates(words[i], 2, 3, "a waypoint X,Y or X,Y,Z");
             waypoints.add(new Point(xyz[0], xyz[1], xyz.length == 3 ? xyz[2] : start.z()));
         }
-        robots.put(robot.name(), new Robot(robot.name(), start, new Route(start, waypoints, speed, loop), robot.batterySeconds()));
+        robots.put(robot.name(), new WorldRobot(robot.name(), start, new Route(start, waypoints, speed, loop), robot.batterySeconds()));
     }
 
     /** {@code wall X1,Y1 X2,Y2} */

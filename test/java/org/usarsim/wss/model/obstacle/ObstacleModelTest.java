@@ -21,7 +21,7 @@ import org.usarsim.wss.model.simulator.DataConnection;
 import org.usarsim.wss.model.simulator.FakeSimulator;
 import org.usarsim.wss.model.simulator.ModelRig;
 import org.usarsim.wss.model.simulator.PathLoss;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.protocol.Replies;
 
 /** The Obstacle model for real: a fake simulator answering GETPOS and GETOBS, robots on a hub. */
@@ -89,8 +89,8 @@ class ObstacleModelTest {
         rig.sim.obstacles("A", "B", 1);
         rig.polls(2);
         rig.sim.delayGetobs(60);
-        RobotState still = new RobotState("A", 0, 0, 0, false);
-        rig.sim.script(k -> List.of(still, new RobotState("B", 10 + 2 * k, 0, 0, false)));
+        ReportedRobot still = new ReportedRobot("A", 0, 0, 0, false);
+        rig.sim.script(k -> List.of(still, new ReportedRobot("B", 10 + 2 * k, 0, 0, false)));
         long until = rig.sim.getposCount() + 8;
         int asked = 0;
         while (rig.sim.getposCount() < until) {

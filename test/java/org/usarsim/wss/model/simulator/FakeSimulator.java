@@ -19,6 +19,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongFunction;
 import java.util.function.Supplier;
+import org.usarsim.wss.model.RobotPair;
 
 /**
  * A scripted USARSim position socket on 127.0.0.1: answers GETPOS with the robots placed here (or
@@ -29,8 +30,8 @@ public final class FakeSimulator implements AutoCloseable {
 
     public enum Mode { ANSWER, SILENT, GARBAGE, NO_GETOBS }
 
-    private final Map<String, RobotState> robots = new LinkedHashMap<>();
-    private final Map<NamePair, Double> obstacles = new ConcurrentHashMap<>();
+    private final Map<String, ReportedRobot> robots = new LinkedHashMap<>();
+    private final Map<RobotPair, Double> obstacles = new ConcurrentHashMap<>();
     private final List<Socket> clients = new CopyOnWriteArrayList<>();
     private final List<String> getobs = new CopyOnWriteArrayList<>();
     private final AtomicLong getpos = new AtomicLong();
@@ -40,7 +41,7 @@ public final class FakeSimulator implements AutoCloseable {
     private volatile Mode mode = Mode.ANSWER;
     private volatile long getobsDelayMs;
     private volatile Supplier<String> garbage = () -> "this is not a reply";
-    private LongFunction<List<RobotState>> script;
+    private LongFunction<List<ReportedRobot>> script;
     private long scriptBase;
 
     public FakeSimulator() throws IOException {
@@ -54,8 +55,8 @@ public final class FakeSimulator implements AutoCloseable {
     }
 
     public synchronized void place(String name, double x, double y, double z) {
-        RobotState old = robots.get(name);
-        robots.put(name, new RobotState(name, x, y, z, old != null && old.batteryEmpty()));
+        ReportedRobot old = robots.get(name);
+        robots.put(name, new ReportedRobot(name, x, y, z, old != null && old.batteryEmpty()));
     }
 
     public synchronized void remove(String name) {
@@ -63,18 +64,18 @@ public final class FakeSimulator implements AutoCloseable {
     }
 
     public synchronized void emptyBattery(String name) {
-        RobotState old = robots.get(name);
-        robots.put(name, new RobotState(name, old.x(), old.y(), old.z(), true));
+        ReportedRobot old = robots.get(name);
+        robots.put(name, new ReportedRobot(name, old.x(), old.y(), old.z(), true));
     }
 
     /** From now on the k-th GETPOS from now (counting from 1) is answered with {@code script.apply(k)}. */
-    public synchronized void script(LongFunction<List<RobotState>> script) {
+    public synchronized void script(LongFunction<List<ReportedRobot>> script) {
         this.script = script;
         scriptBase = getpos.get();
     }
 
     public void obstacles(String a, String b, double count) {
-        obstacles.put(NamePair.of(a, b), count);
+        obstacles.put(RobotPair.of(a, b), count);
     }
 
     /** Answers each GETOBS this much later: a slow simulator. */
@@ -195,7 +196,7 @@ public final class FakeSimulator implements AutoCloseable {
             String[] words = line.replace("{", " ").replace("}", " ").trim().split("\\s+");
             String from = words[2];
             String to = words[4];
-            double count = obstacles.getOrDefault(NamePair.of(from, to), -1.0);
+            double count = obstacles.getOrDefault(RobotPair.of(from, to), -1.0);
             return String.format(Locale.ROOT, "NUMOBS {From %s} {To %s} {ObstCount %.4f}", from, to, count);
         }
         return null;
@@ -203,9 +204,9 @@ public final class FakeSimulator implements AutoCloseable {
 
     /** Under the lock. */
     private String positions(long n) {
-        List<RobotState> listed = script != null ? script.apply(n - scriptBase) : new ArrayList<>(robots.values());
+        List<ReportedRobot> listed = script != null ? script.apply(n - scriptBase) : new ArrayList<>(robots.values());
         StringBuilder reply = new StringBuilder("POSITIONS {Robots " + listed.size() + "}");
-        for (RobotState robot : listed) {
+        for (ReportedRobot robot : listed) {
             reply.append(String.format(Locale.ROOT, " {Name %s Location %.4f,%.4f,%.4f BatteryEmpty %s}", robot.name(),
                     robot.x(), robot.y(), robot.z(), robot.batteryEmpty() ? "True" : "False"));
         }

@@ -7,11 +7,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.Set;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.model.RobotPair;
 
 /** The link-state rule with times given, not measured. */
 class LinkStatesTest {
 
-    private static final NamePair PAIR = NamePair.of("A", "B");
+    private static final RobotPair PAIR = RobotPair.of("A", "B");
     private static final long SECOND = 1_000_000_000L;
 
     @Test
@@ -23,7 +24,7 @@ class LinkStatesTest {
         assertTrue(states.decide(PAIR, -92, 2));
         assertFalse(states.decide(PAIR, Double.NaN, 3), "unknown: down");
         assertTrue(states.decide(PAIR, Double.POSITIVE_INFINITY, 4), "same place: up");
-        assertEquals(Boolean.TRUE, states.live(NamePair.of("B", "A")));
+        assertEquals(Boolean.TRUE, states.live(RobotPair.of("B", "A")));
     }
 
     @Test
@@ -51,9 +52,9 @@ class LinkStatesTest {
     void pairsOfRobotsThatLeftAreForgotten() {
         LinkStates states = new LinkStates(-93, 0, 0);
         states.decide(PAIR, -80, 0);
-        states.decide(NamePair.of("A", "C"), -80, 0);
+        states.decide(RobotPair.of("A", "C"), -80, 0);
         states.retainOnly(Set.of("A", "C"));
         assertNull(states.live(PAIR));
-        assertEquals(Boolean.TRUE, states.live(NamePair.of("C", "A")));
+        assertEquals(Boolean.TRUE, states.live(RobotPair.of("C", "A")));
     }
 }

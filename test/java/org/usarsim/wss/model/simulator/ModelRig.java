@@ -18,7 +18,9 @@ import org.usarsim.wss.model.WssEventListener;
 /**
  * A simulator model under test, for real: a {@link FakeSimulator} (or another simulator), the
  * model polling it every 100 ms (unless the settings say otherwise), a hub on 127.0.0.1, the hub's
- * events and the model's log lines as they happen.
+ * events and the model's log lines as they happen. With a {@link ManualClock} (the model made with
+ * it), the model polls only when the test says: {@link #polls} wakes it, and events carry the
+ * clock's time.
  */
 public final class ModelRig implements AutoCloseable {
 
@@ -39,6 +41,8 @@ public final class ModelRig implements AutoCloseable {
     public final FakeSimulator sim;
     public final SimulatorModel model;
     public final TestHub server;
+    /** The model's clock when the test moves it; null on the machine's clock. */
+    public final ManualClock clock;
     public final List<Event> events = new CopyOnWriteArrayList<>();
     public final List<LogRecord> log;
     private final List<AutoCloseable> toClose = new ArrayList<>();
@@ -47,16 +51,23 @@ public final class ModelRig implements AutoCloseable {
 
     /** The model polling a new {@link FakeSimulator}. */
     public ModelRig(SimulatorModel model, Map<String, String> settings) throws Exception {
-        this(model, settings, new FakeSimulator(), 0);
+        this(model, settings, new FakeSimulator(), 0, null);
+    }
+
+    /** The model, made with {@code clock}, polling a new {@link FakeSimulator} when {@link #polls} says. */
+    public ModelRig(SimulatorModel model, Map<String, String> settings, ManualClock clock) throws Exception {
+        this(model, settings, new FakeSimulator(), 0, clock);
     }
 
     /** The model polling a simulator that already runs on 127.0.0.1 at {@code port} (no fake: {@link #sim} is null). */
     public static ModelRig polling(int port, SimulatorModel model, Map<String, String> settings) throws Exception {
-        return new ModelRig(model, settings, null, port);
+        return new ModelRig(model, settings, null, port, null);
     }
 
-    private ModelRig(SimulatorModel model, Map<String, String> settings, FakeSimulator fake, int port) throws Exception {
+    private ModelRig(SimulatorModel model, Map<String, String> settings, FakeSimulator fake, int port, ManualClock clock)
+            throws Exception {
         this.model = model;
+        this.clock = clock;
         sim = fake;
         Map<String, String> all = new LinkedHashMap<>();
         all.put("usarsim.host", "127.0.0.1");
@@ -92,7 +103,7 @@ public final class ModelRig implements AutoCloseable {
     }
 
     private void add(String type, Object... args) {
-        events.add(new Event(type, List.of(args), System.nanoTime()));
+        events.add(new Event(type, List.of(args), clock != null ? clock.nanoTime() : System.nanoTime()));
     }
 
     /** The events of these types, in order. */
@@ -125,8 +136,14 @@ public final class ModelRig implements AutoCloseable {
         return accepting.get(name);
     }
 
-    /** Waits until the model has completed {@code count} more polls. */
+    /** Waits until the model has completed {@code count} more polls; on a {@link ManualClock}, makes them happen. */
     public void polls(int count) {
+        if (clock != null) {
+            for (int i = 0; i < count; i++) {
+                clock.wakePoller();
+            }
+            return;
+        }
         long target = sim.getposCount() + count + 1;
         Wait.until(count + " polls of the simulator", () -> sim.getposCount() >= target);
     }

@@ -53,8 +53,8 @@ class SimulatorRepliesFuzzTest {
                 // As SimulatorConnection does: the type word picks the reader; any other type is refused.
                 String type = SimulatorReplies.type(line);
                 if (type.equals(SimulatorReplies.POSITIONS)) {
-                    Map<String, RobotState> robots = SimulatorReplies.positions(line);
-                    for (RobotState robot : robots.values()) {
+                    Map<String, ReportedRobot> robots = SimulatorReplies.positions(line);
+                    for (ReportedRobot robot : robots.values()) {
                         assertTrue(Double.isFinite(robot.x()) && Double.isFinite(robot.y()) && Double.isFinite(robot.z()),
                                 () -> "a position that is not finite from '" + line + "'" + replay);
                     }
@@ -78,13 +78,15 @@ class SimulatorRepliesFuzzTest {
     @Test
     void garbageThroughARunningModelIsLoggedOnceAndTheLastGoodPositionsAreKept() throws Exception {
         Random random = new Random(seed);
-        try (ModelRig rig = new ModelRig(new DistanceOnlyPropagationModel(), Map.of("distance.n", "3", "usarsim.interval", "20"))) {
+        ManualClock clock = new ManualClock();
+        try (ModelRig rig = new ModelRig(new DistanceOnlyPropagationModel(clock), Map.of("distance.n", "3"), clock)) {
             TestRobot a = rig.robot("A", 0, 0, 0);
             rig.robot("B", 10, 0, 0);
             rig.polls(1);
             String before = a.ask("GETSS {Robot B}");
             long connections = rig.sim.connectionCount();
             rig.sim.garbage(() -> garbage(random));
+            rig.polls(6); // each attempt on a new connection, answered with garbage
             Wait.until("6 garbage replies", () -> rig.sim.connectionCount() >= connections + 5);
             assertEquals(before, a.ask("GETSS {Robot B}"), "the last good positions" + replay);
             assertEquals(List.of("A", "B"), rig.server.hub.getListOfRegisteredRobots(), replay);
@@ -92,8 +94,10 @@ class SimulatorRepliesFuzzTest {
             assertEquals(0, rig.logLines(Level.WARNING, "a poll failed"), rig.log + replay);
 
             rig.sim.mode(FakeSimulator.Mode.ANSWER);
-            Wait.until("the model says the simulator is back", () -> rig.logLines(Level.INFO, "answers again") == 1);
+            rig.polls(1);
+            assertEquals(1, rig.logLines(Level.INFO, "answers again"), "the model says the simulator is back" + replay);
             rig.sim.place("B", 100, 0, 0);
+            rig.polls(1);
             Wait.until("the model decides from new positions", () -> rig.events("OUT_OF_RANGE").size() == 1);
         }
     }

@@ -9,24 +9,25 @@ import java.util.Map;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.model.RobotPair;
 
 class SimulatorRepliesTest {
 
     @Test
     void readsTheOriginalsExample() throws Exception {
-        Map<String, RobotState> robots = SimulatorReplies.positions("POSITIONS {Robots 2} "
+        Map<String, ReportedRobot> robots = SimulatorReplies.positions("POSITIONS {Robots 2} "
                 + "{Name Robot1 Location 1.2500,-3.0000,0.4500 BatteryEmpty False} "
                 + "{Name Robot2 Location 10.0000,2.5000,0.4500 BatteryEmpty True}");
         assertEquals(List.of("Robot1", "Robot2"), List.copyOf(robots.keySet()));
-        assertEquals(new RobotState("Robot1", 1.25, -3, 0.45, false), robots.get("Robot1"));
-        assertEquals(new RobotState("Robot2", 10, 2.5, 0.45, true), robots.get("Robot2"));
+        assertEquals(new ReportedRobot("Robot1", 1.25, -3, 0.45, false), robots.get("Robot1"));
+        assertEquals(new ReportedRobot("Robot2", 10, 2.5, 0.45, true), robots.get("Robot2"));
     }
 
     @Test
     void toleratesWhitespaceUnknownFieldsAndAMissingBatteryFlag() throws Exception {
-        Map<String, RobotState> robots = SimulatorReplies.positions(
+        Map<String, ReportedRobot> robots = SimulatorReplies.positions(
                 "  POSITIONS{Robots 1}   {  Name R  Speed 3  Location 1,2,3 }  ");
-        assertEquals(new RobotState("R", 1, 2, 3, false), robots.get("R"));
+        assertEquals(new ReportedRobot("R", 1, 2, 3, false), robots.get("R"));
         assertEquals(Map.of(), SimulatorReplies.positions("POSITIONS {Robots 0}"));
     }
 
@@ -60,7 +61,7 @@ class SimulatorRepliesTest {
 
     @Test
     void readsObstacleCountsForTheUnorderedPair() throws Exception {
-        assertEquals(new SimulatorReplies.ObstacleCount(NamePair.of("A", "B"), 3),
+        assertEquals(new SimulatorReplies.ObstacleCount(RobotPair.of("A", "B"), 3),
                 SimulatorReplies.obstacles("NUMOBS {From B} {To A} {ObstCount 3.0000}"));
         assertTrue(Double.isNaN(SimulatorReplies.obstacles("NUMOBS {From A} {To B} {ObstCount -1.0000}").count()));
         assertThrows(SimulatorReplyException.class, () -> SimulatorReplies.obstacles("NUMOBS {From A} {ObstCount 1}"));

@@ -1,7 +1,8 @@
 package org.usarsim.wss.model.distance;
 
 import java.util.Map;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.PollClock;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
@@ -12,8 +13,17 @@ import org.usarsim.wss.model.simulator.SimulatorModel;
  */
 public final class DistanceOnlyPropagationModel extends SimulatorModel {
 
+    public DistanceOnlyPropagationModel() {
+    }
+
+    /** A model whose poller takes its time from {@code clock}. */
+    public DistanceOnlyPropagationModel(PollClock clock) {
+        super(clock);
+    }
+
+    /** The path loss alone: obstacles are not counted. */
     @Override
-    protected double strength(RobotState a, RobotState b) {
+    protected double strength(ReportedRobot a, ReportedRobot b, double obstacles) {
         return pathLoss().strength(a.distanceTo(b));
     }
 
@@ -23,7 +33,7 @@ public final class DistanceOnlyPropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
         return true;
     }
 }

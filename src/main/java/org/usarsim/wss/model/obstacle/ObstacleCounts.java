@@ -1,36 +1,44 @@
 package org.usarsim.wss.model.obstacle;
 
+import java.util.Collection;
+import java.util.HashMap;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Predicate;
-import org.usarsim.wss.model.simulator.NamePair;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 
 /**
  * The latest obstacle count the simulator gave per pair, and where the two robots were when it was
  * asked: a count is asked again once either robot has moved more than the cache distance from
- * there, and at every poll while it is unknown.
+ * there, and at every poll while it is unknown. Used by the poller only: what it answers is
+ * published with the poll's positions.
  */
 final class ObstacleCounts {
 
-    private record Entry(double count, RobotState first, RobotState second) {
+    private record Entry(double count, ReportedRobot first, ReportedRobot second) {
     }
 
     private final double cacheDistance;
-    private final Map<NamePair, Entry> entries = new ConcurrentHashMap<>();
+    private final Map<RobotPair, Entry> entries = new HashMap<>();
 
     ObstacleCounts(double cacheDistance) {
         this.cacheDistance = cacheDistance;
     }
 
-    /** The pair's latest count; NaN when it was never asked or the simulator did not know it. */
-    double count(NamePair pair) {
-        Entry entry = entries.get(pair);
-        return entry == null ? Double.NaN : entry.count();
+    /** The latest count of each of these pairs that has one; NaN where the simulator did not know it. */
+    Map<RobotPair, Double> counts(Collection<RobotPair> pairs) {
+        Map<RobotPair, Double> known = new HashMap<>();
+        for (RobotPair pair : pairs) {
+            Entry entry = entries.get(pair);
+            if (entry != null) {
+                known.put(pair, entry.count());
+            }
+        }
+        return known;
     }
 
     /** Whether the pair's count must be asked (again) now that its robots are at {@code positions}. */
-    boolean stale(NamePair pair, Map<String, RobotState> positions) {
+    boolean stale(RobotPair pair, Map<String, ReportedRobot> positions) {
         Entry entry = entries.get(pair);
         return entry == null || Double.isNaN(entry.count())
                 || positions.get(pair.first()).distanceTo(entry.first()) > cacheDistance
@@ -38,12 +46,12 @@ final class ObstacleCounts {
     }
 
     /** Remembers a count (NaN: unknown), asked while the pair's robots were at {@code positions}. */
-    void put(NamePair pair, double count, Map<String, RobotState> positions) {
+    void put(RobotPair pair, double count, Map<String, ReportedRobot> positions) {
         entries.put(pair, new Entry(count, positions.get(pair.first()), positions.get(pair.second())));
     }
 
     /** Forgets the pairs for which {@code keep} says no. */
-    void retain(Predicate<NamePair> keep) {
+    void retain(Predicate<RobotPair> keep) {
         entries.keySet().removeIf(keep.negate());
     }
 }

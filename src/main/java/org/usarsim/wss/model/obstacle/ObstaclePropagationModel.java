@@ -8,10 +8,10 @@ import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
-import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.simulator.NamePair;
-import org.usarsim.wss.model.simulator.RobotState;
+import org.usarsim.wss.model.simulator.PollClock;
+import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorConnection;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
@@ -33,14 +33,20 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             Setting.number("obstacle.cacheDistance", "Cache distance", "1.0").from(0).unit("m")
                     .help("How far a robot moves before the obstacles between it and the others are counted again"));
 
-    /** The declared defaults: the values until {@link #configure}. */
-    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(OBSTACLES));
-
-    private double attenuation = DEFAULTS.getDouble("obstacle.attenuation", 0);
-    private double cacheDistance = DEFAULTS.getDouble("obstacle.cacheDistance", 0);
-    private volatile ObstacleCounts counts = new ObstacleCounts(cacheDistance);
+    /** Read at each start; volatile for the threads that ask for a strength. */
+    private volatile double attenuation;
+    /** The GETOBS cache: used by the poller only, made afresh at each start. */
+    private ObstacleCounts counts;
     /** Whether the last batch of GETOBS went unanswered (used by the poller only). */
     private boolean getobsUnanswered;
+
+    public ObstaclePropagationModel() {
+    }
+
+    /** A model whose poller takes its time from {@code clock}. */
+    public ObstaclePropagationModel(PollClock clock) {
+        super(clock);
+    }
 
     /** The simulator models' settings, then obstacle.attenuation and obstacle.cacheDistance. */
     @Override
@@ -51,29 +57,15 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    public void configure(ModelSettings settings) {
-        super.configure(settings);
-        attenuation = settings.getDouble("obstacle.attenuation", attenuation);
-        cacheDistance = settings.getDouble("obstacle.cacheDistance", cacheDistance);
-    }
-
-    @Override
-    public synchronized void start() throws ModelStartException {
-        if (!(attenuation >= 0 && cacheDistance >= 0)) {
-            throw new ModelStartException("obstacle.attenuation and obstacle.cacheDistance must be 0 or more");
-        }
-        super.start();
-    }
-
-    @Override
-    protected void started() {
-        counts = new ObstacleCounts(cacheDistance);
+    protected void started(ModelSettings settings) {
+        attenuation = settings.getDouble("obstacle.attenuation", 0);
+        counts = new ObstacleCounts(settings.getDouble("obstacle.cacheDistance", 0));
         getobsUnanswered = false;
     }
 
     @Override
-    protected double strength(RobotState a, RobotState b) {
-        return pathLoss().strength(a.distanceTo(b)) - counts.count(NamePair.of(a.name(), b.name())) * attenuation;
+    protected double strength(ReportedRobot a, ReportedRobot b, double obstacles) {
+        return pathLoss().strength(a.distanceTo(b)) - obstacles * attenuation;
     }
 
     @Override
@@ -82,7 +74,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed) {
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
         return !listed.isEmpty();
     }
 
@@ -92,17 +84,17 @@ public final class ObstaclePropagationModel extends SimulatorModel {
      * batch is reported once, and again once it answers.
      */
     @Override
-    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
-            throws IOException {
+    protected Map<RobotPair, Double> obstacleCounts(Map<String, ReportedRobot> listed, List<RobotPair> pairs,
+            SimulatorConnection simulator) throws IOException {
         ObstacleCounts known = counts;
-        Set<NamePair> current = new HashSet<>(pairs);
+        Set<RobotPair> current = new HashSet<>(pairs);
         known.retain(current::contains);
-        List<NamePair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
+        List<RobotPair> stale = pairs.stream().filter(pair -> known.stale(pair, listed)).toList();
         if (stale.isEmpty()) {
-            return;
+            return known.counts(pairs);
         }
-        Map<NamePair, Double> answers = simulator.obstacles(stale);
-        for (NamePair pair : stale) {
+        Map<RobotPair, Double> answers = simulator.obstacles(stale);
+        for (RobotPair pair : stale) {
             known.put(pair, answers.getOrDefault(pair, Double.NaN), listed);
         }
         if (answers.isEmpty() && !getobsUnanswered) {
@@ -112,5 +104,6 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             LOG.info("the simulator answers GETOBS again");
         }
         getobsUnanswered = answers.isEmpty();
+        return known.counts(pairs);
     }
 }

@@ -13,6 +13,7 @@ import java.util.Collection;
 import java.util.HashMap;
 import java.util.Map;
 import java.util.Set;
+import org.usarsim.wss.model.RobotPair;
 
 /**
  * One connection to a USARSim-compatible position socket: {@code GETPOS} and {@code GETOBS}, each
@@ -55,7 +56,7 @@ public final class SimulatorConnection implements Closeable {
     }
 
     /** Sends {@code GETPOS}; the robots the simulator lists, by name. */
-    public Map<String, RobotState> positions() throws IOException {
+    public Map<String, ReportedRobot> positions() throws IOException {
         send("GETPOS\r\n");
         long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
         while (true) {
@@ -76,17 +77,17 @@ public final class SimulatorConnection implements Closeable {
      * within the timeout: the count per answered pair, NaN where the simulator answered a negative
      * count. A pair without an answer is absent from the result (a simulator may not know GETOBS).
      */
-    public Map<NamePair, Double> obstacles(Collection<NamePair> pairs) throws IOException {
-        Map<NamePair, Double> counts = new HashMap<>();
+    public Map<RobotPair, Double> obstacles(Collection<RobotPair> pairs) throws IOException {
+        Map<RobotPair, Double> counts = new HashMap<>();
         if (pairs.isEmpty()) {
             return counts;
         }
         StringBuilder requests = new StringBuilder();
-        for (NamePair pair : pairs) {
+        for (RobotPair pair : pairs) {
             requests.append("GETOBS {From ").append(pair.first()).append("} {To ").append(pair.second()).append("}\r\n");
         }
         send(requests.toString());
-        Set<NamePair> asked = Set.copyOf(pairs);
+        Set<RobotPair> asked = Set.copyOf(pairs);
         long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
         try {
             while (counts.size() < asked.size()) {

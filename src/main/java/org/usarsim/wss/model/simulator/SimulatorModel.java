@@ -1,10 +1,10 @@
 package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
-import java.util.ArrayList;
-import java.util.HashSet;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -12,6 +12,7 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.WssEventListener;
 
@@ -49,27 +50,41 @@ public abstract class SimulatorModel implements PropagationModel {
             Setting.number("distance.holdTime", "Hold time", "0").from(0).unit("s")
                     .help("A link stays broken, or resumed, at least this many seconds before it changes again"));
 
+    /** The path loss of the declared defaults, until the first start. */
+    private static final PathLoss DEFAULT_PATH_LOSS;
+
+    static {
+        try {
+            DEFAULT_PATH_LOSS = SimulatorConfig.read(SETTINGS, Map.of()).pathLoss();
+        } catch (ModelStartException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
+
     private final Logger log = Logger.getLogger(getClass().getName());
+    private final PollClock clock;
 
-    /** The declared defaults: the values until {@link #configure}. */
-    private static final ModelSettings DEFAULTS = new ModelSettings(Setting.defaults(SETTINGS));
-
-    private String host = DEFAULTS.getString("usarsim.host", null);
-    private int port = DEFAULTS.getInt("usarsim.port", 0);
-    private int intervalMs = DEFAULTS.getInt("usarsim.interval", 0);
-    private int timeoutMs = DEFAULTS.getInt("usarsim.timeout", 0);
-    private PathLoss pathLoss = new PathLoss(DEFAULTS.getDouble("distance.pd0", 0), DEFAULTS.getDouble("distance.n", 0),
-            DEFAULTS.getDouble("distance.d0", 0), DEFAULTS.getDouble("distance.cutoff", 0));
-    private double margin = DEFAULTS.getDouble("distance.margin", 0);
-    private double holdSeconds = DEFAULTS.getDouble("distance.holdTime", 0);
-
+    /** The values given by {@link #configure}, over the declared defaults: checked and frozen at each start. */
+    private volatile Map<String, String> given = Map.of();
+    /** The configuration of the current run (or the last one); null before the first start. */
+    private volatile SimulatorConfig config;
     private volatile RobotLinkModel linkModel;
     private volatile WssEventListener listener = new WssEventListener() {
     };
-    private volatile Map<String, RobotState> positions = Map.of();
-    private volatile LinkStates links = new LinkStates(pathLoss.cutoff(), 0, 0);
+    /** What the last poll learned and decided, swapped whole: GETSS and accepts read it. */
+    private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile Poller poller;
+
+    /** A model on the machine's clock. */
+    protected SimulatorModel() {
+        this(PollClock.SYSTEM);
+    }
+
+    /** A model whose poller takes its time from {@code clock} and waits with it. */
+    protected SimulatorModel(PollClock clock) {
+        this.clock = Objects.requireNonNull(clock, "clock");
+    }
 
     /** The simulator's connection (usarsim.*), the path loss (distance.*) and the link stability (distance.margin, distance.holdTime). */
     @Override
@@ -77,16 +92,12 @@ public abstract class SimulatorModel implements PropagationModel {
         return SETTINGS;
     }
 
+    /** Takes the values; they are checked, by their settings' rules, at the next start. */
     @Override
     public void configure(ModelSettings settings) {
-        host = settings.getString("usarsim.host", host);
-        port = settings.getInt("usarsim.port", port);
-        intervalMs = settings.getInt("usarsim.interval", intervalMs);
-        timeoutMs = settings.getInt("usarsim.timeout", timeoutMs);
-        pathLoss = new PathLoss(settings.getDouble("distance.pd0", pathLoss.pd0()), settings.getDouble("distance.n", pathLoss.n()),
-                settings.getDouble("distance.d0", pathLoss.d0()), settings.getDouble("distance.cutoff", pathLoss.cutoff()));
-        margin = settings.getDouble("distance.margin", margin);
-        holdSeconds = settings.getDouble("distance.holdTime", holdSeconds);
+        Map<String, String> values = new HashMap<>(given);
+        values.putAll(settings.asMap());
+        given = Map.copyOf(values);
     }
 
     @Override
@@ -99,38 +110,32 @@ public abstract class SimulatorModel implements PropagationModel {
         this.listener = listener;
     }
 
-    /** Checks the settings, connects to the simulator and starts polling it. */
+    /** Checks and freezes the configuration, connects to the simulator and starts polling it. */
     @Override
     public synchronized void start() throws ModelStartException {
         if (poller != null) {
             return;
         }
-        check(pathLoss.n() > 0 && Double.isFinite(pathLoss.n()), "distance.n must be above 0, not " + pathLoss.n());
-        check(pathLoss.d0() > 0 && Double.isFinite(pathLoss.d0()), "distance.d0 must be above 0, not " + pathLoss.d0());
-        check(Double.isFinite(pathLoss.pd0()) && Double.isFinite(pathLoss.cutoff()), "distance.pd0 and distance.cutoff must be numbers");
-        check(margin >= 0 && holdSeconds >= 0, "distance.margin and distance.holdTime must be 0 or more");
-        check(intervalMs > 0 && timeoutMs > 0, "usarsim.interval and usarsim.timeout must be above 0");
-        check(port > 0 && port < 65536, "usarsim.port must be from 1 to 65535, not " + port);
-        check(linkModel != null, "no server to act on (setRobotLinkModel was not called)");
+        if (linkModel == null) {
+            throw new ModelStartException("no server to act on (setRobotLinkModel was not called)");
+        }
+        SimulatorConfig run = SimulatorConfig.read(settings(), given);
         SimulatorConnection connection;
         try {
-            connection = SimulatorConnection.open(host, port, timeoutMs);
+            connection = SimulatorConnection.open(run.host(), run.port(), run.timeoutMs());
         } catch (IOException | RuntimeException e) {
-            throw new ModelStartException("cannot reach the simulator at " + where() + " (" + e.getMessage() + ")", e);
+            throw new ModelStartException("cannot reach the simulator at " + run.where() + " (" + e.getMessage() + ")", e);
         }
-        positions = Map.of();
-        links = new LinkStates(pathLoss.cutoff(), margin, holdSeconds);
-        started();
-        log.info(name() + " polls the simulator at " + where() + " every " + intervalMs + " ms; range " + metres(pathLoss.range())
-                + " (cutoff " + pathLoss.cutoff() + " dBm" + (margin > 0 ? ", margin " + margin + " dB" : "")
-                + (holdSeconds > 0 ? ", hold time " + holdSeconds + " s" : "") + ")");
-        poller = new Poller(connection);
-    }
-
-    private static void check(boolean ok, String message) throws ModelStartException {
-        if (!ok) {
-            throw new ModelStartException(message);
-        }
+        config = run;
+        LinkStates links = new LinkStates(run.pathLoss().cutoff(), run.margin(), run.holdSeconds());
+        snapshot = PollSnapshot.empty(links, clock.nanoTime());
+        started(run.values());
+        PathLoss pathLoss = run.pathLoss();
+        log.info(name() + " polls the simulator at " + run.where() + " every " + run.intervalMs() + " ms; range "
+                + metres(pathLoss.range()) + " (cutoff " + pathLoss.cutoff() + " dBm"
+                + (run.margin() > 0 ? ", margin " + run.margin() + " dB" : "")
+                + (run.holdSeconds() > 0 ? ", hold time " + run.holdSeconds() + " s" : "") + ")");
+        poller = new Poller(run, connection);
     }
 
     /** Stops polling; a poll under way is abandoned (its connection closed) and acts on nothing more. */
@@ -154,10 +159,10 @@ public abstract class SimulatorModel implements PropagationModel {
     /** The strength from the last known positions: NaN while either robot's position is unknown. */
     @Override
     public double getSignalStrengthForPair(String from, String to) {
-        Map<String, RobotState> known = positions;
-        RobotState a = known.get(from);
-        RobotState b = known.get(to);
-        return a == null || b == null ? Double.NaN : strength(a, b);
+        PollSnapshot known = snapshot;
+        ReportedRobot a = known.positions().get(from);
+        ReportedRobot b = known.positions().get(to);
+        return a == null || b == null ? Double.NaN : strength(a, b, known.obstacles(RobotPair.of(from, to)));
     }
 
     /**
@@ -166,48 +171,62 @@ public abstract class SimulatorModel implements PropagationModel {
      */
     @Override
     public boolean connectionIsPossibleForPair(String from, String to) {
-        Boolean live = links.live(NamePair.of(from, to));
+        PollSnapshot known = snapshot;
+        RobotPair pair = RobotPair.of(from, to);
+        Boolean live = known.links().live(pair);
         if (live != null) {
             return live;
         }
-        Map<String, RobotState> known = positions;
-        RobotState a = known.get(from);
-        RobotState b = known.get(to);
-        return a == null || b == null ? allowsUnknownRobots() : strength(a, b) >= pathLoss.cutoff();
+        ReportedRobot a = known.positions().get(from);
+        ReportedRobot b = known.positions().get(to);
+        return a == null || b == null ? allowsUnknownRobots() : strength(a, b, known.obstacles(pair)) >= pathLoss().cutoff();
     }
 
     // ---- what a subclass decides ----
 
-    /** The strength in dBm between two robots the simulator lists; NaN when it cannot be known. */
-    protected abstract double strength(RobotState a, RobotState b);
+    /**
+     * The strength in dBm between two robots the simulator lists, with the obstacle count between
+     * them as {@link #obstacleCounts} gave it (NaN when not counted); NaN when it cannot be known.
+     */
+    protected abstract double strength(ReportedRobot a, ReportedRobot b, double obstacles);
 
     /** Whether a robot with no known position may connect. */
     protected abstract boolean allowsUnknownRobots();
 
     /** Whether registered robots absent from this position list are kicked. */
-    protected abstract boolean kicksRobotsAbsentFrom(Map<String, RobotState> listed);
+    protected abstract boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed);
 
-    /** Called at every poll before the pairs are decided, with the pairs to decide. */
-    protected void beforeDecisions(Map<String, RobotState> listed, List<NamePair> pairs, SimulatorConnection simulator)
-            throws IOException {
+    /**
+     * Called at every poll before the pairs are decided, with the pairs to decide: the obstacle
+     * count of each pair that has one. Published with this poll's positions. None by default.
+     */
+    protected Map<RobotPair, Double> obstacleCounts(Map<String, ReportedRobot> listed, List<RobotPair> pairs,
+            SimulatorConnection simulator) throws IOException {
+        return Map.of();
     }
 
-    /** Called at every start, before the first poll: a subclass forgets what the last run learned. */
-    protected void started() {
+    /**
+     * Called at every start, before the first poll, with the run's checked settings (every
+     * declared key): a subclass reads its own and forgets what the last run learned.
+     */
+    protected void started(ModelSettings settings) {
     }
 
+    /** The path loss of the current run (the declared defaults before the first start). */
     protected final PathLoss pathLoss() {
-        return pathLoss;
+        SimulatorConfig run = config;
+        return run != null ? run.pathLoss() : DEFAULT_PATH_LOSS;
     }
 
     // ---- the poller ----
 
     /**
-     * One run of polling, from a start to its shutdown: its own thread, connection and trouble
-     * state, so that a run that is slow to stop can never touch the next one's.
+     * One run of polling, from a start to its shutdown: its own thread, configuration, connection
+     * and trouble state, so that a run that is slow to stop can never touch the next one's.
      */
     private final class Poller implements Runnable {
 
+        private final SimulatorConfig run;
         private final Thread thread;
         private volatile boolean stopped;
         private volatile SimulatorConnection connection;
@@ -217,7 +236,8 @@ public abstract class SimulatorModel implements PropagationModel {
         /** A failure that is not the simulator's, already logged; null after a good poll. */
         private String failure;
 
-        Poller(SimulatorConnection connection) {
+        Poller(SimulatorConfig run, SimulatorConnection connection) {
+            this.run = run;
             this.connection = connection;
             thread = new Thread(this, name() + " poller");
             thread.setDaemon(true);
@@ -237,28 +257,28 @@ public abstract class SimulatorModel implements PropagationModel {
 
         @Override
         public void run() {
-            long backoffMs = intervalMs;
-            long next = System.nanoTime();
+            long backoffMs = run.intervalMs();
+            long next = clock.nanoTime();
             try {
                 while (pause(next)) {
-                    next = System.nanoTime() + intervalMs * 1_000_000L;
+                    next = clock.nanoTime() + run.intervalMs() * 1_000_000L;
                     try {
                         SimulatorConnection simulator = connection;
                         if (simulator == null) {
-                            simulator = SimulatorConnection.open(host, port, timeoutMs);
+                            simulator = SimulatorConnection.open(run.host(), run.port(), run.timeoutMs());
                             connection = simulator;
                         }
                         poll(simulator);
                         back();
-                        backoffMs = intervalMs;
+                        backoffMs = run.intervalMs();
                     } catch (IOException e) {
                         if (stopped) {
                             return;
                         }
                         lost(e);
                         close();
-                        next = System.nanoTime() + backoffMs * 1_000_000L;
-                        backoffMs = Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
+                        next = clock.nanoTime() + backoffMs * 1_000_000L;
+                        backoffMs = nextBackoff(backoffMs, run.intervalMs());
                     } catch (RuntimeException | Error e) {
                         failed(e);
                     }
@@ -270,10 +290,9 @@ public abstract class SimulatorModel implements PropagationModel {
 
         /** Waits until {@code deadline}; false when the run was stopped meanwhile. */
         private boolean pause(long deadline) {
-            long left;
-            while (!stopped && (left = deadline - System.nanoTime()) > 0) {
+            while (!stopped && deadline - clock.nanoTime() > 0) {
                 try {
-                    TimeUnit.NANOSECONDS.sleep(left);
+                    clock.sleepUntil(deadline);
                 } catch (InterruptedException e) {
                     return false;
                 }
@@ -281,60 +300,40 @@ public abstract class SimulatorModel implements PropagationModel {
             return !stopped;
         }
 
-        /** One poll: positions, kicks, then every pair of listed robots broken or resumed. */
+        /** One poll: positions, kicks, obstacle counts, then every pair of listed robots decided, published, broken or resumed. */
         private void poll(SimulatorConnection simulator) throws IOException {
             RobotLinkModel hub = linkModel;
             List<String> registeredBefore = hub.getListOfRegisteredRobots();
-            Map<String, RobotState> listed = simulator.positions();
+            Map<String, ReportedRobot> listed = simulator.positions();
             if (stopped) {
                 return;
             }
-            boolean kickAbsent = kicksRobotsAbsentFrom(listed);
-            for (String robot : registeredBefore) {
-                RobotState state = listed.get(robot);
-                if (state == null && kickAbsent) {
-                    log.info("kicking " + robot + ": the simulator does not list it");
-                    hub.kickOutRobot(robot);
-                } else if (state != null && state.batteryEmpty()) {
-                    log.info("kicking " + robot + ": its battery is empty");
-                    listener.robotOutOfBattery(robot);
-                    hub.kickOutRobot(robot);
+            for (PollStep.Kick kick : PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed))) {
+                log.info("kicking " + kick.robot() + ": " + kick.reason());
+                if (kick.batteryEmpty()) {
+                    listener.robotOutOfBattery(kick.robot());
                 }
+                hub.kickOutRobot(kick.robot());
             }
-            List<String> present = new ArrayList<>();
-            for (String robot : hub.getListOfRegisteredRobots()) {
-                RobotState state = listed.get(robot);
-                if (state != null && !state.batteryEmpty()) {
-                    present.add(robot);
-                }
-            }
-            List<NamePair> pairs = new ArrayList<>();
-            for (int i = 0; i < present.size(); i++) {
-                for (int j = i + 1; j < present.size(); j++) {
-                    pairs.add(NamePair.of(present.get(i), present.get(j)));
-                }
-            }
-            beforeDecisions(listed, pairs, simulator);
+            List<String> present = PollStep.present(hub.getListOfRegisteredRobots(), listed);
+            Map<RobotPair, Double> obstacles = obstacleCounts(listed, PollStep.pairs(present), simulator);
             if (stopped) {
                 return;
             }
-            // Only now: a GETSS meanwhile answers from the last positions with what goes with them.
-            positions = listed;
-            LinkStates states = links;
-            states.retainOnly(new HashSet<>(present));
-            long now = System.nanoTime();
-            for (NamePair pair : pairs) {
-                RobotState a = listed.get(pair.first());
-                RobotState b = listed.get(pair.second());
-                double strength = strength(a, b);
-                if (states.decide(pair, strength, now)) {
+            PollStep.Decision decision = PollStep.decide(present, listed, obstacles, clock.nanoTime(), snapshot.links(),
+                    SimulatorModel.this::strength);
+            // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
+            snapshot = decision.snapshot();
+            for (PollStep.Link link : decision.links()) {
+                RobotPair pair = link.pair();
+                if (link.live()) {
                     if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {
-                        log.fine(pair + " in range: " + strength + " dBm");
+                        log.fine(pair + " in range: " + link.strength() + " dBm");
                         listener.connectionInRange(pair.first(), pair.second());
                     }
                 } else if (hub.breakConnectionsForPair(pair.first(), pair.second())) {
-                    log.fine(pair + " out of range: " + strength + " dBm at " + metres(a.distanceTo(b)));
-                    listener.connectionOutOfRange(pair.first(), pair.second(), strength, a.distanceTo(b));
+                    log.fine(pair + " out of range: " + link.strength() + " dBm at " + metres(link.distance()));
+                    listener.connectionOutOfRange(pair.first(), pair.second(), link.strength(), link.distance());
                 }
             }
             failure = null;
@@ -343,18 +342,19 @@ public abstract class SimulatorModel implements PropagationModel {
         private void lost(IOException e) {
             String reason = e.getMessage() == null ? e.toString() : e.getMessage();
             if (trouble == null) {
-                troubleSince = System.nanoTime();
-                log.warning("lost the simulator at " + where() + ": " + reason + "; keeping the last known link state and reconnecting");
+                troubleSince = clock.nanoTime();
+                log.warning("lost the simulator at " + run.where() + ": " + reason
+                        + "; keeping the last known link state and reconnecting");
             } else if (!reason.equals(trouble)) {
-                log.fine("the simulator at " + where() + " is still unusable: " + reason);
+                log.fine("the simulator at " + run.where() + " is still unusable: " + reason);
             }
             trouble = reason;
         }
 
         private void back() {
             if (trouble != null) {
-                long seconds = TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - troubleSince);
-                log.info("the simulator at " + where() + " answers again after " + seconds + " s");
+                long seconds = TimeUnit.NANOSECONDS.toSeconds(clock.nanoTime() - troubleSince);
+                log.info("the simulator at " + run.where() + " answers again after " + seconds + " s");
                 trouble = null;
             }
         }
@@ -376,8 +376,9 @@ public abstract class SimulatorModel implements PropagationModel {
         }
     }
 
-    private String where() {
-        return host + ":" + port;
+    /** The pause after a failed attempt that follows one of {@code backoffMs}: doubled, up to 10 s (or the interval, if longer). */
+    static long nextBackoff(long backoffMs, int intervalMs) {
+        return Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
     }
 
     private static String metres(double metres) {

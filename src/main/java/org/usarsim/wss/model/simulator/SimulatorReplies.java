@@ -7,6 +7,7 @@ import java.util.Map;
 import org.usarsim.wss.protocol.Command;
 import org.usarsim.wss.protocol.SegmentException;
 import org.usarsim.wss.protocol.SegmentParser;
+import org.usarsim.wss.model.RobotPair;
 
 /**
  * Reads the simulator's replies:
@@ -29,7 +30,7 @@ final class SimulatorReplies {
     }
 
     /** The robots of a POSITIONS line, by name, in the order given. */
-    static Map<String, RobotState> positions(String line) throws SimulatorReplyException {
+    static Map<String, ReportedRobot> positions(String line) throws SimulatorReplyException {
         List<List<String>> segments = segments(line, POSITIONS);
         if (segments.isEmpty()) {
             throw malformed(line, "no {Robots n}");
@@ -47,9 +48,9 @@ final class SimulatorReplies {
         if (robots != segments.size() - 1) {
             throw malformed(line, "it says " + robots + " robots but lists " + (segments.size() - 1));
         }
-        Map<String, RobotState> result = new LinkedHashMap<>();
+        Map<String, ReportedRobot> result = new LinkedHashMap<>();
         for (List<String> segment : segments.subList(1, segments.size())) {
-            RobotState robot = robot(segment, line);
+            ReportedRobot robot = robot(segment, line);
             if (result.put(robot.name(), robot) != null) {
                 throw malformed(line, "robot " + robot.name() + " is listed twice");
             }
@@ -57,7 +58,7 @@ final class SimulatorReplies {
         return result;
     }
 
-    private static RobotState robot(List<String> segment, String line) throws SimulatorReplyException {
+    private static ReportedRobot robot(List<String> segment, String line) throws SimulatorReplyException {
         if (segment.size() % 2 != 0) {
             throw malformed(line, "a robot's fields are not key-value pairs: " + String.join(" ", segment));
         }
@@ -78,7 +79,7 @@ final class SimulatorReplies {
         if (name == null || location == null) {
             throw malformed(line, "a robot without Name or Location: {" + String.join(" ", segment) + "}");
         }
-        return new RobotState(name, location[0], location[1], location[2], batteryEmpty);
+        return new ReportedRobot(name, location[0], location[1], location[2], batteryEmpty);
     }
 
     private static double[] location(String value, String line) throws SimulatorReplyException {
@@ -111,7 +112,7 @@ final class SimulatorReplies {
     }
 
     /** A NUMOBS reply: the pair it is for and the count, NaN when the simulator does not know (negative). */
-    record ObstacleCount(NamePair pair, double count) {
+    record ObstacleCount(RobotPair pair, double count) {
     }
 
     static ObstacleCount obstacles(String line) throws SimulatorReplyException {
@@ -134,7 +135,7 @@ final class SimulatorReplies {
         } catch (NumberFormatException e) {
             throw malformed(line, "ObstCount " + count + " is not a number");
         }
-        return new ObstacleCount(NamePair.of(from, to), value >= 0 && Double.isFinite(value) ? value : Double.NaN);
+        return new ObstacleCount(RobotPair.of(from, to), value >= 0 && Double.isFinite(value) ? value : Double.NaN);
     }
 
     /**

@@ -4,9 +4,9 @@ import java.net.InetAddress;
 import java.util.List;
 
 /** A registered robot: its name, the address its control connection came from, the ports it accepts on. */
-record Robot(String name, InetAddress address, List<Integer> ports, ControlSession session) {
+record RegisteredRobot(String name, InetAddress address, List<Integer> ports, ControlSession session) {
 
-    Robot {
+    RegisteredRobot {
         ports = List.copyOf(ports);
     }
 

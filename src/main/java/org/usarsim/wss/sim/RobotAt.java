@@ -1,5 +1,5 @@
 package org.usarsim.wss.sim;
 
 /** A robot at one moment: where it is and whether its battery is empty. */
-record RobotState(String name, Point position, boolean batteryEmpty) {
+record RobotAt(String name, Point position, boolean batteryEmpty) {
 }

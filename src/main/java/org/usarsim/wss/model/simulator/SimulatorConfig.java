@@ -1,0 +1,43 @@
+package org.usarsim.wss.model.simulator;
+
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.Setting;
+
+/**
+ * A simulator model's configuration for one run, read and checked once at its start: every value
+ * by its declared {@link Setting}'s rule (the defaults and the rules are written only there), then
+ * frozen. {@link #values} holds every declared key, for what a subclass declares besides.
+ */
+record SimulatorConfig(String host, int port, int intervalMs, int timeoutMs, PathLoss pathLoss, double margin,
+        double holdSeconds, ModelSettings values) {
+
+    /** The values given over the declared defaults, each checked; the first refused one stops the start. */
+    static SimulatorConfig read(List<Setting> declared, Map<String, String> given) throws ModelStartException {
+        Map<String, Setting> rules = new LinkedHashMap<>();
+        SimulatorModel.SETTINGS.forEach(setting -> rules.put(setting.key(), setting));
+        declared.forEach(setting -> rules.put(setting.key(), setting));
+        Map<String, String> values = new LinkedHashMap<>(given);
+        for (Setting setting : rules.values()) {
+            String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue());
+            String problem = setting.problem(value);
+            if (problem != null) {
+                throw new ModelStartException(setting.key() + ": '" + value + "' is not " + problem);
+            }
+        }
+        ModelSettings checked = new ModelSettings(values);
+        return new SimulatorConfig(checked.getString("usarsim.host", null), checked.getInt("usarsim.port", 0),
+                checked.getInt("usarsim.interval", 0), checked.getInt("usarsim.timeout", 0),
+                new PathLoss(checked.getDouble("distance.pd0", 0), checked.getDouble("distance.n", 0),
+                        checked.getDouble("distance.d0", 0), checked.getDouble("distance.cutoff", 0)),
+                checked.getDouble("distance.margin", 0), checked.getDouble("distance.holdTime", 0), checked);
+    }
+
+    /** host:port, as the log says it. */
+    String where() {
+        return host + ":" + port;
+    }
+}

@@ -365,12 +365,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         try {
             link.start();
-        } catch (OutOfMemoryError e) {
-            LOG.severe(port + ": no thread for a new link (" + e.getMessage() + "); closing the connection");
+        } catch (Throwable e) {
+            // No thread for the link: undone here, and the listener's AcceptLoop says so.
             synchronized (lock) {
                 port.links.remove(link);
             }
             link.discard();
+            throw e;
         }
     }
 

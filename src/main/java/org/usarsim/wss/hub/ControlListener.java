@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.SocketChannel;
 import java.util.List;
@@ -74,5 +75,10 @@ final class ControlListener extends AcceptLoop {
     protected void acceptFailed(IOException e) {
         // Out of descriptors, say: robots must still be able to connect once it passes.
         LOG.log(Level.SEVERE, "accepting a control connection failed, trying again: " + e, e);
+    }
+
+    @Override
+    protected void warnDropped(InetAddress peer, String message, Throwable e) {
+        hub.warnings.warn(LOG, "connections not served", peer, message, e);
     }
 }

@@ -186,4 +186,9 @@ final class PortListener extends AcceptLoop {
         hub.warnings.warn(LOG, "failed accepts", server.socket().getInetAddress(),
                 port + ": accept failed, trying again: " + e);
     }
+
+    @Override
+    protected void warnDropped(InetAddress peer, String message, Throwable e) {
+        hub.warnings.warn(LOG, "connections not served", peer, message, e);
+    }
 }

@@ -1,6 +1,7 @@
 package org.usarsim.wss.net;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
 import java.nio.channels.Channel;
@@ -101,7 +102,13 @@ public abstract class AcceptLoop implements Runnable {
             close(server, e);
             throw (VirtualMachineError) e;
         }
-        log.log(Level.WARNING, "cannot serve " + what + " " + peer + " (" + e + "): dropped it; accepting the next", e);
+        warnDropped(connection.socket().getInetAddress(),
+                "cannot serve " + what + " " + peer + " (" + e + "): dropped it; accepting the next", e);
+    }
+
+    /** Writes the WARNING for a connection dropped because it could not be served; a subclass may limit it. */
+    protected void warnDropped(InetAddress peer, String message, Throwable e) {
+        log.log(Level.WARNING, message, e);
     }
 
     private static void close(Channel channel, Throwable failure) {

@@ -1,18 +1,18 @@
 package org.usarsim.wss.hub;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.StandardSocketOptions;
-import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.net.AcceptLoop;
 
 /** Accepts control connections and runs a {@link ControlSession} thread for each. */
-final class ControlListener implements Runnable {
+final class ControlListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
     /**
@@ -23,21 +23,13 @@ final class ControlListener implements Runnable {
     static final int BACKLOG = 1024;
 
     private final Hub hub;
-    private final ServerSocketChannel server;
     private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
     private final Thread thread;
 
     /** Binds at once, so that a port in use is known before anything else starts. */
     ControlListener(Hub hub, InetSocketAddress address) throws IOException {
+        super(AcceptLoop.bind(address, BACKLOG), LOG, "the control port", "the control connection from");
         this.hub = hub;
-        this.server = ServerSocketChannel.open();
-        try {
-            server.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-            server.bind(address, BACKLOG);
-        } catch (IOException e) {
-            server.close();
-            throw e;
-        }
         this.thread = new Thread(this, "wss-control-listener");
         thread.setDaemon(true);
     }
@@ -64,32 +56,29 @@ final class ControlListener implements Runnable {
     }
 
     @Override
-    public void run() {
-        while (server.isOpen()) {
-            SocketChannel channel;
-            try {
-                channel = server.accept();
-            } catch (IOException e) {
-                if (!server.isOpen()) {
-                    return;
-                }
-                // Out of descriptors, say: robots must still be able to connect once it passes.
-                LOG.log(Level.SEVERE, "accepting a control connection failed, trying again: " + e, e);
-                Pause.briefly();
-                continue;
-            }
-            ControlSession session = new ControlSession(hub, this, channel);
-            sessions.add(session);
-            if (!server.isOpen()) {
-                session.close();
-            }
-            try {
-                session.start();
-            } catch (OutOfMemoryError e) {
-                LOG.severe("no thread for the control connection from " + channel.socket().getInetAddress() + ": " + e);
-                session.close();
-                sessions.remove(session);
-            }
+    protected void serve(SocketChannel channel) {
+        ControlSession session = new ControlSession(hub, this, channel);
+        sessions.add(session);
+        if (!server.isOpen()) {
+            session.close();
         }
+        try {
+            session.start();
+        } catch (Throwable e) {
+            session.close();
+            sessions.remove(session);
+            throw e;
+        }
+    }
+
+    @Override
+    protected void acceptFailed(IOException e) {
+        // Out of descriptors, say: robots must still be able to connect once it passes.
+        LOG.log(Level.SEVERE, "accepting a control connection failed, trying again: " + e, e);
+    }
+
+    @Override
+    protected void warnDropped(InetAddress peer, String message, Throwable e) {
+        hub.warnings.warn(LOG, "connections not served", peer, message, e);
     }
 }

@@ -8,8 +8,6 @@ import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.Iterator;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.OptionalDouble;
@@ -29,7 +27,8 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
  * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing sockets, and the non-blocking connect that starts a port's drain, happens under it.
+ * closing server sockets, and the non-blocking connect that starts a port's drain, happens under
+ * it: a link's sockets are opened before it is taken ({@link #accepted}).
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
@@ -53,7 +52,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     final WarningLimiter warnings = WarningLimiter.standard();
     private final Object lock = new Object();
     private final Map<String, RegisteredRobot> robots = new HashMap<>();
-    private final Map<PortKey, WssPort> ports = new LinkedHashMap<>();
+    private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
     private final Set<RobotPair> broken = new HashSet<>();
     private final PortMemory memory;
@@ -130,9 +129,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         synchronized (lock) {
             closed = true;
             lock.notifyAll(); // an INIT waiting for a name gives up at once
-            for (WssPort port : ports.values()) {
+            for (WssPort port : ports.all()) {
                 port.release();
-                links.addAll(port.links);
+                links.addAll(port.links());
             }
             ports.clear();
             robots.clear();
@@ -151,8 +150,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     List<SocketChannel> openSockets() {
         List<SocketChannel> sockets = new ArrayList<>(controlListener.channels());
         synchronized (lock) {
-            for (WssPort port : ports.values()) {
-                port.links.forEach(link -> sockets.addAll(link.channels()));
+            for (WssPort port : ports.all()) {
+                port.links().forEach(link -> sockets.addAll(link.channels()));
             }
         }
         return sockets;
@@ -189,8 +188,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             robots.put(name, robot);
             memory.clear(name);
-            for (WssPort port : ports.values()) {
-                if (port.key.involves(name) && shouldListen(port.key, true)) {
+            for (WssPort port : ports.of(name)) {
+                if (shouldListen(port.key, true)) {
                     listen(port, portEvents);
                 }
             }
@@ -213,8 +212,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             if (!isSessionOf(name, session)) {
                 return;
             }
-            for (WssPort port : ports.values()) {
-                PortListener listener = port.key.involves(name) ? port.beginDrain() : null;
+            for (WssPort port : ports.of(name)) {
+                PortListener listener = port.beginDrain();
                 if (listener != null) {
                     draining.add(listener);
                 }
@@ -228,8 +227,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             robots.remove(name);
             lock.notifyAll();
-            for (WssPort port : ports.values()) {
-                if (port.key.involves(name) && port.stopListening()) {
+            for (WssPort port : ports.of(name)) {
+                if (port.stopListening()) {
                     portEvents.add(listeningEvent(port));
                 }
             }
@@ -287,7 +286,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             PortKey key = new PortKey(from, to, resolved);
             WssPort port = ports.get(key);
             if (port == null) {
-                long held = ports.keySet().stream().filter(k -> k.from().equals(from)).count();
+                long held = ports.fromCount(from);
                 if (held >= config.maxPortsPerRobot()) {
                     warnings.warn(LOG, "DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
                             + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key);
@@ -300,7 +299,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                             "could not allocate a WSS port for " + key + ": " + e.getMessage());
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
-                ports.put(key, port);
+                ports.add(port);
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
                 int number = port.number;
                 boolean listening = port.listening();
@@ -315,14 +314,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** The source robot of the link whose outgoing port {@code port} leads to {@code asker}, or null. */
     String reverseDns(String asker, int port) {
         synchronized (lock) {
-            for (WssPort wssPort : ports.values()) {
-                if (!wssPort.key.to().equals(asker)) {
-                    continue;
-                }
-                for (Link link : wssPort.links) {
-                    if (link.outgoingPort() == port && !link.isClosed()) {
-                        return wssPort.key.from();
-                    }
+            for (WssPort wssPort : ports.of(asker)) {
+                if (wssPort.key.to().equals(asker) && wssPort.hasLinkFrom(port)) {
+                    return wssPort.key.from();
                 }
             }
             return null;
@@ -331,48 +325,80 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     // ---- called by the port listeners and links ----
 
-    /** A connection arrived on a WSS port: forward it, or close it at once and say why. */
+    /**
+     * A connection arrived on a WSS port: forward it, or close it at once and say why. The link's
+     * sockets and selector are opened without the lock, between a first check of the rules
+     * (a refused connection opens nothing) and a second one, under which the link is committed
+     * to the port. A robot that left or came back in between has stopped the port's listener, so
+     * {@code listensWith} then fails, and the target's address read at the first check still holds.
+     */
     void accepted(WssPort port, PortListener listener, SocketChannel socket) {
         PortKey key = port.key;
         InetAddress peer = socket.socket().getInetAddress();
         boolean allowed = modelAllows(key.from(), key.to());
-        Link link;
+        String refusal;
+        InetSocketAddress targetAddress = null;
         synchronized (lock) {
-            RegisteredRobot source = robots.get(key.from());
-            RegisteredRobot target = robots.get(key.to());
-            String refusal = null;
-            if (closed || !port.listensWith(listener) || source == null || target == null) {
-                refusal = "the port no longer listens";
-            } else if (config.matchSourceAddress() && !peer.equals(source.address())) {
-                refusal = "the connection came from " + peer.getHostAddress() + " but " + key.from()
-                        + " registered from " + source.address().getHostAddress();
-            } else if (!allowed || broken.contains(RobotPair.of(key.from(), key.to()))) {
-                refusal = model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
+            refusal = refusal(port, listener, peer, allowed);
+            if (refusal == null) {
+                targetAddress = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
             }
-            if (refusal != null) {
-                warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
-                Closing.quietly(socket);
-                return;
+        }
+        if (refusal != null) {
+            refuse(port, socket, peer, refusal);
+            return;
+        }
+        Link link;
+        try {
+            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events);
+        } catch (IOException e) {
+            warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
+            Closing.quietly(socket);
+            return;
+        }
+        synchronized (lock) {
+            refusal = refusal(port, listener, peer, allowed);
+            if (refusal == null) {
+                port.addLink(link);
             }
-            try {
-                link = new Link(this, port, socket, new InetSocketAddress(target.address(), key.targetPort()),
-                        config.chunkSize(), socketBuffers, events);
-            } catch (IOException e) {
-                warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
-                Closing.quietly(socket);
-                return;
-            }
-            port.links.add(link);
+        }
+        if (refusal != null) {
+            link.discard();
+            refuse(port, socket, peer, refusal);
+            return;
         }
         try {
             link.start();
-        } catch (OutOfMemoryError e) {
-            LOG.severe(port + ": no thread for a new link (" + e.getMessage() + "); closing the connection");
+        } catch (Throwable e) {
+            // No thread for the link: undone here, and the listener's AcceptLoop says so.
             synchronized (lock) {
-                port.links.remove(link);
+                port.removeLink(link);
             }
             link.discard();
+            throw e;
         }
+    }
+
+    /** Why a connection on the port cannot be forwarded now, or null when it can. Under the lock. */
+    private String refusal(WssPort port, PortListener listener, InetAddress peer, boolean allowed) {
+        PortKey key = port.key;
+        RegisteredRobot source = robots.get(key.from());
+        if (closed || !port.listensWith(listener) || source == null || !robots.containsKey(key.to())) {
+            return "the port no longer listens";
+        }
+        if (config.matchSourceAddress() && !peer.equals(source.address())) {
+            return "the connection came from " + peer.getHostAddress() + " but " + key.from()
+                    + " registered from " + source.address().getHostAddress();
+        }
+        if (!allowed || broken.contains(key.pair())) {
+            return model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
+        }
+        return null;
+    }
+
+    private void refuse(WssPort port, SocketChannel socket, InetAddress peer, String refusal) {
+        warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
+        Closing.quietly(socket);
     }
 
     void linkEstablished(Link link) {
@@ -383,10 +409,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     void linkClosed(Link link, boolean wasEstablished) {
         List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
-            link.port.links.remove(link);
+            link.port.removeLink(link);
             // A port kept only for its last connection is forgotten with it.
             for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
-                if (link.port.links.isEmpty() && !robots.containsKey(robot) && memory.expired(robot)) {
+                if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
                     forgetPortsOf(robot, portEvents);
                 }
             }
@@ -408,14 +434,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
-            for (WssPort port : ports.values()) {
-                if (port.key.isBetween(pair)) {
-                    if (port.stopListening()) {
-                        changed = true;
-                        portEvents.add(listeningEvent(port));
-                    }
-                    links.addAll(port.links);
+            for (WssPort port : ports.between(pair)) {
+                if (port.stopListening()) {
+                    changed = true;
+                    portEvents.add(listeningEvent(port));
                 }
+                links.addAll(port.links());
             }
         }
         links.forEach(Link::close);
@@ -430,8 +454,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean changed;
         synchronized (lock) {
             changed = broken.remove(pair);
-            for (WssPort port : ports.values()) {
-                if (port.key.isBetween(pair) && !port.listening() && shouldListen(port.key, true)) {
+            for (WssPort port : ports.between(pair)) {
+                if (!port.listening() && shouldListen(port.key, true)) {
                     changed |= listen(port, portEvents);
                 }
             }
@@ -448,14 +472,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
-            for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
-                WssPort port = it.next();
-                if (port.key.involves(name)) {
-                    port.release();
-                    links.addAll(port.links);
-                    it.remove();
-                    portEvents.add(forgottenEvent(port));
-                }
+            for (WssPort port : ports.of(name)) {
+                port.release();
+                links.addAll(port.links());
+                ports.remove(port);
+                portEvents.add(forgottenEvent(port));
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
@@ -485,10 +506,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             for (RegisteredRobot robot : robots.values()) {
                 robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
             }
-            for (WssPort port : ports.values()) {
+            for (WssPort port : ports.all()) {
                 PortKey key = port.key;
                 portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
-                for (Link link : port.links) {
+                for (Link link : port.links()) {
                     if (link.isEstablished() && !link.isClosed()) {
                         linkEntries.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number,
                                 link.outgoingPort()));
@@ -525,14 +546,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private void forgetPortsOf(String name, List<Runnable> portEvents) {
         int forgotten = 0;
         boolean kept = false;
-        for (Iterator<WssPort> it = ports.values().iterator(); it.hasNext(); ) {
-            WssPort port = it.next();
-            if (!port.key.involves(name)) {
-                continue;
-            }
-            if (port.links.isEmpty()) {
+        for (WssPort port : ports.of(name)) {
+            if (!port.hasLinks()) {
                 port.release();
-                it.remove();
+                ports.remove(port);
                 portEvents.add(forgottenEvent(port));
                 forgotten++;
             } else {
@@ -557,7 +574,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private boolean shouldListen(PortKey key, boolean modelAllows) {
         RegisteredRobot target = robots.get(key.to());
         return modelAllows && robots.containsKey(key.from()) && target != null
-                && target.ports().contains(key.targetPort()) && !broken.contains(RobotPair.of(key.from(), key.to()));
+                && target.ports().contains(key.targetPort()) && !broken.contains(key.pair());
     }
 
     /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */

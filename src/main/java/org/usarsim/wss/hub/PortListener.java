@@ -9,14 +9,17 @@ import java.nio.channels.SocketChannel;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.logging.Logger;
+import org.usarsim.wss.net.AcceptLoop;
 
 /**
  * A WSS port while it listens: a blocking server socket and the thread that accepts on it and
  * hands each connection to the hub. Closing it stops the listening at once: a blocking channel's
  * socket is released by close() itself, whereas one registered with a Selector is released only
- * when that selector next runs, which would let a connect through after a break.
+ * when that selector next runs, which would let a connect through after a break. The loop and
+ * its policy for failures are {@link AcceptLoop}'s; what is a WSS port's own (the close that waits
+ * for accept() to return, the drain) is here.
  */
-final class PortListener implements Runnable {
+final class PortListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(PortListener.class.getName());
     private static final int BACKLOG = 128;
@@ -24,7 +27,6 @@ final class PortListener implements Runnable {
 
     private final Hub hub;
     private final WssPort port;
-    private final ServerSocketChannel channel;
     /** The thread is inside accept(), where it holds the socket open. */
     private boolean inAccept;
     /** The hub's own connection that marks the end of what is drained (see {@link #beginDrain}). */
@@ -34,22 +36,14 @@ final class PortListener implements Runnable {
     private boolean ended;
 
     PortListener(Hub hub, WssPort port, ServerSocketChannel channel) {
+        super(channel, LOG, port.toString(), "a connection on " + port + " from");
         this.hub = hub;
         this.port = port;
-        this.channel = channel;
     }
 
     /** A blocking server socket bound to the address (port 0: the OS chooses). */
     static ServerSocketChannel bind(InetSocketAddress address) throws IOException {
-        ServerSocketChannel channel = ServerSocketChannel.open();
-        try {
-            channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
-            channel.bind(address, BACKLOG);
-            return channel;
-        } catch (IOException e) {
-            channel.close();
-            throw e;
-        }
+        return AcceptLoop.bind(address, BACKLOG);
     }
 
     void start() {
@@ -65,7 +59,7 @@ final class PortListener implements Runnable {
      * under it).
      */
     void close() {
-        Closing.quietly(channel);
+        Closing.quietly(server);
         if (!await(() -> !inAccept, System.nanoTime() + CLOSE_WAIT_NS)) {
             LOG.warning(port + ": the accepting thread did not stop in time");
         }
@@ -99,7 +93,7 @@ final class PortListener implements Runnable {
      * @return false when the hub's own connection could not be started; close() then stops the port
      */
     synchronized boolean beginDrain(InetAddress address) {
-        if (marker != null || ended || !channel.isOpen()) {
+        if (marker != null || ended || !server.isOpen()) {
             return marker != null;
         }
         SocketChannel connection = null;
@@ -158,38 +152,43 @@ final class PortListener implements Runnable {
     @Override
     public void run() {
         try {
-            acceptUntilClosed();
+            super.run();
         } finally {
             end();
         }
     }
 
-    private void acceptUntilClosed() {
-        while (channel.isOpen()) {
-            SocketChannel socket;
-            accepting(true);
-            try {
-                socket = channel.accept();
-            } catch (IOException e) {
-                accepting(false);
-                if (!channel.isOpen()) {
-                    return;
-                }
-                // Out of descriptors, say: the port still listens, so try again in a moment.
-                hub.warnings.warn(LOG, "failed accepts", channel.socket().getInetAddress(),
-                        port + ": accept failed, trying again: " + e);
-                Pause.briefly();
-                continue;
-            }
+    @Override
+    protected SocketChannel accept() throws IOException {
+        accepting(true);
+        try {
+            return super.accept();
+        } finally {
             accepting(false);
-            if (isMarker(socket)) {
-                // Everything completed before the drain began is handed over: stop here. A reset
-                // rather than a close leaves no TIME_WAIT on the port's number.
-                resetQuietly(socket);
-                Closing.quietly(channel);
-                return;
-            }
-            hub.accepted(port, this, socket);
         }
+    }
+
+    @Override
+    protected void serve(SocketChannel socket) {
+        if (isMarker(socket)) {
+            // Everything completed before the drain began is handed over: stop here. A reset
+            // rather than a close leaves no TIME_WAIT on the port's number.
+            resetQuietly(socket);
+            Closing.quietly(server);
+            return;
+        }
+        hub.accepted(port, this, socket);
+    }
+
+    @Override
+    protected void acceptFailed(IOException e) {
+        // Out of descriptors, say: the port still listens, so try again in a moment.
+        hub.warnings.warn(LOG, "failed accepts", server.socket().getInetAddress(),
+                port + ": accept failed, trying again: " + e);
+    }
+
+    @Override
+    protected void warnDropped(InetAddress peer, String message, Throwable e) {
+        hub.warnings.warn(LOG, "connections not served", peer, message, e);
     }
 }

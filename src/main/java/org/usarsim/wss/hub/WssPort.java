@@ -7,6 +7,7 @@ import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Set;
 import java.util.logging.Logger;
 
@@ -28,7 +29,7 @@ final class WssPort {
     final PortKey key;
     final int number;
     /** The connections accepted here that are still open. */
-    final Set<Link> links = new HashSet<>();
+    private final Set<Link> links = new HashSet<>();
     private final Hub hub;
     private final InetAddress bindAddress;
     private PortListener listener;
@@ -53,6 +54,29 @@ final class WssPort {
         WssPort port = new WssPort(hub, key, bindAddress, placeholder.socket().getLocalPort());
         port.placeholder = placeholder;
         return port;
+    }
+
+    /** A connection accepted here is forwarded now. */
+    void addLink(Link link) {
+        links.add(link);
+    }
+
+    void removeLink(Link link) {
+        links.remove(link);
+    }
+
+    boolean hasLinks() {
+        return !links.isEmpty();
+    }
+
+    /** The open connections, a copy (to close them after the lock, say). */
+    List<Link> links() {
+        return List.copyOf(links);
+    }
+
+    /** Whether a link through this port still open connects to its target from the WSS's {@code outgoingPort}. */
+    boolean hasLinkFrom(int outgoingPort) {
+        return links.stream().anyMatch(link -> link.outgoingPort() == outgoingPort && !link.isClosed());
     }
 
     boolean listening() {

@@ -3,8 +3,8 @@ package org.usarsim.wss.sim;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
 import java.nio.file.Path;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
@@ -13,6 +13,7 @@ import java.util.function.Consumer;
 import java.util.function.DoubleSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.net.AcceptLoop;
 
 /**
  * Serves USARSim's position protocol from a world file, so that the simulator-driven
@@ -25,7 +26,7 @@ public final class WorldServer implements AutoCloseable {
 
     private final World world;
     private final DoubleSupplier clock;
-    private final ServerSocket server;
+    private final ServerSocketChannel server;
     private final Set<WorldClient> clients = ConcurrentHashMap.newKeySet();
     /** Starts a client's thread: {@link WorldClient#start}, or what a test puts in its place. */
     private final Consumer<WorldClient> starter;
@@ -59,21 +60,14 @@ public final class WorldServer implements AutoCloseable {
         this.world = world;
         this.clock = clock;
         this.starter = starter;
-        this.server = new ServerSocket();
-        try {
-            server.setReuseAddress(true);
-            server.bind(address, 50);
-        } catch (IOException e) {
-            server.close();
-            throw e;
-        }
-        this.acceptor = new Thread(this::accept, "world-server " + port());
+        this.server = AcceptLoop.bind(address, 50);
+        this.acceptor = new Thread(new Acceptor(server), "world-server " + port());
         acceptor.setDaemon(true);
         acceptor.start();
     }
 
     int port() {
-        return server.getLocalPort();
+        return server.socket().getLocalPort();
     }
 
     /** The world now. */
@@ -84,7 +78,7 @@ public final class WorldServer implements AutoCloseable {
     /** Stops listening, at once, and closes every client connection. */
     @Override
     public void close() {
-        // Not server.isClosed(): the acceptor closes the socket itself when it gives up (serve).
+        // Not server.isOpen(): the acceptor closes the socket itself when it gives up (AcceptLoop).
         if (!closed.compareAndSet(false, true)) {
             return;
         }
@@ -112,68 +106,32 @@ public final class WorldServer implements AutoCloseable {
         return clients.size();
     }
 
-    private void accept() {
-        while (!server.isClosed()) {
-            Socket socket;
-            try {
-                socket = server.accept();
-            } catch (IOException e) {
-                if (server.isClosed()) {
-                    return;
-                }
-                // Out of descriptors, say: clients must still be able to connect once it passes.
-                LOG.log(Level.SEVERE, "accepting a client failed, trying again: " + e, e);
-                pause();
-                continue;
-            }
-            serve(socket);
-        }
-    }
+    /** The acceptor: gives each client its thread, with {@link AcceptLoop}'s policy when that fails. */
+    private final class Acceptor extends AcceptLoop {
 
-    /**
-     * Gives the client its thread. When that fails (an OutOfMemoryError "unable to create native
-     * thread", say) only this client is dropped: its connection is closed, it is forgotten, and
-     * the acceptor goes on with the next. A VirtualMachineError other than an OutOfMemoryError
-     * leaves the JVM in doubt: then the server also stops listening, so that clients are refused
-     * rather than left waiting on a bound port, and the error goes on up.
-     */
-    private void serve(Socket socket) {
-        WorldClient client = null;
-        try {
-            client = new WorldClient(this, socket);
+        Acceptor(ServerSocketChannel server) {
+            super(server, LOG, "the world server", "client");
+        }
+
+        @Override
+        protected void serve(SocketChannel socket) {
+            WorldClient client = new WorldClient(WorldServer.this, socket.socket());
             clients.add(client);
-            if (server.isClosed()) {
+            if (!server.isOpen()) {
                 client.close();
             }
-            starter.accept(client);
-        } catch (Throwable e) {
-            String peer = socket.getInetAddress().getHostAddress() + ":" + socket.getPort();
-            if (client != null) {
-                clients.remove(client);
-            }
             try {
-                socket.close();
-            } catch (IOException closing) {
-                e.addSuppressed(closing);
+                starter.accept(client);
+            } catch (Throwable e) {
+                clients.remove(client);
+                throw e;
             }
-            if (e instanceof VirtualMachineError && !(e instanceof OutOfMemoryError)) {
-                LOG.log(Level.SEVERE, "cannot serve client " + peer + " (" + e + "): the world server stops listening", e);
-                try {
-                    server.close();
-                } catch (IOException closing) {
-                    e.addSuppressed(closing);
-                }
-                throw (VirtualMachineError) e;
-            }
-            LOG.log(Level.WARNING, "cannot serve client " + peer + " (" + e + "): dropped it; accepting the next", e);
         }
-    }
 
-    private static void pause() {
-        try {
-            Thread.sleep(100);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
+        @Override
+        protected void acceptFailed(IOException e) {
+            // Out of descriptors, say: clients must still be able to connect once it passes.
+            LOG.log(Level.SEVERE, "accepting a client failed, trying again: " + e, e);
         }
     }
 }

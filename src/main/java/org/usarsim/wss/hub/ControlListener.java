@@ -42,9 +42,21 @@ final class ControlListener extends AcceptLoop {
         thread.start();
     }
 
+    /**
+     * Closes the control port and every control connection. A thread blocked in accept() keeps the
+     * socket listening until it returns: close waits for it (at most a second), so that the port
+     * is free when close returns.
+     */
     void close() {
         Closing.quietly(server);
         sessions.forEach(ControlSession::close);
+        if (thread.isAlive() && thread != Thread.currentThread()) {
+            try {
+                thread.join(1000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     List<SocketChannel> channels() {

@@ -25,7 +25,7 @@ import java.util.regex.Pattern;
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RelayBenchmark [--seconds 5] [--runs 3] [--only NAME]
  * </pre>
- * NAME is one of throughput, latency, split, many.
+ * NAME is one of throughput, latency, split, many, eventlog.
  */
 public final class RelayBenchmark {
 
@@ -67,6 +67,9 @@ public final class RelayBenchmark {
         }
         if (only == null || only.equals("many")) {
             benchmark.manyConnections();
+        }
+        if (only == null || only.equals("eventlog")) {
+            benchmark.eventLog();
         }
         benchmark.killChildren();
         System.exit(0);
@@ -124,11 +127,16 @@ public final class RelayBenchmark {
     }
 
     private double iperfThroughWss(WssProcess wss) throws Exception {
+        return iperfThroughWss(wss, 1);
+    }
+
+    /** iperf3 with {@code streams} parallel connections through one WSS port: that many links at once. */
+    private double iperfThroughWss(WssProcess wss, int streams) throws Exception {
         int port = freePort();
         Process server = iperfServer(port);
         try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", port);
                 ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
-            return iperfClient(source.dns("Sink"));
+            return iperfClient(source.dns("Sink"), streams);
         } finally {
             stop(server);
         }
@@ -142,7 +150,13 @@ public final class RelayBenchmark {
 
     /** MB/s received, from iperf3's JSON. */
     private double iperfClient(int port) throws Exception {
-        Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J");
+        return iperfClient(port, 1);
+    }
+
+    /** MB/s received by all of {@code streams} parallel connections together, from iperf3's JSON. */
+    private double iperfClient(int port, int streams) throws Exception {
+        Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J",
+                "-P", Integer.toString(streams));
         String json = new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         client.waitFor(seconds + 30L, TimeUnit.SECONDS);
         Matcher matcher = RECEIVED_BPS.matcher(json);
@@ -150,6 +164,56 @@ public final class RelayBenchmark {
             throw new IOException("no iperf3 result: " + json);
         }
         return Double.parseDouble(matcher.group(1)) / 8 / 1e6;
+    }
+
+    // ---- the event log: the same streams with wss.eventLog off and on ----
+
+    private void eventLog() throws Exception {
+        Path logs = Files.createTempDirectory("wss-bench-event-log");
+        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs, alternating which goes first)%n%n",
+                seconds, runs);
+        try (WssProcess off = WssProcess.start("wss.eventLog=false");
+                WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
+            System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
+            System.out.println("|---|---|---|---|---|");
+            for (int streams : new int[] {1, 8}) {
+                double[] offRuns = new double[runs];
+                double[] onRuns = new double[runs];
+                double[] ratios = new double[runs];
+                for (int run = 0; run < runs; run++) {
+                    if (run % 2 == 0) {
+                        offRuns[run] = iperfThroughWss(off, streams);
+                        onRuns[run] = iperfThroughWss(on, streams);
+                    } else {
+                        onRuns[run] = iperfThroughWss(on, streams);
+                        offRuns[run] = iperfThroughWss(off, streams);
+                    }
+                    ratios[run] = onRuns[run] / offRuns[run];
+                }
+                StringBuilder pairs = new StringBuilder();
+                for (double ratio : ratios) {
+                    pairs.append(pairs.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", ratio));
+                }
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns), pairs, median(ratios));
+            }
+        }
+        long written = 0;
+        long dropped = 0;
+        try (var files = Files.list(logs)) {
+            for (Path file : files.toList()) {
+                for (String line : Files.readAllLines(file)) {
+                    if (line.startsWith("DROPPED,")) {
+                        dropped += Long.parseLong(line.substring(line.lastIndexOf(',') + 1));
+                    } else {
+                        written++;
+                    }
+                }
+                Files.delete(file);
+            }
+        }
+        Files.delete(logs);
+        System.out.printf(Locale.ROOT, "%nEvent log of the runs with the log on: %d lines written, %d events dropped (%.1f %%).%n",
+                written, dropped, 100.0 * dropped / Math.max(1, written + dropped));
     }
 
     // ---- latency: 64-byte round trips ----

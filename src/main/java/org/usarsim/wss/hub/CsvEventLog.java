@@ -28,7 +28,8 @@ import org.usarsim.wss.protocol.Strengths;
  * The threads that fire events (link threads, once per chunk) only put a small record, stamped
  * with the time of the event, in a bounded queue and never wait: when the queue is full the event
  * is counted as dropped. One writer thread ({@code wss-event-log}) takes what is queued, writes it
- * in order and flushes whenever it has caught up, so the file is current while the log is open.
+ * in order and flushes whenever it has caught up, so the file is current while the log is open;
+ * once caught up, it lets the next events gather for 20 ms before it writes again.
  * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
  * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
  */
@@ -40,6 +41,11 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     /** Events the writer may be behind by: a few seconds of chunks of one fast link. */
     static final int QUEUE_CAPACITY = 65_536;
     private static final int BATCH = 1024;
+    /**
+     * How long the writer lets events gather after the first one it takes: one wake-up and one
+     * write per batch instead of per chunk (each would cost the busy link threads CPU).
+     */
+    private static final long GATHER_MS = 20;
     private static final long CLOSE_WAIT_SECONDS = 10;
 
     /** One event as it will be written: its type, when it happened, its fields. */
@@ -55,6 +61,9 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     private final AtomicLong dropped = new AtomicLong();
     private final Thread writer;
     private final ZoneId zone = ZoneId.systemDefault();
+    /** The writer's last formatted time: events come many to a millisecond. */
+    private long formattedMillis = Long.MIN_VALUE;
+    private String formattedTime;
     private volatile boolean closed;
     /** Set by the writer when the file cannot be written; events are then ignored. */
     private volatile boolean failed;
@@ -97,9 +106,13 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         List<Line> batch = new ArrayList<>(BATCH);
         StringBuilder text = new StringBuilder(64 * BATCH);
         boolean end = false;
+        boolean caughtUp = true;
         try {
             while (!end) {
                 batch.add(queue.take());
+                if (caughtUp && batch.get(0) != END) {
+                    Thread.sleep(GATHER_MS);
+                }
                 queue.drainTo(batch, BATCH - 1);
                 for (Line line : batch) {
                     if (line == END) {
@@ -113,7 +126,8 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
                 if (lost > 0) {
                     format(text, "DROPPED", System.currentTimeMillis(), lost);
                 }
-                write(text, end || queue.isEmpty());
+                caughtUp = queue.isEmpty();
+                write(text, end || caughtUp);
                 text.setLength(0);
             }
         } catch (InterruptedException e) {
@@ -128,7 +142,11 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     private void format(StringBuilder text, String type, long millis, Object... fields) {
-        text.append(type).append(',').append(LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone)));
+        if (millis != formattedMillis) {
+            formattedTime = LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone));
+            formattedMillis = millis;
+        }
+        text.append(type).append(',').append(formattedTime);
         for (Object field : fields) {
             text.append(',').append(field);
         }

@@ -104,8 +104,9 @@ public final class RelayBenchmark {
     }
 
     private double iperfDirect() throws Exception {
-        int port = freePort();
-        Process server = iperfServer(port);
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         try {
             return iperfClient(port);
         } finally {
@@ -114,9 +115,10 @@ public final class RelayBenchmark {
     }
 
     private double iperfThroughSocat(int buffer) throws Exception {
-        int port = freePort();
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         int relay = freePort();
-        Process server = iperfServer(port);
         Process socat = socat(buffer, relay, port);
         try {
             return iperfClient(relay);
@@ -132,8 +134,9 @@ public final class RelayBenchmark {
 
     /** iperf3 with {@code streams} parallel connections through one WSS port: that many links at once. */
     private double iperfThroughWss(WssProcess wss, int streams) throws Exception {
-        int port = freePort();
-        Process server = iperfServer(port);
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", port);
                 ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
             return iperfClient(source.dns("Sink"), streams);
@@ -142,10 +145,25 @@ public final class RelayBenchmark {
         }
     }
 
-    private Process iperfServer(int port) throws Exception {
-        Process server = child("iperf3", "-s", "-1", "-B", "127.0.0.1", "-p", Integer.toString(port));
-        waitListening(port);
-        return server;
+    private record IperfServer(Process process, int port) {
+    }
+
+    /** An iperf3 server on a free port; another if the port was taken meanwhile (its iperf3 then exits). */
+    private IperfServer iperfServer() throws Exception {
+        for (int attempt = 1;; attempt++) {
+            int port = freePort();
+            Process server = child("iperf3", "-s", "-1", "-B", "127.0.0.1", "-p", Integer.toString(port));
+            try {
+                waitListening(port, server);
+                return new IperfServer(server, port);
+            } catch (IOException e) {
+                System.err.printf("  iperf3 -s on port %d: %s%n", port, server.isAlive() ? "not listening after 10 s" : "exited " + server.exitValue());
+                stop(server);
+                if (attempt == 5) {
+                    throw e;
+                }
+            }
+        }
     }
 
     /** MB/s received, from iperf3's JSON. */
@@ -174,6 +192,8 @@ public final class RelayBenchmark {
                 seconds, runs);
         try (WssProcess off = WssProcess.start("wss.eventLog=false");
                 WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
+            iperfThroughWss(off, 8); // unmeasured: both servers warm, as after a while of a real run
+            iperfThroughWss(on, 8);
             System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
             System.out.println("|---|---|---|---|---|");
             for (int streams : new int[] {1, 8}) {
@@ -465,7 +485,7 @@ public final class RelayBenchmark {
     private Process socat(int buffer, int listenPort, int targetPort) throws Exception {
         Process socat = child("socat", "-b", Integer.toString(buffer),
                 "TCP-LISTEN:" + listenPort + ",bind=127.0.0.1,reuseaddr,fork", "TCP:127.0.0.1:" + targetPort);
-        waitListening(listenPort);
+        waitListening(listenPort, socat);
         return socat;
     }
 
@@ -495,17 +515,20 @@ public final class RelayBenchmark {
         }
     }
 
+    /** A port nothing uses, not even a connection in TIME_WAIT (Java binds over those, iperf3 and socat may not). */
     private static int freePort() throws IOException {
-        try (ServerSocket socket = new ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1"))) {
+        try (ServerSocket socket = new ServerSocket()) {
+            socket.setReuseAddress(false);
+            socket.bind(new InetSocketAddress("127.0.0.1", 0), 1);
             return socket.getLocalPort();
         }
     }
 
     /** Waits until something listens on 127.0.0.1:port, reading /proc/net/tcp (a probe connection would disturb iperf3). */
-    private static void waitListening(int port) throws Exception {
+    private static void waitListening(int port, Process process) throws Exception {
         String local = String.format("0100007F:%04X", port);
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (System.nanoTime() < deadline) {
+        while (System.nanoTime() < deadline && process.isAlive()) {
             for (String line : Files.readAllLines(Path.of("/proc/net/tcp"))) {
                 String[] fields = line.trim().split("\\s+");
                 if (fields.length > 3 && fields[1].equals(local) && fields[3].equals("0A")) {

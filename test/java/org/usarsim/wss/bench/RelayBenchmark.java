@@ -190,6 +190,14 @@ public final class RelayBenchmark {
         Path logs = Files.createTempDirectory("wss-bench-event-log");
         System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs, alternating which goes first)%n%n",
                 seconds, runs);
+        try {
+            eventLogPairs(logs);
+        } finally {
+            reportAndDelete(logs);
+        }
+    }
+
+    private void eventLogPairs(Path logs) throws Exception {
         try (WssProcess off = WssProcess.start("wss.eventLog=false");
                 WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
             iperfThroughWss(off, 8); // unmeasured: both servers warm, as after a while of a real run
@@ -217,6 +225,10 @@ public final class RelayBenchmark {
                 System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns), pairs, median(ratios));
             }
         }
+    }
+
+    /** Counts the lines of the event logs and the events they say were dropped, and deletes them. */
+    private static void reportAndDelete(Path logs) throws IOException {
         long written = 0;
         long dropped = 0;
         try (var files = Files.list(logs)) {

@@ -25,7 +25,7 @@ import java.util.regex.Pattern;
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RelayBenchmark [--seconds 5] [--runs 3] [--only NAME]
  * </pre>
- * NAME is one of throughput, latency, split, many.
+ * NAME is one of throughput, latency, split, many, eventlog.
  */
 public final class RelayBenchmark {
 
@@ -68,6 +68,9 @@ public final class RelayBenchmark {
         if (only == null || only.equals("many")) {
             benchmark.manyConnections();
         }
+        if (only == null || only.equals("eventlog")) {
+            benchmark.eventLog();
+        }
         benchmark.killChildren();
         System.exit(0);
     }
@@ -101,8 +104,9 @@ public final class RelayBenchmark {
     }
 
     private double iperfDirect() throws Exception {
-        int port = freePort();
-        Process server = iperfServer(port);
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         try {
             return iperfClient(port);
         } finally {
@@ -111,9 +115,10 @@ public final class RelayBenchmark {
     }
 
     private double iperfThroughSocat(int buffer) throws Exception {
-        int port = freePort();
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         int relay = freePort();
-        Process server = iperfServer(port);
         Process socat = socat(buffer, relay, port);
         try {
             return iperfClient(relay);
@@ -124,25 +129,52 @@ public final class RelayBenchmark {
     }
 
     private double iperfThroughWss(WssProcess wss) throws Exception {
-        int port = freePort();
-        Process server = iperfServer(port);
+        return iperfThroughWss(wss, 1);
+    }
+
+    /** iperf3 with {@code streams} parallel connections through one WSS port: that many links at once. */
+    private double iperfThroughWss(WssProcess wss, int streams) throws Exception {
+        IperfServer iperf = iperfServer();
+        int port = iperf.port();
+        Process server = iperf.process();
         try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", port);
                 ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
-            return iperfClient(source.dns("Sink"));
+            return iperfClient(source.dns("Sink"), streams);
         } finally {
             stop(server);
         }
     }
 
-    private Process iperfServer(int port) throws Exception {
-        Process server = child("iperf3", "-s", "-1", "-B", "127.0.0.1", "-p", Integer.toString(port));
-        waitListening(port);
-        return server;
+    private record IperfServer(Process process, int port) {
+    }
+
+    /** An iperf3 server on a free port; another if the port was taken meanwhile (its iperf3 then exits). */
+    private IperfServer iperfServer() throws Exception {
+        for (int attempt = 1;; attempt++) {
+            int port = freePort();
+            Process server = child("iperf3", "-s", "-1", "-B", "127.0.0.1", "-p", Integer.toString(port));
+            try {
+                waitListening(port, server);
+                return new IperfServer(server, port);
+            } catch (IOException e) {
+                System.err.printf("  iperf3 -s on port %d: %s%n", port, server.isAlive() ? "not listening after 10 s" : "exited " + server.exitValue());
+                stop(server);
+                if (attempt == 5) {
+                    throw e;
+                }
+            }
+        }
     }
 
     /** MB/s received, from iperf3's JSON. */
     private double iperfClient(int port) throws Exception {
-        Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J");
+        return iperfClient(port, 1);
+    }
+
+    /** MB/s received by all of {@code streams} parallel connections together, from iperf3's JSON. */
+    private double iperfClient(int port, int streams) throws Exception {
+        Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J",
+                "-P", Integer.toString(streams));
         String json = new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         client.waitFor(seconds + 30L, TimeUnit.SECONDS);
         Matcher matcher = RECEIVED_BPS.matcher(json);
@@ -150,6 +182,70 @@ public final class RelayBenchmark {
             throw new IOException("no iperf3 result: " + json);
         }
         return Double.parseDouble(matcher.group(1)) / 8 / 1e6;
+    }
+
+    // ---- the event log: the same streams with wss.eventLog off and on ----
+
+    private void eventLog() throws Exception {
+        Path logs = Files.createTempDirectory("wss-bench-event-log");
+        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs, alternating which goes first)%n%n",
+                seconds, runs);
+        try {
+            eventLogPairs(logs);
+        } finally {
+            reportAndDelete(logs);
+        }
+    }
+
+    private void eventLogPairs(Path logs) throws Exception {
+        try (WssProcess off = WssProcess.start("wss.eventLog=false");
+                WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
+            iperfThroughWss(off, 8); // unmeasured: both servers warm, as after a while of a real run
+            iperfThroughWss(on, 8);
+            System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
+            System.out.println("|---|---|---|---|---|");
+            for (int streams : new int[] {1, 8}) {
+                double[] offRuns = new double[runs];
+                double[] onRuns = new double[runs];
+                double[] ratios = new double[runs];
+                for (int run = 0; run < runs; run++) {
+                    if (run % 2 == 0) {
+                        offRuns[run] = iperfThroughWss(off, streams);
+                        onRuns[run] = iperfThroughWss(on, streams);
+                    } else {
+                        onRuns[run] = iperfThroughWss(on, streams);
+                        offRuns[run] = iperfThroughWss(off, streams);
+                    }
+                    ratios[run] = onRuns[run] / offRuns[run];
+                }
+                StringBuilder pairs = new StringBuilder();
+                for (double ratio : ratios) {
+                    pairs.append(pairs.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", ratio));
+                }
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns), pairs, median(ratios));
+            }
+        }
+    }
+
+    /** Counts the lines of the event logs and the events they say were dropped, and deletes them. */
+    private static void reportAndDelete(Path logs) throws IOException {
+        long written = 0;
+        long dropped = 0;
+        try (var files = Files.list(logs)) {
+            for (Path file : files.toList()) {
+                for (String line : Files.readAllLines(file)) {
+                    if (line.startsWith("DROPPED,")) {
+                        dropped += Long.parseLong(line.substring(line.lastIndexOf(',') + 1));
+                    } else {
+                        written++;
+                    }
+                }
+                Files.delete(file);
+            }
+        }
+        Files.delete(logs);
+        System.out.printf(Locale.ROOT, "%nEvent log of the runs with the log on: %d lines written, %d events dropped (%.1f %%).%n",
+                written, dropped, 100.0 * dropped / Math.max(1, written + dropped));
     }
 
     // ---- latency: 64-byte round trips ----
@@ -401,7 +497,7 @@ public final class RelayBenchmark {
     private Process socat(int buffer, int listenPort, int targetPort) throws Exception {
         Process socat = child("socat", "-b", Integer.toString(buffer),
                 "TCP-LISTEN:" + listenPort + ",bind=127.0.0.1,reuseaddr,fork", "TCP:127.0.0.1:" + targetPort);
-        waitListening(listenPort);
+        waitListening(listenPort, socat);
         return socat;
     }
 
@@ -431,17 +527,20 @@ public final class RelayBenchmark {
         }
     }
 
+    /** A port nothing uses, not even a connection in TIME_WAIT (Java binds over those, iperf3 and socat may not). */
     private static int freePort() throws IOException {
-        try (ServerSocket socket = new ServerSocket(0, 1, java.net.InetAddress.getByName("127.0.0.1"))) {
+        try (ServerSocket socket = new ServerSocket()) {
+            socket.setReuseAddress(false);
+            socket.bind(new InetSocketAddress("127.0.0.1", 0), 1);
             return socket.getLocalPort();
         }
     }
 
     /** Waits until something listens on 127.0.0.1:port, reading /proc/net/tcp (a probe connection would disturb iperf3). */
-    private static void waitListening(int port) throws Exception {
+    private static void waitListening(int port, Process process) throws Exception {
         String local = String.format("0100007F:%04X", port);
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-        while (System.nanoTime() < deadline) {
+        while (System.nanoTime() < deadline && process.isAlive()) {
             for (String line : Files.readAllLines(Path.of("/proc/net/tcp"))) {
                 String[] fields = line.trim().split("\\s+");
                 if (fields.length > 3 && fields[1].equals(local) && fields[3].equals("0A")) {

@@ -1,14 +1,25 @@
 package org.usarsim.wss.hub;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.StringWriter;
+import java.io.Writer;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import org.usarsim.wss.model.WssEventListener;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
@@ -18,7 +29,7 @@ class EventLogTest {
     @TempDir
     Path dir;
 
-    /** Every line but DATA_SENT is flushed at once, so the file can be read while the log is open. */
+    /** The writer flushes whenever it has caught up, so the file can be read while the log is open. */
     private static boolean logged(CsvEventLog log, String text) {
         try {
             return Files.readString(log.file()).contains(text);
@@ -72,5 +83,137 @@ class EventLogTest {
                 }
             }
         }
+    }
+
+    /** A writer that blocks in every write until released, as a disk that hangs; what it was given is in {@link #text}. */
+    private static final class StuckWriter extends Writer {
+        final CountDownLatch stuck = new CountDownLatch(1);
+        final CountDownLatch release = new CountDownLatch(1);
+        final StringWriter text = new StringWriter();
+        volatile boolean closed;
+
+        @Override
+        public void write(char[] chars, int offset, int length) throws IOException {
+            stuck.countDown();
+            try {
+                if (!release.await(30, TimeUnit.SECONDS)) {
+                    throw new IOException("never released");
+                }
+            } catch (InterruptedException e) {
+                throw new IOException(e);
+            }
+            text.write(chars, offset, length);
+        }
+
+        @Override
+        public void flush() {
+        }
+
+        @Override
+        public void close() {
+            closed = true;
+        }
+
+        List<String> lines() {
+            String all = text.toString();
+            return all.isEmpty() ? List.of() : List.of(all.split(System.lineSeparator()));
+        }
+    }
+
+    /** Counts the events the CSV log writes a line for. */
+    private static final class EventCount implements WssEventListener {
+        final AtomicLong count = new AtomicLong();
+        final AtomicLong terminated = new AtomicLong();
+
+        @Override
+        public void robotRegistered(String robot, String address, List<Integer> ports) {
+            count.incrementAndGet();
+        }
+
+        @Override
+        public void robotDeregistered(String robot) {
+            count.incrementAndGet();
+        }
+
+        @Override
+        public void connectionEstablished(String from, String to, int targetPort) {
+            count.incrementAndGet();
+        }
+
+        @Override
+        public void connectionTerminated(String from, String to, int targetPort) {
+            count.incrementAndGet();
+            terminated.incrementAndGet();
+        }
+
+        @Override
+        public void dataSent(String from, String to, int bytes) {
+            count.incrementAndGet();
+        }
+    }
+
+    @Test
+    void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
+        StuckWriter writer = new StuckWriter();
+        CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8);
+        EventCount events = new EventCount();
+        try (TestHub server = new TestHub(new ScriptedModel(), true, 1024)) {
+            server.hub.addListener(log);
+            server.hub.addListener(events);
+            try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot()) {
+                ServerSocket r1Accepts = r1.listen();
+                r1.init("R1", r1Accepts.getLocalPort());
+                r2.init("R2", 6000);
+                assertTrue(writer.stuck.await(5, TimeUnit.SECONDS), "the writer is writing its first batch");
+                // 256 chunks of 1 KiB at least, each an event, go through while the writer cannot write one.
+                byte[] data = Sockets.randomBytes(256 * 1024, 11);
+                try (Socket out = r2.connect(r2.dns("R1", 0)); Socket in = r1Accepts.accept()) {
+                    out.getOutputStream().write(data);
+                    out.shutdownOutput();
+                    InputStream received = in.getInputStream();
+                    assertArrayEquals(data, received.readAllBytes());
+                }
+                Wait.until("the link's end is fired", () -> events.terminated.get() == 1);
+                assertEquals("", writer.text.toString(), "the writer was stuck all along");
+                long fired = events.count.get();
+                assertTrue(fired > 256, "events fired: " + fired);
+
+                writer.release.countDown();
+                log.close();
+                assertTrue(writer.closed, "close waits until the file is closed");
+                List<String> lines = writer.lines();
+                long written = lines.stream().filter(line -> !line.startsWith("DROPPED,")).count();
+                long dropped = lines.stream().filter(line -> line.startsWith("DROPPED,"))
+                        .peek(line -> assertTrue(line.matches("DROPPED,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},[1-9]\\d*"), line))
+                        .mapToLong(line -> Long.parseLong(line.substring(line.lastIndexOf(',') + 1))).sum();
+                assertTrue(dropped > 0, String.join("\n", lines));
+                assertEquals(fired, written + dropped, "every event is either written or counted as dropped:\n" + String.join("\n", lines));
+                assertTrue(lines.get(0).startsWith("REGISTERED,"), lines.get(0));
+            }
+        }
+    }
+
+    @Test
+    void closeWritesEverythingQueuedAndNothingAfter() throws Exception {
+        StuckWriter writer = new StuckWriter();
+        CsvEventLog log = new CsvEventLog(dir.resolve("queued.txt"), writer, 1000);
+        log.robotRegistered("R1", "127.0.0.1", List.of(5000, 5001));
+        assertTrue(writer.stuck.await(5, TimeUnit.SECONDS), "the writer is writing the first line");
+        for (int i = 1; i <= 500; i++) {
+            log.dataSent("R1", "R2", i);
+        }
+        writer.release.countDown();
+        log.close();
+        log.dataSent("R1", "R2", 501);
+        log.close();
+
+        List<String> lines = writer.lines();
+        assertTrue(writer.closed);
+        assertEquals(501, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).matches("REGISTERED,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},R1,127\\.0\\.0\\.1,5000:5001"), lines.get(0));
+        for (int i = 1; i <= 500; i++) {
+            assertTrue(lines.get(i).matches("DATA_SENT,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},R1,R2," + i), lines.get(i));
+        }
+        assertFalse(lines.stream().anyMatch(line -> line.startsWith("DROPPED,")));
     }
 }

@@ -6,10 +6,16 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.time.LocalDateTime;
-import java.time.LocalTime;
+import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
+import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import java.util.stream.Collectors;
 import org.usarsim.wss.model.WssEventListener;
@@ -18,22 +24,58 @@ import org.usarsim.wss.protocol.Strengths;
 /**
  * The original's "Enable Logging" file: one CSV line per event in
  * {@code log-yyyy.MM.dd-HH.mm.ss.SSS.txt}, with the time of day as {@code HH:mm:ss.SSS}.
- * Every line but DATA_SENT is flushed at once; DATA_SENT lines (one per chunk) are flushed with
- * the next other event, when the buffer fills, or at close.
+ * <p>
+ * The threads that fire events (link threads, once per chunk) only put a small record, stamped
+ * with the time of the event, in a bounded queue and never wait: when the queue is full the event
+ * is counted as dropped. One writer thread ({@code wss-event-log}) takes what is queued, writes it
+ * in order and flushes whenever it has caught up, so the file is current while the log is open;
+ * once caught up, it lets the next events gather for 20 ms before it writes again.
+ * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
+ * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
  */
 public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     private static final Logger LOG = Logger.getLogger(CsvEventLog.class.getName());
     private static final DateTimeFormatter FILE_TIME = DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss.SSS");
     private static final DateTimeFormatter LINE_TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
+    /** Events the writer may be behind by: a few seconds of chunks of one fast link. */
+    static final int QUEUE_CAPACITY = 65_536;
+    private static final int BATCH = 1024;
+    /**
+     * How long the writer lets events gather after the first one it takes: one wake-up and one
+     * write per batch instead of per chunk (each would cost the busy link threads CPU).
+     */
+    private static final long GATHER_MS = 20;
+    private static final long CLOSE_WAIT_SECONDS = 10;
+
+    /** One event as it will be written: its type, when it happened, its fields. */
+    private record Line(String type, long millis, Object... fields) {
+    }
+
+    /** Queued by {@link #close}: the writer stops after it. */
+    private static final Line END = new Line("END", 0);
 
     private final Path file;
     private final Writer out;
-    private boolean failed;
+    private final BlockingQueue<Line> queue;
+    private final AtomicLong dropped = new AtomicLong();
+    private final Thread writer;
+    private final ZoneId zone = ZoneId.systemDefault();
+    /** The writer's last formatted time: events come many to a millisecond. */
+    private long formattedMillis = Long.MIN_VALUE;
+    private String formattedTime;
+    private volatile boolean closed;
+    /** Set by the writer when the file cannot be written; events are then ignored. */
+    private volatile boolean failed;
 
-    private CsvEventLog(Path file, Writer out) {
+    /** The log writing to {@code out} (named {@code file}), behind a queue of {@code capacity} events. */
+    CsvEventLog(Path file, Writer out, int capacity) {
         this.file = file;
         this.out = out;
+        this.queue = new ArrayBlockingQueue<>(capacity);
+        this.writer = new Thread(this::writeUntilClosed, "wss-event-log");
+        writer.setDaemon(true);
+        writer.start();
     }
 
     /** Creates a new log file in the directory (created if missing), named by the time now. */
@@ -42,23 +84,81 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         Path file = directory.resolve("log-" + FILE_TIME.format(LocalDateTime.now()) + ".txt");
         BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
         LOG.info("writing the event log to " + file.toAbsolutePath());
-        return new CsvEventLog(file, out);
+        return new CsvEventLog(file, out, QUEUE_CAPACITY);
     }
 
     public Path file() {
         return file;
     }
 
-    private synchronized void write(String type, boolean flush, Object... fields) {
+    /** Any thread: queues the event, or counts it as dropped when the writer is too far behind. Never waits. */
+    private void event(String type, Object... fields) {
+        if (closed || failed) {
+            return;
+        }
+        if (!queue.offer(new Line(type, System.currentTimeMillis(), fields))) {
+            dropped.incrementAndGet();
+        }
+    }
+
+    /** The writer thread: writes batches in order until {@link #END}, then closes the file. */
+    private void writeUntilClosed() {
+        List<Line> batch = new ArrayList<>(BATCH);
+        StringBuilder text = new StringBuilder(64 * BATCH);
+        boolean end = false;
+        boolean caughtUp = true;
+        try {
+            while (!end) {
+                batch.add(queue.take());
+                if (caughtUp && batch.get(0) != END) {
+                    Thread.sleep(GATHER_MS);
+                }
+                queue.drainTo(batch, BATCH - 1);
+                for (Line line : batch) {
+                    if (line == END) {
+                        end = true;
+                        break;
+                    }
+                    format(text, line.type, line.millis, line.fields);
+                }
+                batch.clear();
+                long lost = dropped.getAndSet(0);
+                if (lost > 0) {
+                    format(text, "DROPPED", System.currentTimeMillis(), lost);
+                }
+                caughtUp = queue.isEmpty();
+                write(text, end || caughtUp);
+                text.setLength(0);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            try {
+                out.close();
+            } catch (IOException e) {
+                LOG.warning("closing the event log " + file + ": " + e.getMessage());
+            }
+        }
+    }
+
+    private void format(StringBuilder text, String type, long millis, Object... fields) {
+        if (millis != formattedMillis) {
+            formattedTime = LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone));
+            formattedMillis = millis;
+        }
+        text.append(type).append(',').append(formattedTime);
+        for (Object field : fields) {
+            text.append(',').append(field);
+        }
+        text.append(System.lineSeparator());
+    }
+
+    private void write(StringBuilder text, boolean flush) {
         if (failed) {
             return;
         }
-        StringBuilder line = new StringBuilder(64).append(type).append(',').append(LINE_TIME.format(LocalTime.now()));
-        for (Object field : fields) {
-            line.append(',').append(field);
-        }
         try {
-            out.write(line.append(System.lineSeparator()).toString());
+            out.append(text);
             if (flush) {
                 out.flush();
             }
@@ -70,50 +170,66 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     @Override
     public void robotRegistered(String robot, String address, List<Integer> ports) {
-        write("REGISTERED", true, robot, address, ports.stream().map(String::valueOf).collect(Collectors.joining(":")));
+        event("REGISTERED", robot, address, ports.stream().map(String::valueOf).collect(Collectors.joining(":")));
     }
 
     @Override
     public void robotDeregistered(String robot) {
-        write("DEREGISTERED", true, robot);
+        event("DEREGISTERED", robot);
     }
 
     @Override
     public void robotOutOfBattery(String robot) {
-        write("OUT_OF_BATTERY", true, robot);
+        event("OUT_OF_BATTERY", robot);
     }
 
     @Override
     public void connectionOutOfRange(String from, String to, double strength, double distance) {
-        write("OUT_OF_RANGE", true, from, to, Strengths.format(strength), Strengths.format(distance));
+        event("OUT_OF_RANGE", from, to, Strengths.format(strength), Strengths.format(distance));
     }
 
     @Override
     public void connectionInRange(String from, String to) {
-        write("IN_RANGE", true, from, to);
+        event("IN_RANGE", from, to);
     }
 
     @Override
     public void connectionEstablished(String from, String to, int targetPort) {
-        write("CON_ESTABLISHED", true, from, to, targetPort);
+        event("CON_ESTABLISHED", from, to, targetPort);
     }
 
     @Override
     public void connectionTerminated(String from, String to, int targetPort) {
-        write("CON_TERMINATED", true, from, to, targetPort);
+        event("CON_TERMINATED", from, to, targetPort);
     }
 
     @Override
     public void dataSent(String from, String to, int bytes) {
-        write("DATA_SENT", false, from, to, bytes);
+        event("DATA_SENT", from, to, bytes);
     }
 
+    /**
+     * Stops taking events, waits (at most 10 s, for a disk that hangs) until the writer has
+     * written everything queued before, with the count of any dropped, and closed the file.
+     */
     @Override
-    public synchronized void close() {
+    public void close() {
+        synchronized (this) {
+            if (closed) {
+                return;
+            }
+            closed = true;
+        }
         try {
-            out.close();
-        } catch (IOException e) {
-            LOG.warning("closing the event log " + file + ": " + e.getMessage());
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(CLOSE_WAIT_SECONDS);
+            if (queue.offer(END, CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
+                writer.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        if (writer.isAlive()) {
+            LOG.warning("the event log " + file + " was still being written " + CLOSE_WAIT_SECONDS + " s after the server stopped");
         }
     }
 }

@@ -522,7 +522,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 .thenComparingInt(HubSnapshot.PortEntry::targetPort));
         linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
                 .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
-        return new HubSnapshot(robotEntries, portEntries, linkEntries);
+        return new HubSnapshot(robotEntries, portEntries, linkEntries, List.of());
     }
 
     // ---- port memory ----

@@ -6,14 +6,15 @@ import java.util.List;
  * The hub's state at one instant, taken under its lock: what a window that starts observing late,
  * or checks itself, shows. Each list is sorted (robots by name, ports and links by from, to, port).
  */
-public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<LinkEntry> links) {
+public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<LinkEntry> links, List<PairEntry> pairs) {
 
-    public static final HubSnapshot EMPTY = new HubSnapshot(List.of(), List.of(), List.of());
+    public static final HubSnapshot EMPTY = new HubSnapshot(List.of(), List.of(), List.of(), List.of());
 
     public HubSnapshot {
         robots = List.copyOf(robots);
         ports = List.copyOf(ports);
         links = List.copyOf(links);
+        pairs = List.copyOf(pairs);
     }
 
     /** A registered robot: its name, the address its control connection came from, its accepting ports. */
@@ -29,5 +30,18 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
 
     /** An established connection through a WSS port, with the WSS's outgoing port to the target. */
     public record LinkEntry(String from, String to, int targetPort, int wssPort, int outgoingPort) {
+    }
+
+    /**
+     * What is known of one pair of robots (names in ascending order, {@code first} before
+     * {@code second}) since it was first seen: its state, the model's strength first -> second
+     * (dBm, NaN unknown) and distance (m, NaN unknown), bytes forwarded and current throughput
+     * (bytes/s) each way, connections opened, breaks and resumes, the share of time up (0..1) and
+     * why its last connection closed (null before any closed).
+     */
+    public record PairEntry(String first, String second, PairState state, double strength, double distance,
+                            long bytesFirstToSecond, long bytesSecondToFirst,
+                            double rateFirstToSecond, double rateSecondToFirst,
+                            long connections, long breaks, long resumes, double upShare, String lastClose) {
     }
 }

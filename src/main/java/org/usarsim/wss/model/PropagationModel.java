@@ -1,6 +1,7 @@
 package org.usarsim.wss.model;
 
 import java.util.List;
+import java.util.Optional;
 
 /**
  * A propagation model decides, for every pair of robots, the signal strength between them and
@@ -76,4 +77,20 @@ public interface PropagationModel {
 
     /** Whether {@code from} may open a connection to {@code to} now. */
     boolean connectionIsPossibleForPair(String from, String to);
+
+    /**
+     * Where the robot is, as the model last learned it (the map and the per-link statistics show
+     * it). Empty when the model does not know positions (Noop) or the robot is not in the simulator.
+     */
+    default Optional<Position> positionOf(String robot) {
+        return Optional.empty();
+    }
+
+    /**
+     * The distance in metres from {@code from} at which the strength to {@code to} reaches the
+     * model's cutoff (the map draws it as a circle). NaN when the model has no such range.
+     */
+    default double rangeFor(String from, String to) {
+        return Double.NaN;
+    }
 }

@@ -1,0 +1,13 @@
+package org.usarsim.wss.hub;
+
+/** Where a pair of robots stands: as the model decides it, or as an operator forced it. */
+public enum PairState {
+    /** The model lets the pair talk. */
+    UP,
+    /** The model broke the pair (out of range, say). */
+    BROKEN,
+    /** An operator forced the pair down, whatever the model says. */
+    FORCED_DOWN,
+    /** An operator forced the pair up, whatever the model says. */
+    FORCED_UP
+}

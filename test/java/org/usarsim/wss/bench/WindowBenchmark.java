@@ -130,6 +130,16 @@ public final class WindowBenchmark {
                     }
 
                     @Override
+                    public void force(String robotA, String robotB, org.usarsim.wss.hub.Force force) {
+                        hub.force(robotA, robotB, force);
+                    }
+
+                    @Override
+                    public void release(String robotA, String robotB) {
+                        hub.release(robotA, robotB);
+                    }
+
+                    @Override
                     public void stop() {
                         hub.close();
                     }

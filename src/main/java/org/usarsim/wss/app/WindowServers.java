@@ -2,6 +2,7 @@ package org.usarsim.wss.app;
 
 import java.util.concurrent.atomic.AtomicReference;
 import org.usarsim.wss.gui.Servers;
+import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
@@ -46,6 +47,16 @@ final class WindowServers implements Servers {
             @Override
             public HubSnapshot snapshot() {
                 return server.hub().snapshot();
+            }
+
+            @Override
+            public void force(String robotA, String robotB, Force force) {
+                server.hub().force(robotA, robotB, force);
+            }
+
+            @Override
+            public void release(String robotA, String robotB) {
+                server.hub().release(robotA, robotB);
             }
 
             @Override

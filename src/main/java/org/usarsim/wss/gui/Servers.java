@@ -1,5 +1,6 @@
 package org.usarsim.wss.gui;
 
+import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.WssEventListener;
@@ -28,6 +29,12 @@ public interface Servers {
 
         /** Its robots, ports and links at one instant (takes the hub's lock briefly: never on the event thread). */
         HubSnapshot snapshot();
+
+        /** Forces the pair down or up until {@link #release} (takes the hub's lock: never on the event thread). */
+        void force(String robotA, String robotB, Force force);
+
+        /** Gives the pair back to the model (never on the event thread). */
+        void release(String robotA, String robotB);
 
         /** Stops it as SIGTERM does: every socket closed, the event log closed. */
         void stop();

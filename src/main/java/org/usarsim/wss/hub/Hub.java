@@ -497,6 +497,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
+    // ---- forced pairs: an operator's hand on the switch (issue 12) ----
+
+    /**
+     * Forces the pair down or up: a forced state wins over the model's verdict until
+     * {@link #release}. Forced down stops the pair's ports and closes its connections as a break
+     * does; forced up lets them listen whatever the model says.
+     */
+    public void force(String robotA, String robotB, Force force) {
+        throw new UnsupportedOperationException("forcing a pair is not there yet (issue 12)");
+    }
+
+    /** Gives the pair back to the model: its verdict counts again. */
+    public void release(String robotA, String robotB) {
+        throw new UnsupportedOperationException("releasing a pair is not there yet (issue 12)");
+    }
+
     /** The robots, the WSS ports and the established links, all at one instant. */
     public HubSnapshot snapshot() {
         List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();

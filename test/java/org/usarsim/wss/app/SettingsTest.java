@@ -89,6 +89,15 @@ class SettingsTest {
     }
 
     @Test
+    void theWindowIsHandedOnlyTheModelKeysTheFileSets() throws Exception {
+        Properties file = props("wss.model", "DistanceOnlyPropagationModel");
+        file.setProperty("wss.port", "0");
+        file.setProperty("distance.n", " 3 ");
+        file.setProperty("usarsim.port", "7436");
+        assertEquals(Map.of("distance.n", "3", "usarsim.port", "7436"), Settings.of(file, "t").modelKeysSetBy(file).asMap());
+    }
+
+    @Test
     void defaultTypedValues() {
         Settings settings = Settings.defaults();
         assertEquals("NoopPropagationModel", settings.modelName());

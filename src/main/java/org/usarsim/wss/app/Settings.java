@@ -249,6 +249,16 @@ public final class Settings {
         }
     }
 
+    /**
+     * The model keys (not {@code wss.*}) that {@code file}, the properties these settings were read
+     * from, sets, with their checked values: what the window puts over the stored model settings.
+     */
+    ModelSettings modelKeysSetBy(Properties file) {
+        Map<String, String> set = new LinkedHashMap<>();
+        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
+        return new ModelSettings(set);
+    }
+
     /** What the chosen model is handed: the value of each key it declares; none when there is no such model. */
     ModelSettings modelSettings() {
         PropagationModel model = catalog.find(modelName());

@@ -250,6 +250,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         return robot != null && robot.session() == session;
     }
 
+    /** Whether a control connection from this address may use the operator command (wss.operators). */
+    boolean isOperator(InetAddress address) {
+        return config.operators().contains(address);
+    }
+
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */
     OptionalDouble signalStrength(String from, String to) {
         synchronized (lock) {

@@ -1,6 +1,8 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
+import java.util.Collections;
+import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
 import org.usarsim.wss.model.RobotPair;
@@ -31,7 +33,7 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
 
     public HubConfig {
         operators = Set.copyOf(operators);
-        forced = Map.copyOf(forced);
+        forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
     }
 
     /** The operator at 127.0.0.1 only, and no pair forced. */

@@ -165,6 +165,15 @@ class ForceTest {
         assertPasses(connectR1ToR2(), "a connection the model forbids");
         assertEquals(toR1, r2.dns("R1", 0));
 
+        // Forced up, but only while both robots are registered.
+        r2.control.close();
+        Wait.until("R2 left", () -> !links.getListOfRegisteredRobots().contains("R2"));
+        assertRefused(r1, toR2, "R2 gone, though forced up");
+        assertPasses(conn, "the established link lives on, as any link of a robot that left");
+        TestRobot back = closing(server.robotAt("127.0.0.2"));
+        back.init("R2", r2Accepts.getLocalPort());
+        assertPasses(connectR1ToR2(), "R2 back: forced up again, though the model still forbids it");
+
         // Another pair, forced up, broken and forbidden by the model from the start of its link.
         TestRobot r2b = closing(server.robotAt("127.0.0.3"));
         ServerSocket r2bAccepts = r2b.initAccepting("R2b");

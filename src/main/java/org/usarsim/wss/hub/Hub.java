@@ -89,7 +89,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * @throws ModelStartException when the model will not start; nothing is left listening
      */
     public void start() throws IOException, ModelStartException {
-        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force));
         controlListener = new ControlListener(this, new InetSocketAddress(config.bindAddress(), config.controlPort()));
         try {
             model.setRobotLinkModel(this);
@@ -107,6 +106,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 throw new IOException("stopped while starting");
             }
         }
+        // Before the first robot can come; a start that failed forced nothing.
+        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force));
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());

@@ -196,15 +196,16 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
             return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
         }
         String state = command.value("State");
-        switch (state == null ? "" : state.toLowerCase(Locale.ROOT)) {
+        String wanted = state == null ? "" : state.toLowerCase(Locale.ROOT);
+        if (!List.of("down", "up", "model").contains(wanted)) {
+            return Replies.error(Replies.STATE_MUST_BE_DOWN_UP_OR_MODEL);
+        }
+        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state); // who, before what it does
+        switch (wanted) {
             case "down" -> hub.force(first, second, Force.DOWN);
             case "up" -> hub.force(first, second, Force.UP);
-            case "model" -> hub.release(first, second);
-            default -> {
-                return Replies.error(Replies.STATE_MUST_BE_DOWN_UP_OR_MODEL);
-            }
+            default -> hub.release(first, second);
         }
-        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state);
         return Replies.forceOk();
     }
 

@@ -19,7 +19,12 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
+import java.util.Random;
 import java.util.Set;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -226,6 +231,56 @@ class ForceTest {
         assertPasses(connectR1ToR2(), "released from down: the model allows");
         assertTrue(links.breakConnectionsForPair("R1", "R2"), "the model's next poll breaks the pair");
         assertRefused(r1, toR2, "the model's break after the release");
+    }
+
+    /**
+     * An operator and the model change the pair at once, from two threads, many times; after
+     * each round the pair's ports are as the last word of each says (forced beats the model),
+     * in the hub's snapshot and on the wire: no state lost in a race.
+     */
+    @Test
+    void theOperatorAndTheModelRacingLeaveThePairAsTheirLastWordsSay() throws Exception {
+        ExecutorService threads = Executors.newFixedThreadPool(2);
+        try {
+            Random random = new Random(12);
+            for (int round = 0; round < 20; round++) {
+                int[] operatorOps = random.ints(200, 0, 3).toArray();
+                int[] modelOps = random.ints(200, 0, 2).toArray();
+                Future<?> operator = threads.submit(() -> {
+                    for (int op : operatorOps) {
+                        switch (op) {
+                            case 0 -> hub.force("R1", "R2", Force.DOWN);
+                            case 1 -> hub.force("R2", "R1", Force.UP);
+                            default -> hub.release("R1", "R2");
+                        }
+                    }
+                });
+                Future<?> theModel = threads.submit(() -> {
+                    for (int op : modelOps) {
+                        if (op == 0) {
+                            links.breakConnectionsForPair("R1", "R2");
+                        } else {
+                            links.resumeConnectionsForPair("R2", "R1");
+                        }
+                    }
+                });
+                operator.get(10, TimeUnit.SECONDS);
+                theModel.get(10, TimeUnit.SECONDS);
+                int lastForce = operatorOps[operatorOps.length - 1];
+                boolean modelUp = modelOps[modelOps.length - 1] == 1;
+                boolean talks = lastForce == 1 || (lastForce == 2 && modelUp);
+                String state = "round " + round + ": operator " + List.of("down", "up", "released").get(lastForce)
+                        + ", model " + (modelUp ? "resumed" : "broke");
+                assertEquals(talks, listening(toR2) && listening(toR1), state);
+                if (talks) {
+                    assertPasses(connectR1ToR2(), state);
+                } else {
+                    assertRefused(r1, toR2, state);
+                }
+            }
+        } finally {
+            threads.shutdownNow();
+        }
     }
 
     @Test

@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
+import java.net.UnknownHostException;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -28,8 +29,16 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
         boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
         Set<InetAddress> operators, Map<RobotPair, Force> forced) {
 
-    /** The operators when none are configured: this machine's 127.0.0.1. */
-    public static final Set<InetAddress> LOCAL_OPERATOR = Set.of(InetAddress.getLoopbackAddress());
+    /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
+    public static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
+
+    private static InetAddress ipv4Loopback() {
+        try {
+            return InetAddress.getByAddress(new byte[] {127, 0, 0, 1});
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("four bytes are an IPv4 address", e);
+        }
+    }
 
     public HubConfig {
         operators = Set.copyOf(operators);

@@ -445,14 +445,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
-            if (forcedPairs.of(pair) != Force.UP) { // forced up: the break is only remembered, for the release
-                for (WssPort port : ports.between(pair)) {
-                    if (port.stopListening()) {
-                        changed = true;
-                        portEvents.add(listeningEvent(port));
-                    }
-                    links.addAll(port.links());
+            // Forced up: the break is only remembered, for the release.
+            for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
+                if (port.stopListening()) {
+                    changed = true;
+                    portEvents.add(listeningEvent(port));
                 }
+                links.addAll(port.links());
             }
         }
         links.forEach(Link::close);

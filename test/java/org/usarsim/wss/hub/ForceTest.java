@@ -16,7 +16,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.Random;
@@ -73,14 +72,7 @@ class ForceTest {
 
     @AfterEach
     void stop() {
-        Collections.reverse(toClose);
-        for (AutoCloseable closeable : toClose) {
-            try {
-                closeable.close();
-            } catch (Exception ignored) {
-                // closed already
-            }
-        }
+        Sockets.closeAllNewestFirst(toClose);
         server.close();
     }
 

@@ -10,6 +10,7 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
@@ -25,7 +26,7 @@ import org.usarsim.wss.model.WssEventListener;
  * The server: the registry of robots, their WSS ports and the links through them. Control
  * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
  *
- * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
+ * <p>One lock guards the registry, the ports and the broken and forced pairs. The model is never called
  * while it is held (a model may call back in from its own thread), and no I/O but binding and
  * closing server sockets, and the non-blocking connect that starts a port's drain, happens under
  * it: a link's sockets are opened before it is taken ({@link #accepted}).
@@ -55,6 +56,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
     private final Set<RobotPair> broken = new HashSet<>();
+    /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
+    private final ForcedPairs forcedPairs = new ForcedPairs();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -103,6 +106,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 throw new IOException("stopped while starting");
             }
         }
+        // Before the first robot can come; a start that failed forced nothing.
+        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force));
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());
@@ -244,6 +249,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private boolean isSessionOf(String name, ControlSession session) {
         RegisteredRobot robot = robots.get(name);
         return robot != null && robot.session() == session;
+    }
+
+    /** Whether a control connection from this address may use the operator command (wss.operators). */
+    boolean isOperator(InetAddress address) {
+        return config.operators().contains(address);
     }
 
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */
@@ -390,8 +400,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return "the connection came from " + peer.getHostAddress() + " but " + key.from()
                     + " registered from " + source.address().getHostAddress();
         }
-        if (!allowed || broken.contains(key.pair())) {
-            return model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
+        if (!forcedPairs.allows(key.pair(), allowed && !broken.contains(key.pair()))) {
+            return forcedPairs.of(key.pair()) == Force.DOWN ? key.pair() + " is forced down"
+                    : model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
         }
         return null;
     }
@@ -434,7 +445,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
-            for (WssPort port : ports.between(pair)) {
+            // Forced up: the break is only remembered, for the release.
+            for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
                 if (port.stopListening()) {
                     changed = true;
                     portEvents.add(listeningEvent(port));
@@ -501,16 +513,88 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /**
      * Forces the pair down or up: a forced state wins over the model's verdict until
-     * {@link #release}. Forced down stops the pair's ports and closes its connections as a break
-     * does; forced up lets them listen whatever the model says.
+     * {@link #release} ({@link ForcedPairs}). Forced down stops the pair's ports and closes its
+     * connections as a break does, and the model's resume does not reopen them; forced up lets
+     * them listen (where both robots are registered) and forwards their connections whatever the
+     * model breaks or forbids. The names need not be registered: the state holds for the pair
+     * whenever its robots come, leave and come back.
+     *
+     * @throws IllegalArgumentException when the names are empty or the same
      */
     public void force(String robotA, String robotB, Force force) {
-        throw new UnsupportedOperationException("forcing a pair is not there yet (issue 12)");
+        RobotPair pair = pairOf(robotA, robotB);
+        Objects.requireNonNull(force, "force");
+        List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
+        Force before;
+        synchronized (lock) {
+            before = forcedPairs.force(pair, force);
+            for (WssPort port : ports.between(pair)) {
+                followVerdict(port, force == Force.UP, links, portEvents);
+            }
+        }
+        links.forEach(Link::close);
+        if (before != force) {
+            events.pairForced(pair.first(), pair.second(), force == Force.UP);
+        }
+        portEvents.forEach(Runnable::run);
     }
 
-    /** Gives the pair back to the model: its verdict counts again. */
+    /**
+     * Gives the pair back to the model: its verdict counts again at once. That verdict is the
+     * model's last break or resume of the pair, and {@code connectionIsPossibleForPair} asked now
+     * for each direction: a direction it broke or forbids stops listening and its connections
+     * close; one it allows listens again (where both robots are registered).
+     */
     public void release(String robotA, String robotB) {
-        throw new UnsupportedOperationException("releasing a pair is not there yet (issue 12)");
+        RobotPair pair = pairOf(robotA, robotB);
+        boolean firstToSecond = modelAllows(pair.first(), pair.second());
+        boolean secondToFirst = modelAllows(pair.second(), pair.first());
+        List<Link> links = new ArrayList<>();
+        List<Runnable> portEvents = new ArrayList<>();
+        Force before;
+        synchronized (lock) {
+            before = forcedPairs.release(pair);
+            for (WssPort port : before == null ? List.<WssPort>of() : ports.between(pair)) {
+                boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
+                followVerdict(port, allowed && !broken.contains(pair), links, portEvents);
+            }
+        }
+        links.forEach(Link::close);
+        if (before != null) {
+            events.pairReleased(pair.first(), pair.second());
+        }
+        portEvents.forEach(Runnable::run);
+    }
+
+    /**
+     * Under the lock: a port of a pair just forced or released follows the verdict at once. Not
+     * talking, it stops listening and its links go to {@code links}, to be closed after the lock;
+     * talking, it listens again where both robots are registered.
+     */
+    private void followVerdict(WssPort port, boolean talks, List<Link> links, List<Runnable> portEvents) {
+        if (!talks) {
+            if (port.stopListening()) {
+                portEvents.add(listeningEvent(port));
+            }
+            links.addAll(port.links());
+        } else if (!port.listening() && shouldListen(port.key, true)) {
+            listen(port, portEvents);
+        }
+    }
+
+    /** The pair's forced state, or null when the model decides it (the per-pair statistics show it). */
+    Force forced(RobotPair pair) {
+        synchronized (lock) {
+            return forcedPairs.of(pair);
+        }
+    }
+
+    private static RobotPair pairOf(String robotA, String robotB) {
+        if (robotA == null || robotB == null || robotA.isEmpty() || robotB.isEmpty() || robotA.equals(robotB)) {
+            throw new IllegalArgumentException("a pair is two different robot names, not '" + robotA + "' and '" + robotB + "'");
+        }
+        return RobotPair.of(robotA, robotB);
     }
 
     /** The robots, the WSS ports and the established links, all at one instant. */
@@ -585,12 +669,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /**
      * A WSS port listens while both robots are registered, the target still accepts on the
-     * target port, and the model neither broke nor forbids the pair. Under the lock.
+     * target port, and the model neither broke nor forbids the pair, unless an operator forced
+     * it ({@link ForcedPairs#allows}). Under the lock.
      */
     private boolean shouldListen(PortKey key, boolean modelAllows) {
         RegisteredRobot target = robots.get(key.to());
-        return modelAllows && robots.containsKey(key.from()) && target != null
-                && target.ports().contains(key.targetPort()) && !broken.contains(key.pair());
+        return robots.containsKey(key.from()) && target != null && target.ports().contains(key.targetPort())
+                && forcedPairs.allows(key.pair(), modelAllows && !broken.contains(key.pair()));
     }
 
     /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */

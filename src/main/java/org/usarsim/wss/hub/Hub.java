@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelStartException;
@@ -60,6 +61,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
+    /**
+     * The events of the hub's state changes (robots, ports), appended under the lock in the order
+     * the changes happened there, and delivered after it by {@link #deliverEvents}: so a listener
+     * (the event log, the window) sees a robot's DEREGISTERED before its next REGISTERED, and no
+     * listener is ever called with the lock held.
+     */
+    private final List<Runnable> pendingEvents = new ArrayList<>();
+    /** Held by the one thread that delivers {@link #pendingEvents} (not the hub's lock). */
+    private final ReentrantLock delivering = new ReentrantLock();
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -168,7 +178,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
             while (robots.containsKey(name) && !closed) {
@@ -187,15 +196,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return false;
             }
             robots.put(name, robot);
+            pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
             for (WssPort port : ports.of(name)) {
                 if (shouldListen(port.key, true)) {
-                    listen(port, portEvents);
+                    listen(port);
                 }
             }
         }
-        events.robotRegistered(name, address.getHostAddress(), robot.ports());
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return true;
     }
 
@@ -207,7 +216,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     void deregister(String name, ControlSession session) {
         List<PortListener> draining = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             if (!isSessionOf(name, session)) {
                 return;
@@ -227,17 +235,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             robots.remove(name);
             lock.notifyAll();
+            pendingEvents.add(() -> events.robotDeregistered(name));
             for (WssPort port : ports.of(name)) {
                 if (port.stopListening()) {
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
             }
             if (memory.left(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        events.robotDeregistered(name);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /** Under the lock. */
@@ -267,13 +275,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
         }
         boolean allowed = modelAllows(from, to);
-        List<Runnable> portEvents = new ArrayList<>();
-        DnsResult result = dnsLocked(from, to, targetPort, allowed, portEvents);
-        portEvents.forEach(Runnable::run);
+        DnsResult result = dnsLocked(from, to, targetPort, allowed);
+        deliverEvents();
         return result;
     }
 
-    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
+    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed) {
         synchronized (lock) {
             RegisteredRobot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
@@ -303,9 +310,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
                 int number = port.number;
                 boolean listening = port.listening();
-                portEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
+                pendingEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
             } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port, portEvents);
+                listen(port);
             }
             return new DnsResult(DnsOutcome.OK, port.number);
         }
@@ -407,17 +414,16 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     void linkClosed(Link link, boolean wasEstablished) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             link.port.removeLink(link);
             // A port kept only for its last connection is forgotten with it.
             for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
                 if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
-                    forgetPortsOf(robot, portEvents);
+                    forgetPortsOf(robot);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         if (wasEstablished) {
             PortKey key = link.port.key;
             events.connectionTerminated(key.from(), key.to(), key.targetPort());
@@ -430,37 +436,35 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
             for (WssPort port : ports.between(pair)) {
                 if (port.stopListening()) {
                     changed = true;
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
                 links.addAll(port.links());
             }
         }
         links.forEach(Link::close);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed || !links.isEmpty();
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.remove(pair);
             for (WssPort port : ports.between(pair)) {
                 if (!port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port, portEvents);
+                    changed |= listen(port);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed;
     }
 
@@ -468,15 +472,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void kickOutRobot(String name) {
         RegisteredRobot robot;
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
+            if (robot != null) {
+                pendingEvents.add(() -> events.robotDeregistered(name));
+            }
             for (WssPort port : ports.of(name)) {
                 port.release();
                 links.addAll(port.links());
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
@@ -485,9 +491,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         if (robot != null) {
             robot.session().close();
             LOG.info("kicked out " + name);
-            events.robotDeregistered(name);
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     @Override
@@ -545,28 +550,27 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
     private void forgetIfGone(String name) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             if (!closed && !robots.containsKey(name) && memory.expired(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /**
      * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
      * but those with open connections, which are forgotten when their last connection closes. The
-     * ports' events go to {@code portEvents}, to be fired after the lock.
+     * ports' events go to {@link #pendingEvents}.
      */
-    private void forgetPortsOf(String name, List<Runnable> portEvents) {
+    private void forgetPortsOf(String name) {
         int forgotten = 0;
         boolean kept = false;
         for (WssPort port : ports.of(name)) {
             if (!port.hasLinks()) {
                 port.release();
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
                 forgotten++;
             } else {
                 kept = true;
@@ -578,6 +582,39 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         if (!kept) {
             memory.clear(name);
+        }
+    }
+
+    // ---- events ----
+
+    /**
+     * Delivers the pending events in order, never under the lock. One thread delivers at a time;
+     * a thread that finds another delivering leaves its events to it, and the deliverer looks
+     * again after letting go, so none is left behind.
+     */
+    private void deliverEvents() {
+        while (delivering.tryLock()) {
+            try {
+                List<Runnable> batch;
+                while (!(batch = takePendingEvents()).isEmpty()) {
+                    batch.forEach(Runnable::run);
+                }
+            } finally {
+                delivering.unlock();
+            }
+            synchronized (lock) {
+                if (pendingEvents.isEmpty()) {
+                    return;
+                }
+            }
+        }
+    }
+
+    private List<Runnable> takePendingEvents() {
+        synchronized (lock) {
+            List<Runnable> batch = List.copyOf(pendingEvents);
+            pendingEvents.clear();
+            return batch;
         }
     }
 
@@ -593,11 +630,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 && target.ports().contains(key.targetPort()) && !broken.contains(key.pair());
     }
 
-    /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */
-    private boolean listen(WssPort port, List<Runnable> portEvents) {
+    /** Under the lock; the port's event goes to {@link #pendingEvents}. @return true when it listens now */
+    private boolean listen(WssPort port) {
         try {
             port.listen();
-            portEvents.add(listeningEvent(port));
+            pendingEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());

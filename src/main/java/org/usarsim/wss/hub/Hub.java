@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -27,9 +28,12 @@ import org.usarsim.wss.model.WssEventListener;
  * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
  *
  * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
- * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing server sockets, and the non-blocking connect that starts a port's drain, happens under
- * it: a link's sockets are opened before it is taken ({@link #accepted}).
+ * while it is held (a model may call back in from its own thread), nor is a listener (events are
+ * queued under it and delivered after it, {@link #deliverEvents}). Little I/O happens under it:
+ * closing server sockets, and binding a new port for a DNS or one a resume reopens; a link's
+ * sockets are opened before it is taken ({@link #accepted}), a registration binds the ports it
+ * reopens before it takes it again to adopt them ({@link #listenAgain}), and a departure starts
+ * its ports' drains between its two holds.
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
@@ -56,6 +60,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
     private final Set<RobotPair> broken = new HashSet<>();
+    /** The control sessions whose robots are leaving: their ports drain, their names are freed soon. */
+    private final Set<ControlSession> leaving = new HashSet<>();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -178,10 +184,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
+        List<WssPort> toListen = new ArrayList<>();
         synchronized (lock) {
-            long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
+            long start = System.nanoTime();
             while (robots.containsKey(name) && !closed) {
-                long left = deadline - System.nanoTime();
+                // A robot that is leaving frees its name once its ports drained: wait for that too.
+                long wait = leaving.contains(robots.get(name).session()) ? NAME_RELEASE_WAIT_NS + DRAIN_NS : NAME_RELEASE_WAIT_NS;
+                long left = start + wait - System.nanoTime();
                 if (left <= 0) {
                     return false;
                 }
@@ -199,13 +208,49 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
             for (WssPort port : ports.of(name)) {
-                if (shouldListen(port.key, true)) {
-                    listen(port);
+                if (shouldListen(port.key, true) && !port.listening()) {
+                    toListen.add(port);
                 }
             }
         }
+        listenAgain(toListen, session);
         deliverEvents();
         return true;
+    }
+
+    /**
+     * The ports a registration reopens: their sockets are bound without the lock (beside the
+     * placeholders, which keep the numbers), adopted under it if they still should listen, and
+     * their threads started after it.
+     */
+    private void listenAgain(List<WssPort> toListen, ControlSession session) {
+        Map<WssPort, ServerSocketChannel> bound = new HashMap<>();
+        for (WssPort port : toListen) {
+            try {
+                bound.put(port, port.bindListening());
+            } catch (IOException e) {
+                LOG.warning(port + ": could not listen again: " + e.getMessage());
+            }
+        }
+        List<PortListener> started = new ArrayList<>();
+        synchronized (lock) {
+            for (Map.Entry<WssPort, ServerSocketChannel> entry : bound.entrySet()) {
+                WssPort port = entry.getKey();
+                boolean stillOurs = ports.get(port.key) == port && !closed && isRegisteredSession(session);
+                if (stillOurs && !port.listening() && shouldListen(port.key, true)) {
+                    started.add(port.adopt(entry.getValue()));
+                    pendingEvents.add(listeningEvent(port));
+                } else {
+                    Closing.quietly(entry.getValue());
+                }
+            }
+        }
+        started.forEach(PortListener::start);
+    }
+
+    /** Under the lock: whether the session's robot is registered now. */
+    private boolean isRegisteredSession(ControlSession session) {
+        return robots.values().stream().anyMatch(robot -> robot.session() == session);
     }
 
     /**
@@ -215,21 +260,31 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * ports have drained, for at most {@link #DRAIN_NS}.
      */
     void deregister(String name, ControlSession session) {
-        List<PortListener> draining = new ArrayList<>();
+        Map<PortListener, InetAddress> toDrain = new HashMap<>();
         synchronized (lock) {
             if (!isSessionOf(name, session)) {
                 return;
             }
+            leaving.add(session);
+            lock.notifyAll(); // an INIT of the name waits for the drain now
             for (WssPort port : ports.of(name)) {
-                PortListener listener = port.beginDrain();
+                PortListener listener = port.listener();
                 if (listener != null) {
-                    draining.add(listener);
+                    toDrain.put(listener, port.reach());
                 }
             }
         }
+        // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
+        List<PortListener> draining = new ArrayList<>();
+        toDrain.forEach((listener, reach) -> {
+            if (listener.beginDrain(reach)) {
+                draining.add(listener);
+            }
+        });
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
         synchronized (lock) {
+            leaving.remove(session);
             if (!isSessionOf(name, session)) {
                 return; // kicked out meanwhile
             }

@@ -95,24 +95,36 @@ final class WssPort {
     /** Listens again on the same number. */
     void listen() throws IOException {
         if (listener == null) {
-            startListener(PortListener.bind(new InetSocketAddress(bindAddress, number)));
+            startListener(bindListening());
         }
     }
 
-    private void startListener(ServerSocketChannel channel) {
-        listener = new PortListener(hub, this, channel);
-        listener.start();
+    /**
+     * A server socket bound to this port's number, beside the placeholder: no lock needed, so a
+     * registration binds its ports before it takes the hub's lock to {@link #adopt} them.
+     */
+    ServerSocketChannel bindListening() throws IOException {
+        return PortListener.bind(new InetSocketAddress(bindAddress, number));
     }
 
-    /**
-     * Begins a drain of the listener (see {@link PortListener#beginDrain}); the port stops
-     * listening once its listener has ended, or at the next {@link #stopListening}.
-     *
-     * @return the listener to wait for, or null when there is none to wait for
-     */
-    PortListener beginDrain() {
-        InetAddress reach = bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
-        return listener != null && listener.beginDrain(reach) ? listener : null;
+    /** Listens with a socket from {@link #bindListening}; its thread is started by the caller, after the lock. */
+    PortListener adopt(ServerSocketChannel channel) {
+        listener = new PortListener(hub, this, channel);
+        return listener;
+    }
+
+    private void startListener(ServerSocketChannel channel) {
+        adopt(channel).start();
+    }
+
+    /** The listener now (to drain it after the lock, see {@link PortListener#beginDrain}), or null. */
+    PortListener listener() {
+        return listener;
+    }
+
+    /** Where the port is reached from this machine: the bind address, or loopback for the wildcard. */
+    InetAddress reach() {
+        return bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
     }
 
     /** Stops listening at once, so that a connect is refused; keeps the number. @return true when it was listening */

@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -14,6 +15,7 @@ import java.util.Objects;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelStartException;
@@ -27,9 +29,12 @@ import org.usarsim.wss.model.WssEventListener;
  * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
  *
  * <p>One lock guards the registry, the ports and the broken and forced pairs. The model is never called
- * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing server sockets, and the non-blocking connect that starts a port's drain, happens under
- * it: a link's sockets are opened before it is taken ({@link #accepted}).
+ * while it is held (a model may call back in from its own thread), nor is a listener (events are
+ * queued under it and delivered after it, {@link #deliverEvents}). Little I/O happens under it:
+ * closing server sockets, and binding a new port for a DNS or one a resume reopens; a link's
+ * sockets are opened before it is taken ({@link #accepted}), a registration binds the ports it
+ * reopens before it takes it again to adopt them ({@link #listenAgain}), and a departure starts
+ * its ports' drains between its two holds.
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
@@ -58,11 +63,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Set<RobotPair> broken = new HashSet<>();
     /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
     private final ForcedPairs forcedPairs = new ForcedPairs();
+    /** The control sessions whose robots are leaving: their ports drain, their names are freed soon. */
+    private final Set<ControlSession> leaving = new HashSet<>();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
+    /**
+     * The events of the hub's state changes (robots, ports), appended under the lock in the order
+     * the changes happened there, and delivered after it by {@link #deliverEvents}: so a listener
+     * (the event log, the window) sees a robot's DEREGISTERED before its next REGISTERED, and no
+     * listener is ever called with the lock held.
+     */
+    private final List<Runnable> pendingEvents = new ArrayList<>();
+    /** Held by the one thread that delivers {@link #pendingEvents} (not the hub's lock). */
+    private final ReentrantLock delivering = new ReentrantLock();
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -173,11 +189,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
-        List<Runnable> portEvents = new ArrayList<>();
+        List<WssPort> toListen = new ArrayList<>();
         synchronized (lock) {
-            long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
+            long start = System.nanoTime();
             while (robots.containsKey(name) && !closed) {
-                long left = deadline - System.nanoTime();
+                // A robot that is leaving frees its name once its ports drained: wait for that too.
+                long wait = leaving.contains(robots.get(name).session()) ? NAME_RELEASE_WAIT_NS + DRAIN_NS : NAME_RELEASE_WAIT_NS;
+                long left = start + wait - System.nanoTime();
                 if (left <= 0) {
                     return false;
                 }
@@ -192,16 +210,52 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return false;
             }
             robots.put(name, robot);
+            pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
             for (WssPort port : ports.of(name)) {
-                if (shouldListen(port.key, true)) {
-                    listen(port, portEvents);
+                if (shouldListen(port.key, true) && !port.listening()) {
+                    toListen.add(port);
                 }
             }
         }
-        events.robotRegistered(name, address.getHostAddress(), robot.ports());
-        portEvents.forEach(Runnable::run);
+        listenAgain(toListen, session);
+        deliverEvents();
         return true;
+    }
+
+    /**
+     * The ports a registration reopens: their sockets are bound without the lock (beside the
+     * placeholders, which keep the numbers), adopted under it if they still should listen, and
+     * their threads started after it.
+     */
+    private void listenAgain(List<WssPort> toListen, ControlSession session) {
+        Map<WssPort, ServerSocketChannel> bound = new HashMap<>();
+        for (WssPort port : toListen) {
+            try {
+                bound.put(port, port.bindListening());
+            } catch (IOException e) {
+                LOG.warning(port + ": could not listen again: " + e.getMessage());
+            }
+        }
+        List<PortListener> started = new ArrayList<>();
+        synchronized (lock) {
+            for (Map.Entry<WssPort, ServerSocketChannel> entry : bound.entrySet()) {
+                WssPort port = entry.getKey();
+                boolean stillOurs = ports.get(port.key) == port && !closed && isRegisteredSession(session);
+                if (stillOurs && !port.listening() && shouldListen(port.key, true)) {
+                    started.add(port.adopt(entry.getValue()));
+                    pendingEvents.add(listeningEvent(port));
+                } else {
+                    Closing.quietly(entry.getValue());
+                }
+            }
+        }
+        started.forEach(PortListener::start);
+    }
+
+    /** Under the lock: whether the session's robot is registered now. */
+    private boolean isRegisteredSession(ControlSession session) {
+        return robots.values().stream().anyMatch(robot -> robot.session() == session);
     }
 
     /**
@@ -211,38 +265,47 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * ports have drained, for at most {@link #DRAIN_NS}.
      */
     void deregister(String name, ControlSession session) {
-        List<PortListener> draining = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
+        Map<PortListener, InetAddress> toDrain = new HashMap<>();
         synchronized (lock) {
             if (!isSessionOf(name, session)) {
                 return;
             }
+            leaving.add(session);
+            lock.notifyAll(); // an INIT of the name waits for the drain now
             for (WssPort port : ports.of(name)) {
-                PortListener listener = port.beginDrain();
+                PortListener listener = port.listener();
                 if (listener != null) {
-                    draining.add(listener);
+                    toDrain.put(listener, port.reach());
                 }
             }
         }
+        // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
+        List<PortListener> draining = new ArrayList<>();
+        toDrain.forEach((listener, reach) -> {
+            if (listener.beginDrain(reach)) {
+                draining.add(listener);
+            }
+        });
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
         synchronized (lock) {
+            leaving.remove(session);
             if (!isSessionOf(name, session)) {
                 return; // kicked out meanwhile
             }
             robots.remove(name);
             lock.notifyAll();
+            pendingEvents.add(() -> events.robotDeregistered(name));
             for (WssPort port : ports.of(name)) {
                 if (port.stopListening()) {
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
             }
             if (memory.left(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        events.robotDeregistered(name);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /** Under the lock. */
@@ -277,13 +340,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
         }
         boolean allowed = modelAllows(from, to);
-        List<Runnable> portEvents = new ArrayList<>();
-        DnsResult result = dnsLocked(from, to, targetPort, allowed, portEvents);
-        portEvents.forEach(Runnable::run);
+        DnsResult result = dnsLocked(from, to, targetPort, allowed);
+        deliverEvents();
         return result;
     }
 
-    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
+    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed) {
         synchronized (lock) {
             RegisteredRobot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
@@ -313,9 +375,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
                 int number = port.number;
                 boolean listening = port.listening();
-                portEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
+                pendingEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
             } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port, portEvents);
+                listen(port);
             }
             return new DnsResult(DnsOutcome.OK, port.number);
         }
@@ -418,17 +480,16 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     void linkClosed(Link link, boolean wasEstablished) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             link.port.removeLink(link);
             // A port kept only for its last connection is forgotten with it.
             for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
                 if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
-                    forgetPortsOf(robot, portEvents);
+                    forgetPortsOf(robot);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         if (wasEstablished) {
             PortKey key = link.port.key;
             events.connectionTerminated(key.from(), key.to(), key.targetPort());
@@ -441,7 +502,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.add(pair);
@@ -449,30 +509,29 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
                 if (port.stopListening()) {
                     changed = true;
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
                 links.addAll(port.links());
             }
         }
         links.forEach(Link::close);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed || !links.isEmpty();
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             changed = broken.remove(pair);
             for (WssPort port : ports.between(pair)) {
                 if (!port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port, portEvents);
+                    changed |= listen(port);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed;
     }
 
@@ -480,15 +539,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void kickOutRobot(String name) {
         RegisteredRobot robot;
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
+            if (robot != null) {
+                pendingEvents.add(() -> events.robotDeregistered(name));
+            }
             for (WssPort port : ports.of(name)) {
                 port.release();
                 links.addAll(port.links());
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
@@ -497,9 +558,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         if (robot != null) {
             robot.session().close();
             LOG.info("kicked out " + name);
-            events.robotDeregistered(name);
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     @Override
@@ -525,19 +585,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         RobotPair pair = pairOf(robotA, robotB);
         Objects.requireNonNull(force, "force");
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
-        Force before;
         synchronized (lock) {
-            before = forcedPairs.force(pair, force);
+            Force before = forcedPairs.force(pair, force);
+            if (before != force) {
+                pendingEvents.add(() -> events.pairForced(pair.first(), pair.second(), force == Force.UP));
+            }
             for (WssPort port : ports.between(pair)) {
-                followVerdict(port, force == Force.UP, links, portEvents);
+                followVerdict(port, force == Force.UP, links);
             }
         }
         links.forEach(Link::close);
-        if (before != force) {
-            events.pairForced(pair.first(), pair.second(), force == Force.UP);
-        }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /**
@@ -551,20 +609,18 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean firstToSecond = modelAllows(pair.first(), pair.second());
         boolean secondToFirst = modelAllows(pair.second(), pair.first());
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
-        Force before;
         synchronized (lock) {
-            before = forcedPairs.release(pair);
+            Force before = forcedPairs.release(pair);
+            if (before != null) {
+                pendingEvents.add(() -> events.pairReleased(pair.first(), pair.second()));
+            }
             for (WssPort port : before == null ? List.<WssPort>of() : ports.between(pair)) {
                 boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
-                followVerdict(port, allowed && !broken.contains(pair), links, portEvents);
+                followVerdict(port, allowed && !broken.contains(pair), links);
             }
         }
         links.forEach(Link::close);
-        if (before != null) {
-            events.pairReleased(pair.first(), pair.second());
-        }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /**
@@ -572,14 +628,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * talking, it stops listening and its links go to {@code links}, to be closed after the lock;
      * talking, it listens again where both robots are registered.
      */
-    private void followVerdict(WssPort port, boolean talks, List<Link> links, List<Runnable> portEvents) {
+    private void followVerdict(WssPort port, boolean talks, List<Link> links) {
         if (!talks) {
             if (port.stopListening()) {
-                portEvents.add(listeningEvent(port));
+                pendingEvents.add(listeningEvent(port));
             }
             links.addAll(port.links());
         } else if (!port.listening() && shouldListen(port.key, true)) {
-            listen(port, portEvents);
+            listen(port);
         }
     }
 
@@ -629,28 +685,27 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
     private void forgetIfGone(String name) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             if (!closed && !robots.containsKey(name) && memory.expired(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /**
      * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
      * but those with open connections, which are forgotten when their last connection closes. The
-     * ports' events go to {@code portEvents}, to be fired after the lock.
+     * ports' events go to {@link #pendingEvents}.
      */
-    private void forgetPortsOf(String name, List<Runnable> portEvents) {
+    private void forgetPortsOf(String name) {
         int forgotten = 0;
         boolean kept = false;
         for (WssPort port : ports.of(name)) {
             if (!port.hasLinks()) {
                 port.release();
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
                 forgotten++;
             } else {
                 kept = true;
@@ -662,6 +717,39 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         if (!kept) {
             memory.clear(name);
+        }
+    }
+
+    // ---- events ----
+
+    /**
+     * Delivers the pending events in order, never under the lock. One thread delivers at a time;
+     * a thread that finds another delivering leaves its events to it, and the deliverer looks
+     * again after letting go, so none is left behind.
+     */
+    private void deliverEvents() {
+        while (delivering.tryLock()) {
+            try {
+                List<Runnable> batch;
+                while (!(batch = takePendingEvents()).isEmpty()) {
+                    batch.forEach(Runnable::run);
+                }
+            } finally {
+                delivering.unlock();
+            }
+            synchronized (lock) {
+                if (pendingEvents.isEmpty()) {
+                    return;
+                }
+            }
+        }
+    }
+
+    private List<Runnable> takePendingEvents() {
+        synchronized (lock) {
+            List<Runnable> batch = List.copyOf(pendingEvents);
+            pendingEvents.clear();
+            return batch;
         }
     }
 
@@ -678,11 +766,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 && forcedPairs.allows(key.pair(), modelAllows && !broken.contains(key.pair()));
     }
 
-    /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */
-    private boolean listen(WssPort port, List<Runnable> portEvents) {
+    /** Under the lock; the port's event goes to {@link #pendingEvents}. @return true when it listens now */
+    private boolean listen(WssPort port) {
         try {
             port.listen();
-            portEvents.add(listeningEvent(port));
+            pendingEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());

@@ -58,6 +58,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Set<RobotPair> broken = new HashSet<>();
     /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
     private final ForcedPairs forcedPairs = new ForcedPairs();
+    /**
+     * Held through a whole {@link #force} or {@link #release}, its events included, so that two
+     * operators forcing one pair at once (the control port and the window) have their FORCED and
+     * RELEASED events in the order the pair was forced. Never taken under {@link #lock}.
+     */
+    private final Object operatorLock = new Object();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -524,6 +530,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void force(String robotA, String robotB, Force force) {
         RobotPair pair = pairOf(robotA, robotB);
         Objects.requireNonNull(force, "force");
+        synchronized (operatorLock) {
+            forceInOrder(pair, force);
+        }
+    }
+
+    private void forceInOrder(RobotPair pair, Force force) {
         List<Link> links = new ArrayList<>();
         List<Runnable> portEvents = new ArrayList<>();
         Force before;
@@ -548,6 +560,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     public void release(String robotA, String robotB) {
         RobotPair pair = pairOf(robotA, robotB);
+        synchronized (operatorLock) {
+            releaseInOrder(pair);
+        }
+    }
+
+    private void releaseInOrder(RobotPair pair) {
         boolean firstToSecond = modelAllows(pair.first(), pair.second());
         boolean secondToFirst = modelAllows(pair.second(), pair.first());
         List<Link> links = new ArrayList<>();

@@ -66,6 +66,8 @@ public final class Settings {
             Setting.integer("wss.deadPeerSeconds", "Dead peer detection", 30).from(0).to(86400).unit("s")
                     .note("0: the OS's keepalive")
                     .help("Within how long keepalive finds a robot whose machine vanished"),
+            Setting.integer("wss.statsInterval", "Statistics interval", Defaults.STATS_INTERVAL).from(0).to(86400).unit("s")
+                    .note("0: never").help("Every so many seconds the headless log shows the statistics of every pair of robots"),
             Setting.addresses("wss.operators", "Operators", "127.0.0.1").orEmpty("nobody")
                     .help("The addresses whose control connections may force pairs (FORCE, docs/protocol.md section 7)"),
             Setting.pairs("wss.force.down", "Forced down", "").orEmpty("none")
@@ -236,6 +238,11 @@ public final class Settings {
 
     Path eventLogDir() {
         return Path.of(get("wss.eventLogDir"));
+    }
+
+    /** Seconds between two statistics tables in the headless log; 0: never. */
+    int statsInterval() {
+        return Integer.parseInt(get("wss.statsInterval"));
     }
 
     /** The folder named by wss.pluginDir, whose jars are loaded as model plugins; empty when none is named. */

@@ -16,6 +16,7 @@ import javax.swing.JFrame;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
 import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
@@ -42,6 +43,8 @@ public final class MainWindow {
     private final RobotsPanel robots = new RobotsPanel();
     private final PortsPanel ports = new PortsPanel();
     private final LinksPanel links = new LinksPanel();
+    private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
+    private final StatsPanel stats = new StatsPanel(forceMenu);
     private final LogPanel log = new LogPanel();
     private final NetworkView view = new NetworkView();
     private final Timer timer;
@@ -120,7 +123,11 @@ public final class MainWindow {
         JSplitPane tables = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, robots, right);
         tables.setResizeWeight(0.3);
         tables.setBorder(null);
-        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tables, log);
+        JTabbedPane tabs = new JTabbedPane();
+        tabs.setName("tabs");
+        tabs.addTab("Connections", tables);
+        tabs.addTab("Link statistics", stats);
+        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabs, log);
         center.setResizeWeight(0.75);
         center.setBorder(null);
         JPanel content = new JPanel(new BorderLayout(0, 8));
@@ -158,6 +165,7 @@ public final class MainWindow {
             robots.show(snapshot.robots());
             ports.show(snapshot.ports());
             links.show(snapshot.links());
+            stats.show(snapshot.pairs());
         }
         log.append(windowLog.drain());
     }
@@ -269,6 +277,7 @@ public final class MainWindow {
         settings.storeBounds(frame.getBounds());
         timer.stop();
         view.close();
+        forceMenu.close();
         frame.dispose();
         onClosed.run();
     }

@@ -18,6 +18,9 @@ import org.usarsim.wss.model.WssEventListener;
  */
 final class NetworkView implements WssEventListener {
 
+    /** How often a snapshot is taken even without an event: the link statistics' bytes and throughput move on. */
+    static final long STATISTICS_NS = java.util.concurrent.TimeUnit.SECONDS.toNanos(1);
+
     private final ExecutorService snapshots = Executors.newSingleThreadExecutor(task -> {
         Thread thread = new Thread(task, "wss-window-view");
         thread.setDaemon(true);
@@ -26,6 +29,8 @@ final class NetworkView implements WssEventListener {
     private final AtomicBoolean stale = new AtomicBoolean();
     private final AtomicBoolean taking = new AtomicBoolean();
     private final AtomicReference<HubSnapshot> ready = new AtomicReference<>();
+    /** When the last snapshot was asked for (System.nanoTime()); event thread only. */
+    private long askedNs;
     /** Guards {@link #source} against a snapshot of a server that stopped meanwhile. */
     private final Object sourceLock = new Object();
     private Servers.Running source;
@@ -48,6 +53,10 @@ final class NetworkView implements WssEventListener {
 
     /** Event thread: asks for a snapshot when something changed; returns one when there is a new one, else null. */
     HubSnapshot poll() {
+        long now = System.nanoTime();
+        if (now - askedNs >= STATISTICS_NS) {
+            stale.set(true); // the link statistics count on without an event
+        }
         if (!taking.get() && stale.get()) {
             Servers.Running from;
             synchronized (sourceLock) {
@@ -55,6 +64,7 @@ final class NetworkView implements WssEventListener {
             }
             if (from != null && stale.getAndSet(false)) {
                 taking.set(true);
+                askedNs = now;
                 snapshots.execute(() -> take(from));
             }
         }

@@ -65,6 +65,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final ForcedPairs forcedPairs = new ForcedPairs();
     /** The control sessions whose robots are leaving: their ports drain, their names are freed soon. */
     private final Set<ControlSession> leaving = new HashSet<>();
+    /** The statistics of every pair seen, forgotten with the pair's ports. */
+    private final LinkStats stats = new LinkStats();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -356,6 +358,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return new DnsResult(DnsOutcome.NO_SUCH_TARGET_PORT, -1);
             }
             PortKey key = new PortKey(from, to, resolved);
+            pairStats(key.pair());
             WssPort port = ports.get(key);
             if (port == null) {
                 long held = ports.fromCount(from);
@@ -410,10 +413,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean allowed = modelAllows(key.from(), key.to());
         String refusal;
         InetSocketAddress targetAddress = null;
+        PairStats pairStats = null;
         synchronized (lock) {
             refusal = refusal(port, listener, peer, allowed);
             if (refusal == null) {
                 targetAddress = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
+                pairStats = pairStats(key.pair());
             }
         }
         if (refusal != null) {
@@ -422,7 +427,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         Link link;
         try {
-            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events);
+            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events, pairStats);
         } catch (IOException e) {
             warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
@@ -504,7 +509,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Link> links = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
+            PairStats pairStats = pairStats(pair); // first seen now: seen up until this break
             changed = broken.add(pair);
+            if (changed) {
+                pairStats.modelChanged(true);
+                recordState(pair, true);
+            }
             // Forced up: the break is only remembered, for the release.
             for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
                 if (port.stopListening()) {
@@ -514,7 +524,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 links.addAll(port.links());
             }
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.OUT_OF_RANGE);
         deliverEvents();
         return changed || !links.isEmpty();
     }
@@ -524,7 +534,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         RobotPair pair = RobotPair.of(robotA, robotB);
         boolean changed;
         synchronized (lock) {
+            PairStats pairStats = pairStats(pair);
             changed = broken.remove(pair);
+            if (changed) {
+                pairStats.modelChanged(false);
+                recordState(pair, true);
+            }
             for (WssPort port : ports.between(pair)) {
                 if (!port.listening() && shouldListen(port.key, true)) {
                     changed |= listen(port);
@@ -553,8 +568,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
+            if (memory.left(name)) { // its pairs' statistics are remembered as long as its ports would have been
+                forgetPortsOf(name);
+            }
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.KICKED);
         if (robot != null) {
             robot.session().close();
             LOG.info("kicked out " + name);
@@ -593,8 +611,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             for (WssPort port : ports.between(pair)) {
                 followVerdict(port, force == Force.UP, links);
             }
+            recordState(pair, false);
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.FORCED);
         deliverEvents();
     }
 
@@ -618,8 +637,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
                 followVerdict(port, allowed && !broken.contains(pair), links);
             }
+            recordState(pair, true);
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.OUT_OF_RANGE);
         deliverEvents();
     }
 
@@ -658,7 +678,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
         List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
         List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
+        List<PairStats> pairStats;
         synchronized (lock) {
+            pairStats = stats.all();
             for (RegisteredRobot robot : robots.values()) {
                 robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
             }
@@ -678,7 +700,43 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 .thenComparingInt(HubSnapshot.PortEntry::targetPort));
         linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
                 .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
-        return new HubSnapshot(robotEntries, portEntries, linkEntries, List.of());
+        return new HubSnapshot(robotEntries, portEntries, linkEntries, pairEntries(pairStats));
+    }
+
+    /** The pairs' statistics, sorted by pair; the model is asked for strengths and positions here, without the lock. */
+    private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats) {
+        long now = System.nanoTime();
+        List<HubSnapshot.PairEntry> entries = new ArrayList<>();
+        for (PairStats pair : pairStats) {
+            String first = pair.pair.first();
+            String second = pair.pair.second();
+            double[] rates = pair.rates(now);
+            CloseReason lastClose = pair.lastClose();
+            entries.add(new HubSnapshot.PairEntry(first, second, pair.state(), strength(first, second), distance(first, second),
+                    pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1], pair.connections(),
+                    pair.breaks(), pair.resumes(), pair.upShare(now), lastClose == null ? null : lastClose.toString()));
+        }
+        entries.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));
+        return entries;
+    }
+
+    private double strength(String first, String second) {
+        try {
+            return model.getSignalStrengthForPair(first, second);
+        } catch (RuntimeException e) {
+            return Double.NaN; // a robot the model does not know (gone, say)
+        }
+    }
+
+    /** The distance between the robots' positions, NaN unless the model knows both. */
+    private double distance(String first, String second) {
+        try {
+            var a = model.positionOf(first);
+            var b = model.positionOf(second);
+            return a.isPresent() && b.isPresent() ? a.get().distanceTo(b.get()) : Double.NaN;
+        } catch (RuntimeException e) {
+            return Double.NaN;
+        }
     }
 
     // ---- port memory ----
@@ -718,6 +776,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         if (!kept) {
             memory.clear(name);
         }
+        stats.forget(name, pair -> ports.between(pair).isEmpty());
     }
 
     // ---- events ----
@@ -754,6 +813,38 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     // ---- rules ----
+
+    /** The pair's state now: an operator's force wins over the model's verdict. Under the lock. */
+    private PairState stateOf(RobotPair pair) {
+        Force force = forcedPairs.of(pair);
+        if (force != null) {
+            return force == Force.DOWN ? PairState.FORCED_DOWN : PairState.FORCED_UP;
+        }
+        return broken.contains(pair) ? PairState.BROKEN : PairState.UP;
+    }
+
+    /** The pair's statistics, from now on when it was not seen yet. Under the lock. */
+    private PairStats pairStats(RobotPair pair) {
+        return stats.of(pair, stateOf(pair));
+    }
+
+    /**
+     * Under the lock: records the state now of a pair seen (after a break, a resume, a force or a
+     * release); with {@code say}, a change is logged, one line, delivered after the lock with the
+     * events (a force says itself: the event's line "forced A - B down").
+     */
+    private void recordState(RobotPair pair, boolean say) {
+        PairStats pairStats = stats.get(pair);
+        PairState now = stateOf(pair);
+        if (pairStats != null && pairStats.moveTo(now, System.nanoTime()) && say) {
+            pendingEvents.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+        }
+    }
+
+    /** Closes the links after the lock, saying why (the last close their pairs' statistics show). */
+    private static void closeLinks(List<Link> links, CloseReason reason) {
+        links.forEach(link -> link.close(reason));
+    }
 
     /**
      * A WSS port listens while both robots are registered, the target still accepts on the

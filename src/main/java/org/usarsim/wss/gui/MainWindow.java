@@ -16,6 +16,7 @@ import javax.swing.JFrame;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JSplitPane;
+import javax.swing.JTabbedPane;
 import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
@@ -26,7 +27,7 @@ import org.usarsim.wss.model.PropagationModel;
 
 /**
  * The main window (the manual's Figure 1): the control bar, "Connected Robots", the ports and
- * connections tables, and the log. Starts and stops a server through {@link Servers}, off the
+ * connections tables (tab "Connections"), the map (tab "Map"), and the log. Starts and stops a server through {@link Servers}, off the
  * event thread; shows the hub through a {@link NetworkView} and the log through a
  * {@link WindowLog}, both taken on a Swing timer every {@link #REFRESH_MS} ms. Everything here
  * runs on the event thread.
@@ -43,6 +44,8 @@ public final class MainWindow {
     private final PortsPanel ports = new PortsPanel();
     private final LinksPanel links = new LinksPanel();
     private final LogPanel log = new LogPanel();
+    private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
+    private final MapPanel map = new MapPanel(forceMenu);
     private final NetworkView view = new NetworkView();
     private final Timer timer;
     private final Servers servers;
@@ -118,7 +121,11 @@ public final class MainWindow {
         JSplitPane tables = new JSplitPane(JSplitPane.HORIZONTAL_SPLIT, robots, right);
         tables.setResizeWeight(0.3);
         tables.setBorder(null);
-        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tables, log);
+        JTabbedPane tabs = new JTabbedPane();
+        tabs.setName("tabs");
+        tabs.addTab("Connections", tables);
+        tabs.addTab("Map", map);
+        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabs, log);
         center.setResizeWeight(0.75);
         center.setBorder(null);
         JPanel content = new JPanel(new BorderLayout(0, 8));
@@ -156,6 +163,10 @@ public final class MainWindow {
             robots.show(snapshot.robots());
             ports.show(snapshot.ports());
             links.show(snapshot.links());
+        }
+        MapData mapData = view.pollMap();
+        if (mapData != null) {
+            map.show(mapData);
         }
         log.append(windowLog.drain());
     }
@@ -206,7 +217,7 @@ public final class MainWindow {
                     throw new IllegalStateException("the event thread was interrupted", e);
                 }
                 settings.storeRun(port, model.name(), eventLog);
-                view.attach(running);
+                view.attach(running, model);
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -268,6 +279,7 @@ public final class MainWindow {
         settings.storeBounds(frame.getBounds());
         timer.stop();
         view.close();
+        forceMenu.close();
         frame.dispose();
         onClosed.run();
     }

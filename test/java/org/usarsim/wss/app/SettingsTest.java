@@ -40,6 +40,7 @@ class SettingsTest {
             Map.entry("wss.portMemory", "600"),
             Map.entry("wss.maxPortsPerRobot", "1000"),
             Map.entry("wss.deadPeerSeconds", "30"),
+            Map.entry("wss.statsInterval", "0"),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -452,6 +453,7 @@ class SettingsTest {
         "wss.portMemory, -2", "wss.portMemory, 31536001", "wss.portMemory, 10m", "wss.portMemory, 1.5",
         "wss.maxPortsPerRobot, 0", "wss.maxPortsPerRobot, 1000001", "wss.maxPortsPerRobot, many",
         "wss.deadPeerSeconds, -1", "wss.deadPeerSeconds, 86401", "wss.deadPeerSeconds, 30s",
+        "wss.statsInterval, -1", "wss.statsInterval, 86401", "wss.statsInterval, 1.5",
     })
     void badRobotLimits(String key, String value) {
         rejected(key, value);
@@ -469,6 +471,9 @@ class SettingsTest {
         properties.setProperty("wss.deadPeerSeconds", "2");
         config = Settings.of(properties, "t").hubConfig();
         assertEquals(List.of(0, 2), List.of(config.portMemorySeconds(), config.deadPeerSeconds()));
+        assertEquals(0, Settings.defaults().statsInterval(), "no statistics table unless asked for");
+        properties.setProperty("wss.statsInterval", "86400");
+        assertEquals(86400, Settings.of(properties, "t").statsInterval());
     }
 
     @Test

@@ -238,6 +238,74 @@ class WindowTest {
     }
 
     @Test
+    void theLinkStatisticsTableCountsBytesAndBreaksAndARightClickOffersTheForceMenu() throws Exception {
+        int port = start();
+        try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3")) {
+            r1.init("r1");
+            ServerSocket r2Accepts = r2.initAccepting("r2");
+            int toR2 = r1.dns("r2", 0);
+            JTable stats = component(JTable.class, "stats");
+            try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
+                data.getOutputStream().write(new byte[12345]);
+                assertEquals(12345, atR2.getInputStream().readNBytes(12345).length);
+                atR2.getOutputStream().write(new byte[678]);
+                assertEquals(678, data.getInputStream().readNBytes(678).length);
+                // Robot A, B, state, strength, distance, bytes A>B, B>A, connections, breaks, resumes, up %, last close
+                until("the statistics count the bytes", () -> statistics(stats).equals(
+                        List.of("r1", "r2", "up", "0.0", "NaN", "12345", "678", "1", "0", "0", "100.0", "")));
+                model.links().breakConnectionsForPair("r1", "r2");
+                until("the statistics show the break", () -> {
+                    List<String> row = statistics(stats);
+                    return row.subList(0, 10).equals(List.of("r1", "r2", "broken", "0.0", "NaN", "12345", "678", "1", "1", "0"))
+                            && row.get(11).equals("out of range") && Double.parseDouble(row.get(10)) < 100;
+                });
+            }
+            // The filter works as on the other tables.
+            run(() -> component(JTextField.class, "statsFilter").setText("nobody"));
+            waitForTable("stats", List.of());
+            run(() -> component(JButton.class, "statsClear").doClick());
+            until("the row is back", () -> cells(stats).size() == 1);
+
+            javax.swing.JTabbedPane tabs = component(javax.swing.JTabbedPane.class, "tabs");
+            run(() -> tabs.setSelectedIndex(tabs.indexOfTab("Link statistics")));
+            until("the statistics tab shows", stats::isShowing);
+            run(() -> {
+                java.awt.Rectangle cell = stats.getCellRect(0, 0, true);
+                stats.dispatchEvent(new java.awt.event.MouseEvent(stats, java.awt.event.MouseEvent.MOUSE_PRESSED,
+                        System.currentTimeMillis(), java.awt.event.InputEvent.BUTTON3_DOWN_MASK, cell.x + 2, cell.y + 2, 1, true,
+                        java.awt.event.MouseEvent.BUTTON3));
+            });
+            until("the force menu of r1 - r2 shows", () -> !popupItems().isEmpty());
+            assertEquals(List.of("Force down r1 - r2", "Force up r1 - r2", "Release to the model"), onEdt(this::popupItems));
+            run(() -> javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath());
+            run(() -> Stream.of(java.awt.Window.getWindows()).flatMap(w -> Gui.all(w, javax.swing.JPopupMenu.class).stream())
+                    .forEach(menu -> menu.setVisible(false)));
+        }
+    }
+
+    /** The statistics table's one row, without the throughput columns (they move with time). Event thread. */
+    private static List<String> statistics(JTable stats) {
+        List<List<String>> rows = cells(stats);
+        if (rows.size() != 1) {
+            return List.of();
+        }
+        List<String> row = new java.util.ArrayList<>(rows.get(0));
+        row.subList(7, 9).clear();
+        return row;
+    }
+
+    /** The enabled items of the showing popup menus. Event thread. */
+    private List<String> popupItems() {
+        return Stream.of(java.awt.Window.getWindows())
+                .flatMap(w -> Gui.all(w, javax.swing.JPopupMenu.class).stream())
+                .filter(java.awt.Component::isShowing)
+                .flatMap(menu -> Gui.all(menu, javax.swing.JMenuItem.class).stream())
+                .filter(java.awt.Component::isEnabled)
+                .map(javax.swing.JMenuItem::getText)
+                .toList();
+    }
+
+    @Test
     void aPortInUseOrABadPortIsSaidAndStartWorksOnceFixed() throws Exception {
         try (ServerSocket taken = new ServerSocket()) {
             taken.bind(new InetSocketAddress("127.0.0.1", 0));

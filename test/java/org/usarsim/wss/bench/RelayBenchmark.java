@@ -25,7 +25,8 @@ import java.util.regex.Pattern;
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RelayBenchmark [--seconds 5] [--runs 3] [--only NAME]
  * </pre>
- * NAME is one of throughput, latency, split, many, eventlog.
+ * NAME is one of throughput, latency, split, many, eventlog, counting; --baseline JAR adds a build
+ * from before a change (a wss.jar or a classes folder) to the counting section.
  */
 public final class RelayBenchmark {
 
@@ -44,11 +45,13 @@ public final class RelayBenchmark {
         int seconds = 5;
         int runs = 3;
         String only = null;
+        String baseline = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
                 case "--runs" -> runs = Integer.parseInt(args[++i]);
                 case "--only" -> only = args[++i];
+                case "--baseline" -> baseline = args[++i];
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
@@ -70,6 +73,9 @@ public final class RelayBenchmark {
         }
         if (only == null || only.equals("eventlog")) {
             benchmark.eventLog();
+        }
+        if (only == null || only.equals("counting")) {
+            benchmark.counting(baseline);
         }
         benchmark.killChildren();
         System.exit(0);
@@ -104,24 +110,32 @@ public final class RelayBenchmark {
     }
 
     private double iperfDirect() throws Exception {
+        return iperfDirect(1);
+    }
+
+    private double iperfDirect(int streams) throws Exception {
         IperfServer iperf = iperfServer();
         int port = iperf.port();
         Process server = iperf.process();
         try {
-            return iperfClient(port);
+            return iperfClient(port, streams);
         } finally {
             stop(server);
         }
     }
 
     private double iperfThroughSocat(int buffer) throws Exception {
+        return iperfThroughSocat(buffer, 1);
+    }
+
+    private double iperfThroughSocat(int buffer, int streams) throws Exception {
         IperfServer iperf = iperfServer();
         int port = iperf.port();
         Process server = iperf.process();
         int relay = freePort();
         Process socat = socat(buffer, relay, port);
         try {
-            return iperfClient(relay);
+            return iperfClient(relay, streams);
         } finally {
             stop(socat);
             stop(server);
@@ -218,13 +232,61 @@ public final class RelayBenchmark {
                     }
                     ratios[run] = onRuns[run] / offRuns[run];
                 }
-                StringBuilder pairs = new StringBuilder();
-                for (double ratio : ratios) {
-                    pairs.append(pairs.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", ratio));
-                }
-                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns), pairs, median(ratios));
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns),
+                        ratios(ratios), median(ratios));
             }
         }
+    }
+
+    // ---- per-link counting: this build beside one from before it, with socat and direct in the same runs ----
+
+    /**
+     * One stream and 8 streams through one WSS port, each run through direct loopback, socat and
+     * this build, and (with {@code baseline}) a build from before the per-link statistics, the
+     * two builds alternating which goes first; the ratio this/before is taken per run.
+     */
+    private void counting(String baseline) throws Exception {
+        System.out.printf("%n## Per-link counting: throughput against %s (iperf3, %d s, %d runs)%n%n",
+                baseline == null ? "socat and direct" : "the build before it (" + baseline + "), socat and direct", seconds, runs);
+        try (WssProcess now = WssProcess.start(); WssProcess before = baseline == null ? null : WssProcess.startFrom(baseline)) {
+            iperfThroughWss(now, 8); // unmeasured: both servers warm
+            if (before != null) {
+                iperfThroughWss(before, 8);
+            }
+            System.out.println("| links at once | direct MB/s | socat -b 65536 MB/s | WSS before MB/s | WSS counting MB/s "
+                    + "| counting/before per run | counting/before (median) | counting vs socat | counting vs direct |");
+            System.out.println("|---|---|---|---|---|---|---|---|---|");
+            for (int streams : new int[] {1, 8}) {
+                double[] direct = new double[runs];
+                double[] socat = new double[runs];
+                double[] beforeRuns = new double[runs];
+                double[] nowRuns = new double[runs];
+                double[] ratios = new double[runs];
+                for (int run = 0; run < runs; run++) {
+                    direct[run] = iperfDirect(streams);
+                    socat[run] = iperfThroughSocat(65536, streams);
+                    if (before != null && run % 2 == 1) {
+                        beforeRuns[run] = iperfThroughWss(before, streams);
+                    }
+                    nowRuns[run] = iperfThroughWss(now, streams);
+                    if (before != null && run % 2 == 0) {
+                        beforeRuns[run] = iperfThroughWss(before, streams);
+                    }
+                    ratios[run] = before == null ? Double.NaN : nowRuns[run] / beforeRuns[run];
+                }
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %.0f | %.0f | %s | **%.2fx** | %.2fx | %.2fx |%n", streams,
+                        median(direct), median(socat), median(beforeRuns), median(nowRuns), ratios(ratios), median(ratios),
+                        median(nowRuns) / median(socat), median(nowRuns) / median(direct));
+            }
+        }
+    }
+
+    private static String ratios(double[] ratios) {
+        StringBuilder text = new StringBuilder();
+        for (double ratio : ratios) {
+            text.append(text.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.2f", ratio));
+        }
+        return text.toString();
     }
 
     /** Counts the lines of the event logs and the events they say were dropped, and deletes them. */

@@ -29,13 +29,18 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from the compiled classes with these extra properties. */
     static WssProcess start(String... properties) throws IOException, InterruptedException {
+        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
+        return startFrom(classes, properties);
+    }
+
+    /** Starts the server from another build (a wss.jar, or a classes folder) with these extra properties. */
+    static WssProcess startFrom(String classpath, String... properties) throws IOException, InterruptedException {
         Path config = Files.createTempFile("wss-bench", ".properties");
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));
         Files.write(config, lines);
-        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
         Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classes, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString())
+                "-cp", classpath, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString())
                 .redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
         Thread reader = new Thread(() -> {

@@ -49,7 +49,8 @@ class MapDataTest {
         MapData map = MapData.gather(robots(List.of(forced, gone), "A", "B", "C"), placed);
         assertEquals(new MapData.Robot("A", new Position(1, 2, 0), 42), map.robot("A"));
         assertNull(map.robot("C").position(), "C is listed beside the map");
-        assertEquals(1, map.lines().size(), "a pair whose robot left is not drawn");
-        assertEquals(PairState.FORCED_DOWN, map.lines().get(0).state());
+        assertEquals(List.of("A-B FORCED_DOWN", "A-C UP", "B-C UP"),
+                map.lines().stream().map(line -> line.first() + "-" + line.second() + " " + line.state()).toList(),
+                "every pair of registered robots, in the hub's state where it has one; none with a robot that left");
     }
 }

@@ -12,6 +12,9 @@ final class Defaults {
     /** The address that listens on every interface (wss.bindAddress, --bind). */
     static final String ALL_INTERFACES = "0.0.0.0";
 
+    /** Seconds between two statistics tables in the headless log (wss.statsInterval): 0, never. */
+    static final int STATS_INTERVAL = 0;
+
     private Defaults() {
     }
 }

@@ -231,7 +231,7 @@ public final class Main {
             } catch (RuntimeException e) {
                 throw new Failure(CANNOT_START, model.name() + " did not start: " + e.getMessage());
             }
-            try {
+            try (StatsLog stats = StatsLog.every(settings.statsInterval(), server.hub())) {
                 stop.await();
             } finally {
                 server.close();

@@ -64,6 +64,8 @@ public final class Settings {
             Setting.integer("wss.deadPeerSeconds", "Dead peer detection", 30).from(0).to(86400).unit("s")
                     .note("0: the OS's keepalive")
                     .help("Within how long keepalive finds a robot whose machine vanished"),
+            Setting.integer("wss.statsInterval", "Statistics interval", Defaults.STATS_INTERVAL).from(0).to(86400).unit("s")
+                    .note("0: never").help("Every so many seconds the headless log shows the statistics of every pair of robots"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -226,6 +228,11 @@ public final class Settings {
 
     Path eventLogDir() {
         return Path.of(get("wss.eventLogDir"));
+    }
+
+    /** Seconds between two statistics tables in the headless log; 0: never. */
+    int statsInterval() {
+        return Integer.parseInt(get("wss.statsInterval"));
     }
 
     /** The folder named by wss.pluginDir, whose jars are loaded as model plugins; empty when none is named. */

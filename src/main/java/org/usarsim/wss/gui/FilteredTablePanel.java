@@ -1,7 +1,10 @@
 package org.usarsim.wss.gui;
 
 import java.awt.BorderLayout;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
 import java.util.List;
+import java.util.function.BiConsumer;
 import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -21,11 +24,12 @@ import javax.swing.table.TableRowSorter;
 class FilteredTablePanel<T> extends JPanel {
 
     private final RowsModel<T> model;
+    private final JTable table;
 
     FilteredTablePanel(String title, String name, List<RowsModel.Column<T>> columns) {
         super(new BorderLayout(0, 4));
         model = new RowsModel<>(columns);
-        JTable table = new JTable(model);
+        table = new JTable(model);
         table.setName(name);
         table.setFillsViewportHeight(true);
         TableRowSorter<TableModel> sorter = new TableRowSorter<>(model);
@@ -59,6 +63,29 @@ class FilteredTablePanel<T> extends JPanel {
         top.add(filterRow, BorderLayout.SOUTH);
         add(top, BorderLayout.NORTH);
         add(new JScrollPane(table), BorderLayout.CENTER);
+    }
+
+    /** Event thread: calls {@code action} with the row under a right-click (selected first) and the click. */
+    void onRightClick(BiConsumer<T, MouseEvent> action) {
+        table.addMouseListener(new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                popup(e);
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                popup(e);
+            }
+
+            private void popup(MouseEvent e) {
+                int row = table.rowAtPoint(e.getPoint());
+                if (e.isPopupTrigger() && row >= 0) {
+                    table.setRowSelectionInterval(row, row);
+                    action.accept(model.row(table.convertRowIndexToModel(row)), e);
+                }
+            }
+        });
     }
 
     /** Event thread. */

@@ -43,8 +43,9 @@ public final class MainWindow {
     private final RobotsPanel robots = new RobotsPanel();
     private final PortsPanel ports = new PortsPanel();
     private final LinksPanel links = new LinksPanel();
-    private final LogPanel log = new LogPanel();
     private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
+    private final StatsPanel stats = new StatsPanel(forceMenu);
+    private final LogPanel log = new LogPanel();
     private final MapPanel map = new MapPanel(forceMenu);
     private final NetworkView view = new NetworkView();
     private final Timer timer;
@@ -125,6 +126,7 @@ public final class MainWindow {
         tabs.setName("tabs");
         tabs.addTab("Connections", tables);
         tabs.addTab("Map", map);
+        tabs.addTab("Link statistics", stats);
         JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabs, log);
         center.setResizeWeight(0.75);
         center.setBorder(null);
@@ -163,6 +165,7 @@ public final class MainWindow {
             robots.show(snapshot.robots());
             ports.show(snapshot.ports());
             links.show(snapshot.links());
+            stats.show(snapshot.pairs());
         }
         MapData mapData = view.pollMap();
         if (mapData != null) {

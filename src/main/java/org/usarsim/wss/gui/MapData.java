@@ -2,8 +2,8 @@ package org.usarsim.wss.gui;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
-import java.util.stream.Collectors;
+import java.util.HashMap;
+import java.util.Map;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.hub.PairState;
 import org.usarsim.wss.model.Position;
@@ -28,10 +28,10 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
 
     /**
      * Gathers the map of the hub's robots from the model (its query methods only: quick, and never
-     * the hub's lock): positions, open-space ranges, walls and cutoff, and a line for each pair the
-     * snapshot lists with both robots registered; while it lists none (no statistics), a line for
-     * every pair of registered robots, up or broken as the model allows. Strengths are the
-     * model's now. Off the event thread.
+     * the hub's lock): positions, open-space ranges, walls and cutoff, and a line for every pair of
+     * registered robots, in the state the snapshot's pairs give it (forced ones included), or, for
+     * a pair the hub has not seen yet, up or broken as the model allows. Strengths are the model's
+     * now. Off the event thread.
      */
     static MapData gather(HubSnapshot hub, PropagationModel model) {
         List<Robot> robots = new ArrayList<>();
@@ -39,23 +39,20 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
             String name = entry.name();
             robots.add(new Robot(name, model.positionOf(name).orElse(null), model.rangeFor(name, name)));
         }
+        Map<String, PairState> states = new HashMap<>();
+        for (HubSnapshot.PairEntry pair : hub.pairs()) {
+            states.put(pair.first() + '\n' + pair.second(), pair.state());
+        }
         List<Line> lines = new ArrayList<>();
-        if (!hub.pairs().isEmpty()) {
-            Set<String> registered = robots.stream().map(Robot::name).collect(Collectors.toSet());
-            for (HubSnapshot.PairEntry pair : hub.pairs()) {
-                if (registered.contains(pair.first()) && registered.contains(pair.second())) {
-                    lines.add(new Line(pair.first(), pair.second(), pair.state(),
-                            model.getSignalStrengthForPair(pair.first(), pair.second())));
+        for (int i = 0; i < robots.size(); i++) {
+            for (int j = i + 1; j < robots.size(); j++) {
+                String a = robots.get(i).name();
+                String b = robots.get(j).name();
+                PairState state = states.get(a + '\n' + b);
+                if (state == null) {
+                    state = model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
                 }
-            }
-        } else {
-            for (int i = 0; i < robots.size(); i++) {
-                for (int j = i + 1; j < robots.size(); j++) {
-                    String a = robots.get(i).name();
-                    String b = robots.get(j).name();
-                    PairState state = model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
-                    lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b)));
-                }
+                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b)));
             }
         }
         return new MapData(robots, lines, model.walls(), model.cutoff());

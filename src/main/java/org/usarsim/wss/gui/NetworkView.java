@@ -27,6 +27,8 @@ import org.usarsim.wss.model.WssEventListener;
 final class NetworkView implements WssEventListener {
 
     private static final Logger LOG = Logger.getLogger(NetworkView.class.getName());
+    /** How often a snapshot is taken even without an event: the link statistics' bytes and throughput move on. */
+    static final long STATISTICS_NS = java.util.concurrent.TimeUnit.SECONDS.toNanos(1);
 
     private final ExecutorService snapshots = Executors.newSingleThreadExecutor(task -> {
         Thread thread = new Thread(task, "wss-window-view");
@@ -37,6 +39,8 @@ final class NetworkView implements WssEventListener {
     private final AtomicBoolean taking = new AtomicBoolean();
     private final AtomicReference<HubSnapshot> ready = new AtomicReference<>();
     private final AtomicReference<MapData> readyMap = new AtomicReference<>();
+    /** When the last snapshot was asked for (System.nanoTime()); event thread only. */
+    private long askedNs;
     /** Guards {@link #source} against a snapshot of a server that stopped meanwhile. */
     private final Object sourceLock = new Object();
     private Servers.Running source;
@@ -70,6 +74,10 @@ final class NetworkView implements WssEventListener {
      * snapshot when there is a new one, else null.
      */
     HubSnapshot poll() {
+        long now = System.nanoTime();
+        if (now - askedNs >= STATISTICS_NS) {
+            stale.set(true); // the link statistics count on without an event
+        }
         if (!taking.get()) {
             Servers.Running from;
             PropagationModel of;
@@ -80,6 +88,9 @@ final class NetworkView implements WssEventListener {
             if (from != null) {
                 boolean hub = stale.getAndSet(false);
                 taking.set(true);
+                if (hub) {
+                    askedNs = now;
+                }
                 snapshots.execute(() -> take(from, of, hub));
             }
         }

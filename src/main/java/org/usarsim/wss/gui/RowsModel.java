@@ -26,6 +26,11 @@ final class RowsModel<T> extends AbstractTableModel {
         }
     }
 
+    /** The row at this index of the model (not of a sorted or filtered view). */
+    T row(int index) {
+        return rows.get(index);
+    }
+
     @Override
     public int getRowCount() {
         return rows.size();

@@ -6,7 +6,7 @@ import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
 
-/** Writes each event to the log as one line (data sent only at FINEST: it happens per chunk). */
+/** Writes each event to the log as one line (data sent only at FINEST: it happens per chunk; in and out of range at FINE). */
 final class EventLogger implements WssEventListener {
 
     private static final Logger LOG = Logger.getLogger("org.usarsim.wss.events");
@@ -26,15 +26,17 @@ final class EventLogger implements WssEventListener {
         LOG.info(() -> "out of battery: " + robot);
     }
 
+    /** FINE: the hub's INFO line "pair A - B: broken" says the change already (Hub.recordState). */
     @Override
     public void connectionOutOfRange(String from, String to, double strength, double distance) {
-        LOG.info(() -> "out of range: " + from + " - " + to + " at " + Strengths.format(strength)
+        LOG.fine(() -> "out of range: " + from + " - " + to + " at " + Strengths.format(strength)
                 + " dBm, " + Strengths.format(distance) + " m");
     }
 
+    /** FINE: the hub's INFO line "pair A - B: up" says the change already. */
     @Override
     public void connectionInRange(String from, String to) {
-        LOG.info(() -> "in range: " + from + " - " + to);
+        LOG.fine(() -> "in range: " + from + " - " + to);
     }
 
     @Override

@@ -55,6 +55,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
     private final Set<RobotPair> broken = new HashSet<>();
+    /** The statistics of every pair seen, forgotten with the pair's ports. */
+    private final LinkStats stats = new LinkStats();
     private final PortMemory memory;
     private final KeepAlive keepAlive;
     /** Set by {@link #close}: nothing registers or listens any more. */
@@ -284,6 +286,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return new DnsResult(DnsOutcome.NO_SUCH_TARGET_PORT, -1);
             }
             PortKey key = new PortKey(from, to, resolved);
+            pairStats(key.pair());
             WssPort port = ports.get(key);
             if (port == null) {
                 long held = ports.fromCount(from);
@@ -338,10 +341,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         boolean allowed = modelAllows(key.from(), key.to());
         String refusal;
         InetSocketAddress targetAddress = null;
+        PairStats pairStats = null;
         synchronized (lock) {
             refusal = refusal(port, listener, peer, allowed);
             if (refusal == null) {
                 targetAddress = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
+                pairStats = pairStats(key.pair());
             }
         }
         if (refusal != null) {
@@ -350,7 +355,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
         Link link;
         try {
-            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events);
+            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events, pairStats);
         } catch (IOException e) {
             warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
@@ -433,7 +438,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
+            PairStats pairStats = pairStats(pair); // first seen now: seen up until this break
             changed = broken.add(pair);
+            if (changed) {
+                pairStats.modelChanged(true);
+                recordState(pair, portEvents);
+            }
             for (WssPort port : ports.between(pair)) {
                 if (port.stopListening()) {
                     changed = true;
@@ -442,7 +452,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 links.addAll(port.links());
             }
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.OUT_OF_RANGE);
         portEvents.forEach(Runnable::run);
         return changed || !links.isEmpty();
     }
@@ -453,7 +463,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
+            PairStats pairStats = pairStats(pair);
             changed = broken.remove(pair);
+            if (changed) {
+                pairStats.modelChanged(false);
+                recordState(pair, portEvents);
+            }
             for (WssPort port : ports.between(pair)) {
                 if (!port.listening() && shouldListen(port.key, true)) {
                     changed |= listen(port, portEvents);
@@ -480,8 +495,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
+            if (memory.left(name)) { // its pairs' statistics are remembered as long as its ports would have been
+                forgetPortsOf(name, portEvents);
+            }
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.KICKED);
         if (robot != null) {
             robot.session().close();
             LOG.info("kicked out " + name);
@@ -518,7 +536,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
         List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
         List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
+        List<PairStats> pairStats;
         synchronized (lock) {
+            pairStats = stats.all();
             for (RegisteredRobot robot : robots.values()) {
                 robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
             }
@@ -538,7 +558,43 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 .thenComparingInt(HubSnapshot.PortEntry::targetPort));
         linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
                 .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
-        return new HubSnapshot(robotEntries, portEntries, linkEntries, List.of());
+        return new HubSnapshot(robotEntries, portEntries, linkEntries, pairEntries(pairStats));
+    }
+
+    /** The pairs' statistics, sorted by pair; the model is asked for strengths and positions here, without the lock. */
+    private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats) {
+        long now = System.nanoTime();
+        List<HubSnapshot.PairEntry> entries = new ArrayList<>();
+        for (PairStats pair : pairStats) {
+            String first = pair.pair.first();
+            String second = pair.pair.second();
+            double[] rates = pair.rates(now);
+            CloseReason lastClose = pair.lastClose();
+            entries.add(new HubSnapshot.PairEntry(first, second, pair.state(), strength(first, second), distance(first, second),
+                    pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1], pair.connections(),
+                    pair.breaks(), pair.resumes(), pair.upShare(now), lastClose == null ? null : lastClose.toString()));
+        }
+        entries.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));
+        return entries;
+    }
+
+    private double strength(String first, String second) {
+        try {
+            return model.getSignalStrengthForPair(first, second);
+        } catch (RuntimeException e) {
+            return Double.NaN; // a robot the model does not know (gone, say)
+        }
+    }
+
+    /** The distance between the robots' positions, NaN unless the model knows both. */
+    private double distance(String first, String second) {
+        try {
+            var a = model.positionOf(first);
+            var b = model.positionOf(second);
+            return a.isPresent() && b.isPresent() ? a.get().distanceTo(b.get()) : Double.NaN;
+        } catch (RuntimeException e) {
+            return Double.NaN;
+        }
     }
 
     // ---- port memory ----
@@ -579,9 +635,45 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         if (!kept) {
             memory.clear(name);
         }
+        stats.forget(name, pair -> ports.between(pair).isEmpty());
     }
 
     // ---- rules ----
+
+    /** The pair's state now: an operator's force wins over the model's verdict. Under the lock. */
+    private PairState stateOf(RobotPair pair) {
+        Force force = forced(pair);
+        if (force != null) {
+            return force == Force.DOWN ? PairState.FORCED_DOWN : PairState.FORCED_UP;
+        }
+        return broken.contains(pair) ? PairState.BROKEN : PairState.UP;
+    }
+
+    /** How an operator forced the pair, or null when the model decides. Under the lock. */
+    private Force forced(RobotPair pair) {
+        return null;
+    }
+
+    /** The pair's statistics, from now on when it was not seen yet. Under the lock. */
+    private PairStats pairStats(RobotPair pair) {
+        return stats.of(pair, stateOf(pair));
+    }
+
+    /**
+     * Under the lock: records the pair's state now (after a break, a resume or a force); a change
+     * is logged, one line, through {@code after}, to be run after the lock.
+     */
+    private void recordState(RobotPair pair, List<Runnable> after) {
+        PairState now = stateOf(pair);
+        if (pairStats(pair).moveTo(now, System.nanoTime())) {
+            after.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+        }
+    }
+
+    /** Closes the links after the lock, saying why (the last close their pairs' statistics show). */
+    private static void closeLinks(List<Link> links, CloseReason reason) {
+        links.forEach(link -> link.close(reason));
+    }
 
     /**
      * A WSS port listens while both robots are registered, the target still accepts on the

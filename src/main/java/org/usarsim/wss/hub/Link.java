@@ -12,6 +12,8 @@ import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.atomic.LongAdder;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
@@ -44,13 +46,18 @@ final class Link implements Runnable {
     private final Hub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
+    private final PairStats stats;
+    /** Why the link closes: the first reason given wins. */
+    private final AtomicReference<CloseReason> closeReason = new AtomicReference<>();
     /** Set once the connection to the target is made (what the window lists as established). */
     private volatile boolean established;
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
-            SocketBuffers buffers, WssEventListener events) throws IOException {
+            SocketBuffers buffers, WssEventListener events, PairStats stats) throws IOException {
         this.hub = hub;
+        this.stats = stats;
         this.port = port;
         this.key = port.key;
         this.source = source;
@@ -97,6 +104,12 @@ final class Link implements Runnable {
 
     /** Closes both ends now; the link's thread ends and tells the hub. Safe from any thread, more than once. */
     void close() {
+        close(CloseReason.PEER_CLOSED);
+    }
+
+    /** As {@link #close()}, saying why (the pair's last close, unless another reason came first). */
+    void close(CloseReason reason) {
+        closeReason.compareAndSet(null, reason);
         if (closed.compareAndSet(false, true)) {
             Closing.quietly(source);
             Closing.quietly(target);
@@ -115,10 +128,12 @@ final class Link implements Runnable {
         boolean established = false;
         try {
             if (!connect()) {
+                closeReason.compareAndSet(null, CloseReason.TARGET_REFUSED);
                 return;
             }
             established = true;
             this.established = true;
+            stats.opened();
             hub.linkEstablished(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
@@ -130,6 +145,7 @@ final class Link implements Runnable {
             LOG.log(Level.WARNING, this + " failed: " + e, e);
         } finally {
             close();
+            stats.closed(closeReason.get());
             Closing.quietly(selector);
             hub.linkClosed(this, established);
         }
@@ -249,6 +265,8 @@ final class Link implements Runnable {
         private final String fromRobot;
         private final String toRobot;
         private final ByteBuffer buffer = ByteBuffer.allocateDirect(chunkSize);
+        /** The pair's count of bytes written this way: one add per write, no lock. */
+        private final LongAdder forwarded;
         /** The buffer holds read bytes not yet written. */
         private boolean pending;
         /** Nagle's algorithm is on for the output (see {@link #coalesce}). */
@@ -260,6 +278,7 @@ final class Link implements Runnable {
             this.out = out;
             this.fromRobot = fromRobot;
             this.toRobot = toRobot;
+            this.forwarded = stats.bytesFrom(fromRobot);
         }
 
         boolean pending() {
@@ -340,7 +359,10 @@ final class Link implements Runnable {
             if (!pending) {
                 return;
             }
-            out.write(buffer);
+            int written = out.write(buffer);
+            if (written > 0) {
+                forwarded.add(written);
+            }
             if (!buffer.hasRemaining()) {
                 buffer.clear();
                 pending = false;

@@ -9,5 +9,10 @@ public enum PairState {
     /** An operator forced the pair down, whatever the model says. */
     FORCED_DOWN,
     /** An operator forced the pair up, whatever the model says. */
-    FORCED_UP
+    FORCED_UP;
+
+    /** How the window and the log say it: "up", "broken", "forced down", "forced up". */
+    public String text() {
+        return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
+    }
 }

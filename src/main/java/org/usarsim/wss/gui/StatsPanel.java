@@ -1,0 +1,31 @@
+package org.usarsim.wss.gui;
+
+import java.util.List;
+import org.usarsim.wss.hub.HubSnapshot.PairEntry;
+
+/**
+ * "Link statistics": a row per pair of robots the hub has seen (docs/gui.md), from the same
+ * snapshots as the other tables; a right-click on a row opens the {@link ForceMenu} of its pair.
+ */
+final class StatsPanel extends FilteredTablePanel<PairEntry> {
+
+    StatsPanel(ForceMenu forceMenu) {
+        super("Link statistics", "stats", List.of(
+                new RowsModel.Column<>("Robot A", String.class, PairEntry::first),
+                new RowsModel.Column<>("Robot B", String.class, PairEntry::second),
+                new RowsModel.Column<>("State", String.class, pair -> pair.state().text()),
+                new RowsModel.Column<>("Strength (dBm)", Double.class, PairEntry::strength),
+                new RowsModel.Column<>("Distance (m)", Double.class, PairEntry::distance),
+                new RowsModel.Column<>("Bytes A>B", Long.class, PairEntry::bytesFirstToSecond),
+                new RowsModel.Column<>("Bytes B>A", Long.class, PairEntry::bytesSecondToFirst),
+                new RowsModel.Column<>("B/s A>B", Long.class, pair -> Math.round(pair.rateFirstToSecond())),
+                new RowsModel.Column<>("B/s B>A", Long.class, pair -> Math.round(pair.rateSecondToFirst())),
+                new RowsModel.Column<>("Connections", Long.class, PairEntry::connections),
+                new RowsModel.Column<>("Breaks", Long.class, PairEntry::breaks),
+                new RowsModel.Column<>("Resumes", Long.class, PairEntry::resumes),
+                new RowsModel.Column<>("Up %", Double.class, pair -> Math.round(pair.upShare() * 1000) / 10.0),
+                new RowsModel.Column<>("Last close", String.class, pair -> pair.lastClose() == null ? "" : pair.lastClose())));
+        onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
+                .show(click.getComponent(), click.getX(), click.getY()));
+    }
+}

@@ -1,0 +1,38 @@
+package org.usarsim.wss.hub;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Predicate;
+import org.usarsim.wss.model.RobotPair;
+
+/**
+ * The statistics of every pair the hub has seen (a DNS between them, or the model's verdict on
+ * them), kept until the hub forgets the pair's ports: {@link #forget} runs when a robot's ports
+ * are forgotten (wss.portMemory after it left, or was kicked). The map is guarded by the hub's lock.
+ */
+final class LinkStats {
+
+    private final Map<RobotPair, PairStats> pairs = new HashMap<>();
+
+    /** The pair's statistics, from now on when it was not seen yet. Under the hub's lock. */
+    PairStats of(RobotPair pair, PairState state) {
+        return pairs.computeIfAbsent(pair, p -> new PairStats(p, state, System.nanoTime()));
+    }
+
+    /** Under the hub's lock. */
+    PairStats get(RobotPair pair) {
+        return pairs.get(pair);
+    }
+
+    /** Forgets the pairs of the robot that {@code gone} says are gone. Under the hub's lock. */
+    void forget(String robot, Predicate<RobotPair> gone) {
+        pairs.keySet().removeIf(pair -> pair.contains(robot) && gone.test(pair));
+    }
+
+    /** Under the hub's lock. */
+    List<PairStats> all() {
+        return new ArrayList<>(pairs.values());
+    }
+}

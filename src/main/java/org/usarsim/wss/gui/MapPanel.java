@@ -298,8 +298,10 @@ final class MapPanel extends JPanel {
             g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 160));
             g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
             g.draw(circle);
-            String label = String.format(Locale.ROOT, "range of %s: %.1f m", robot.name(), robot.range());
-            g.drawString(label, (float) (at.getX() + r * Math.cos(Math.PI / 4) + 4), (float) (at.getY() - r * Math.sin(Math.PI / 4) - 4));
+            // Under the robot's name: the circle itself may lie beyond the canvas.
+            String label = String.format(Locale.ROOT, "range %.1f m", robot.range());
+            g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
+            label(g, label, at.getX() + DOT, at.getY() + 2 * DOT);
         }
 
         private void paintLines(Graphics2D g, MapTransform t, MapData shown) {
@@ -315,9 +317,19 @@ final class MapPanel extends JPanel {
                 if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
                     String text = String.format(Locale.ROOT, "%.1f dBm", line.strength());
                     g.setFont(getFont().deriveFont(Font.PLAIN, 10f));
-                    g.drawString(text, (float) ((a.getX() + b.getX()) / 2 + 4), (float) ((a.getY() + b.getY()) / 2 - 4));
+                    label(g, text, (a.getX() + b.getX()) / 2 + 4, (a.getY() + b.getY()) / 2 - 4);
                 }
             }
+        }
+
+        /** Text in the current colour and font on a light patch, legible over lines and walls. */
+        private void label(Graphics2D g, String text, double x, double y) {
+            FontMetrics metrics = g.getFontMetrics();
+            Color ink = g.getColor();
+            g.setColor(new Color(255, 255, 255, 210));
+            g.fillRect((int) x - 2, (int) y - metrics.getAscent(), metrics.stringWidth(text) + 4, metrics.getHeight());
+            g.setColor(ink);
+            g.drawString(text, (float) x, (float) y);
         }
 
         private Stroke lineStroke(boolean dashed) {

@@ -54,6 +54,9 @@ class BadSettingsTest {
         "wss.socketBuffer|4MB", "wss.socketBuffer|-1", "wss.socketBuffer|268435457", "wss.socketBuffer|''",
         "wss.pluginDir|/no/such/folder",
         "wss.logLevel|DEBUG", "wss.logLevel|info", "wss.logLevel|''",
+        "wss.operators|localhost", "wss.operators|127.0.0.1,", "wss.operators|256.0.0.1", "wss.operators|127.0.0.1 127.0.0.2",
+        "wss.force.down|R1", "wss.force.down|R1:R1", "wss.force.down|R1:R2,", "wss.force.down|R1:R2:R3", "wss.force.down|R 1:R2",
+        "wss.force.up|:R2", "wss.force.up|R1;R2", "wss.force.up|R1:{R2}",
         "usarsim.host|''", "usarsim.host|my host",
         "usarsim.port|seven", "usarsim.port|0", "usarsim.port|65536", "usarsim.port|''",
         "usarsim.interval|1s", "usarsim.interval|99", "usarsim.interval|60001", "usarsim.interval|''",
@@ -111,6 +114,8 @@ class BadSettingsTest {
         "usarsim.interval=often|usarsim.interval = 'often'",
         "wss.model=NoSuchModel|wss.model = 'NoSuchModel' is not a known model",
         "ENCODING|not UTF-8",
+        "'wss.force.down=A:B\nwss.force.up=B:A'|the pair A:B is in both wss.force.down and wss.force.up",
+        "wss.force.down=A:A|is not a comma-separated list of robot pairs A:B",
     })
     void theServerExitsTwoWithOneLine(String content, String expected) throws Exception {
         Path file = content.equals("ENCODING")

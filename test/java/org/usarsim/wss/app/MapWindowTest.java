@@ -40,6 +40,7 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.hub.PairState;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Position;
@@ -137,6 +138,17 @@ class MapWindowTest {
             assertEquals(MapProbe.broken(), map.pixelAlong("Base", "Far", 0.3), "painted grey");
             assertEquals(MapProbe.strong(), map.pixelAlong("Base", "Scout", 0.25), "painted green");
             assertEquals("Base - Far", map.lineHit("Base", "Far", 0.3), "a right click there opens the menu on Base - Far");
+
+            // The menu of a line, for real: Base - Scout, in range, forced down, then released.
+            map.chooseOnLine("Base", "Scout", 0.25, "Force down");
+            until("Base - Scout forced down", () -> map.line("Base", "Scout", PairState.FORCED_DOWN));
+            assertEquals(MapProbe.broken(), map.lineColour("Base", "Scout"), "forced down: grey (and dashed)");
+            List<Color> along = java.util.stream.IntStream.rangeClosed(10, 45).mapToObj(i -> map.pixelAlong("Base", "Scout", i / 100.0)).toList();
+            assertTrue(along.contains(MapProbe.broken()), "painted grey: " + along);
+            assertTrue(along.stream().anyMatch(c -> c.getRed() > 200), "with gaps, dashed: " + along);
+            map.chooseOnLine("Base", "Scout", 0.25, "Release");
+            until("Base - Scout back to the model", () -> map.line("Base", "Scout", PairState.UP));
+            assertEquals(MapProbe.strong(), map.lineColour("Base", "Scout"));
         }
     }
 

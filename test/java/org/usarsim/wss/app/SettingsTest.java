@@ -14,13 +14,16 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.Properties;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.logging.Level;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
@@ -41,6 +44,9 @@ class SettingsTest {
             Map.entry("wss.maxPortsPerRobot", "1000"),
             Map.entry("wss.deadPeerSeconds", "30"),
             Map.entry("wss.statsInterval", "0"),
+            Map.entry("wss.operators", "127.0.0.1"),
+            Map.entry("wss.force.down", ""),
+            Map.entry("wss.force.up", ""),
             Map.entry("wss.logLevel", "INFO"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
@@ -90,6 +96,15 @@ class SettingsTest {
     }
 
     @Test
+    void theWindowIsHandedOnlyTheModelKeysTheFileSets() throws Exception {
+        Properties file = props("wss.model", "DistanceOnlyPropagationModel");
+        file.setProperty("wss.port", "0");
+        file.setProperty("distance.n", " 3 ");
+        file.setProperty("usarsim.port", "7436");
+        assertEquals(Map.of("distance.n", "3", "usarsim.port", "7436"), Settings.of(file, "t").modelKeysSetBy(file).asMap());
+    }
+
+    @Test
     void defaultTypedValues() {
         Settings settings = Settings.defaults();
         assertEquals("NoopPropagationModel", settings.modelName());
@@ -109,6 +124,8 @@ class SettingsTest {
         assertEquals(600, config.portMemorySeconds());
         assertEquals(1000, config.maxPortsPerRobot());
         assertEquals(30, config.deadPeerSeconds());
+        assertEquals(Set.of(InetAddress.getByName("127.0.0.1")), config.operators());
+        assertEquals(Map.of(), config.forced());
         assertTrue(config.matchSourceAddress());
     }
 
@@ -310,6 +327,30 @@ class SettingsTest {
         properties.setProperty("wss.socketBuffer", "0");
         assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
                 Settings.of(properties, "t").hubConfig());
+    }
+
+    @Test
+    void operatorsAndForcedPairsFromProperties() throws Exception {
+        Properties properties = new Properties();
+        properties.setProperty("wss.operators", " 127.0.0.1 , 10.0.0.7,::1");
+        properties.setProperty("wss.force.down", "R1:R2, Zed:Alpha");
+        properties.setProperty("wss.force.up", " R2:R3 ,R3:R2");
+        HubConfig config = Settings.of(properties, "t").hubConfig();
+        assertEquals(Set.of(InetAddress.getByName("127.0.0.1"), InetAddress.getByName("10.0.0.7"), InetAddress.getByName("::1")),
+                config.operators());
+        assertEquals(Map.of(RobotPair.of("R1", "R2"), Force.DOWN, RobotPair.of("Alpha", "Zed"), Force.DOWN,
+                RobotPair.of("R2", "R3"), Force.UP), config.forced());
+        properties.setProperty("wss.operators", "");
+        assertEquals(Set.of(), Settings.of(properties, "t").hubConfig().operators(), "empty: nobody");
+    }
+
+    @Test
+    void aPairForcedBothWaysIsRefused() {
+        Properties properties = new Properties();
+        properties.setProperty("wss.force.down", "A:B,C:D");
+        properties.setProperty("wss.force.up", "D:C");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.of(properties, "my.properties"));
+        assertEquals("my.properties: the pair C:D is in both wss.force.down and wss.force.up; force it one way", e.getMessage());
     }
 
     // ---- the chosen model's keys and the others' ----

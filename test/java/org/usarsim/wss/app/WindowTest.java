@@ -57,6 +57,7 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.sim.WorldServer;
 
 /**
@@ -162,6 +163,20 @@ class WindowTest {
             port = Integer.parseInt(matcher.group(1)); // the last start's
         }
         return port;
+    }
+
+    /** A port nothing listens on now (where a world server starts later). */
+    private static int freePort() throws IOException {
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            return free.getLocalPort();
+        }
+    }
+
+    /** Presses Configure (the dialog is modal: from invokeLater) and returns the dialog once it shows. */
+    private java.awt.Window configureDialog(String title) {
+        javax.swing.SwingUtilities.invokeLater(() -> component(JButton.class, "configure").doClick());
+        until(title + " shows", () -> Gui.showing(title).size() == 1);
+        return onEdt(() -> Gui.showing(title).get(0));
     }
 
     private void stop() {
@@ -345,10 +360,7 @@ class WindowTest {
     @Test
     void aSimulatorThatCannotBeReachedIsSaidAndStartWorksOnceItRuns() throws Exception {
         closeWindow();
-        int simulatorPort;
-        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
-            simulatorPort = free.getLocalPort();
-        }
+        int simulatorPort = freePort();
         DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
         Map<String, String> settings = new HashMap<>(Setting.defaults(distanceOnly.settings()));
         settings.put("usarsim.host", "127.0.0.1");
@@ -430,8 +442,67 @@ class WindowTest {
                 windowLog, new Launch(null, null, null, null, true), secondClosed::countDown).frame());
         until("the second window's server runs", () -> find(frame.getContentPane(), JButton.class, "start").getText().equals("Stop"));
         assertEquals("ScriptedModel", onEdt(() -> component(JComboBox.class, "model").getSelectedItem()));
+        stop();
         assertEquals("0", onEdt(() -> component(JTextField.class, "port").getText()));
         run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
         assertTrue(secondClosed.await(10, TimeUnit.SECONDS));
+    }
+
+    @Test
+    void thePortFieldShowsThePortListeningWhileTheServerRunsAndTheTypedOneAfter() throws Exception {
+        assertEquals("0", onEdt(() -> component(JTextField.class, "port").getText()));
+        int port = start();
+        assertTrue(port > 0, "the OS chose a port");
+        assertEquals(String.valueOf(port), onEdt(() -> component(JTextField.class, "port").getText()),
+                "while it runs, the field shows the port robots connect to");
+        new Socket("127.0.0.1", port).close();
+        stop();
+        assertEquals("0", onEdt(() -> component(JTextField.class, "port").getText()), "after Stop, what was typed");
+        assertEquals("0", new WindowSettings(preferences.node("window")).port(), "the stored choice is still 0");
+    }
+
+    @Test
+    void configureShowsTheFilesSettingsOverTheStoredOnesAndOkKeepsWhatWasEntered() throws Exception {
+        closeWindow();
+        int simulatorPort = freePort();
+        DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
+        ModelPreferences stored = new ModelPreferences(preferences.node("models"));
+        stored.store(distanceOnly, Map.of("usarsim.port", "1", "usarsim.interval", "400", "distance.n", "2"));
+        // As --config gives them: only the model keys the file sets.
+        Map<String, String> file = Map.of("usarsim.host", "127.0.0.1", "usarsim.port", String.valueOf(simulatorPort),
+                "usarsim.interval", "150");
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(file), false),
+                List.of(new NoopPropagationModel(), distanceOnly, new ObstaclePropagationModel()));
+
+        String title = "DistanceOnlyPropagationModel Configuration";
+        java.awt.Window dialog = configureDialog(title);
+        assertEquals(String.valueOf(simulatorPort), onEdt(() -> find(dialog, JTextField.class, "usarsim.port").getText()),
+                "the file's port, over the stored 1");
+        assertEquals("150", onEdt(() -> find(dialog, JTextField.class, "usarsim.interval").getText()), "the file's, over the stored 400");
+        assertEquals("2", onEdt(() -> find(dialog, JTextField.class, "distance.n").getText()), "the stored, which the file does not set");
+        run(() -> find(dialog, JTextField.class, "usarsim.interval").setText("175"));
+        run(() -> find(dialog, JButton.class, "ok").doClick());
+        until("the dialog closed", () -> Gui.showing(title).isEmpty());
+        assertEquals("175", stored.load(distanceOnly).get("usarsim.interval"), "OK stored what was entered");
+        assertEquals(String.valueOf(simulatorPort), stored.load(distanceOnly).get("usarsim.port"), "and what it showed");
+
+        // Another model's dialog still shows the file's values: OK stored DistanceOnly's only.
+        run(() -> component(JComboBox.class, "model").setSelectedItem("ObstaclePropagationModel"));
+        String obstacleTitle = "ObstaclePropagationModel Configuration";
+        java.awt.Window obstacleDialog = configureDialog(obstacleTitle);
+        assertEquals("150", onEdt(() -> find(obstacleDialog, JTextField.class, "usarsim.interval").getText()));
+        run(() -> find(obstacleDialog, JButton.class, "cancel").doClick());
+        until("the Obstacle dialog closed", () -> Gui.showing(obstacleTitle).isEmpty());
+        run(() -> component(JComboBox.class, "model").setSelectedItem("DistanceOnlyPropagationModel"));
+
+        WorldServer world = WorldServer.start(Path.of("docs/examples/corridor.world"), InetAddress.getByName("127.0.0.1"), simulatorPort);
+        try {
+            start();
+            until("the model says how it runs", () -> find(frame.getContentPane(), JTextArea.class, "log").getText()
+                    .contains("DistanceOnlyPropagationModel polls the simulator at 127.0.0.1:" + simulatorPort + " every 175 ms"));
+            stop();
+        } finally {
+            world.close();
+        }
     }
 }

@@ -15,18 +15,16 @@ import java.util.prefs.Preferences;
 import java.util.stream.Collectors;
 import javax.swing.JTable;
 import javax.swing.SwingUtilities;
+import org.usarsim.wss.gui.HubServers;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
-import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.HubSnapshot;
-import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /**
@@ -110,42 +108,8 @@ public final class WindowBenchmark {
         Preferences preferences = Preferences.userRoot().node("wss-bench-" + System.nanoTime());
         WindowLog windowLog = new WindowLog();
         java.util.logging.Logger.getLogger("").addHandler(windowLog);
-        List<Hub> hubs = new ArrayList<>();
-        Servers servers = new Servers() {
-            @Override
-            public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Exception {
-                Hub hub = new Hub(config(), model);
-                hub.addListener(listener);
-                hub.start();
-                hubs.add(hub);
-                return new Running() {
-                    @Override
-                    public int port() {
-                        return hub.controlPort();
-                    }
-
-                    @Override
-                    public HubSnapshot snapshot() {
-                        return hub.snapshot();
-                    }
-
-                    @Override
-                    public void force(String robotA, String robotB, org.usarsim.wss.hub.Force force) {
-                        hub.force(robotA, robotB, force);
-                    }
-
-                    @Override
-                    public void release(String robotA, String robotB) {
-                        hub.release(robotA, robotB);
-                    }
-
-                    @Override
-                    public void stop() {
-                        hub.close();
-                    }
-                };
-            }
-        };
+        HubServers servers = new HubServers(config());
+        List<Hub> hubs = servers.hubs();
         CountDownLatch closed = new CountDownLatch(1);
         MainWindow[] window = new MainWindow[1];
         SwingUtilities.invokeAndWait(() -> window[0] = MainWindow.open(servers, List.of(new NoopPropagationModel()),

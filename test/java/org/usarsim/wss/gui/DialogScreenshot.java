@@ -72,9 +72,10 @@ public final class DialogScreenshot {
                 case "Tuned" -> tunedPlugin();
                 default -> new DistanceOnlyPropagationModel();
             };
+            ModelPreferences preferences = new ModelPreferences(root);
             SwingUtilities.invokeAndWait(() -> dialog[0] = shown instanceof SimulatorModel simulatorModel
-                    ? new DistanceModelDialog(null, simulatorModel, finalEditable, new ModelPreferences(root))
-                    : new SettingsDialog(null, shown, finalEditable, new ModelPreferences(root)));
+                    ? new DistanceModelDialog(null, simulatorModel, finalEditable, preferences, preferences.load(shown))
+                    : new SettingsDialog(null, shown, finalEditable, preferences, preferences.load(shown)));
             SwingUtilities.invokeLater(() -> dialog[0].setVisible(true));
             Gui.until("the dialog shows", () -> dialog[0].isShowing());
             for (Map.Entry<String, String> entry : typed.entrySet()) {

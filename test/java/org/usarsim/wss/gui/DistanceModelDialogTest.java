@@ -72,7 +72,7 @@ class DistanceModelDialogTest {
 
     /** Opens the modal dialog without blocking the test: shown from invokeLater, then driven from here. */
     private DistanceModelDialog open(SimulatorModel model, boolean editable) {
-        dialog = Gui.onEdt(() -> new DistanceModelDialog(null, model, editable, preferences));
+        dialog = Gui.onEdt(() -> new DistanceModelDialog(null, model, editable, preferences, preferences.load(model)));
         SwingUtilities.invokeLater(() -> dialog.setVisible(true));
         Gui.until("the dialog shows", () -> dialog.isShowing());
         return dialog;

@@ -108,6 +108,28 @@ public final class MapProbe {
         });
     }
 
+    /** Right-clicks this fraction of the way along the pair's line and chooses the menu item that starts with {@code item}. */
+    public void chooseOnLine(String a, String b, double fraction, String item) {
+        edt(() -> {
+            Point2D from = map.screenOf(a);
+            Point2D to = map.screenOf(b);
+            javax.swing.JPopupMenu menu = map.menuAt(from.getX() + (to.getX() - from.getX()) * fraction,
+                    from.getY() + (to.getY() - from.getY()) * fraction);
+            for (java.awt.Component child : menu.getComponents()) {
+                if (child instanceof javax.swing.JMenuItem menuItem && menuItem.getText().startsWith(item)) {
+                    menuItem.doClick();
+                    return null;
+                }
+            }
+            throw new AssertionError("no item " + item + " in the menu of " + a + " - " + b);
+        });
+    }
+
+    /** Whether the pair's line is drawn dashed (forced) in this state. */
+    public boolean line(String a, String b, org.usarsim.wss.hub.PairState state) {
+        return edt(() -> line(a, b).state() == state);
+    }
+
     /** Selects the robot whose range the map draws. */
     public void select(String robot) {
         Gui.run(() -> map.select(robot));

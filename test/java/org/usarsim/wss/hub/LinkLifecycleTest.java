@@ -24,7 +24,6 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutorService;
@@ -66,14 +65,7 @@ class LinkLifecycleTest {
 
     @AfterEach
     void stop() throws Exception {
-        Collections.reverse(toClose);
-        for (AutoCloseable closeable : toClose) {
-            try {
-                closeable.close();
-            } catch (Exception ignored) {
-                // closed already
-            }
-        }
+        Sockets.closeAllNewestFirst(toClose);
         server.close();
         pool.shutdownNow();
         assertTrue(pool.awaitTermination(5, TimeUnit.SECONDS));

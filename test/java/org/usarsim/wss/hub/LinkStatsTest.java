@@ -174,6 +174,27 @@ class LinkStatsTest {
     }
 
     @Test
+    void aForcedPairShowsForcedAndItsConnectionsCloseAsForced() throws Exception {
+        start(600);
+        connectAToB(robotsAAndB(), 1);
+        server.hub.force("B", "A", Force.DOWN);
+        Wait.until("the link closed by the force", () -> "forced".equals(pair().lastClose()));
+        assertEquals(PairState.FORCED_DOWN, pair().state());
+        double downShare = pair().upShare();
+        assertTrue(downShare < 1, "forced down is not up: " + downShare);
+        links.breakConnectionsForPair("A", "B");
+        assertEquals(PairState.FORCED_DOWN, pair().state(), "a force wins over the model");
+        assertEquals(1, pair().breaks(), "the model's break is counted all the same");
+        try (LogCapture log = LogCapture.of(Hub.class.getName(), Level.INFO)) {
+            server.hub.force("A", "B", Force.UP);
+            assertEquals(PairState.FORCED_UP, pair().state());
+            server.hub.release("A", "B");
+            assertEquals(PairState.BROKEN, pair().state(), "released: the model's last verdict");
+            assertEquals(List.of("pair A - B: broken"), log.messages(Level.INFO), "the force said itself; the release's landing once");
+        }
+    }
+
+    @Test
     void aTargetThatDoesNotAcceptIsTheLastClose() throws Exception {
         start(600);
         ServerSocket bAccepts = robotsAAndB();

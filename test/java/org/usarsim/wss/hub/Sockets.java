@@ -13,6 +13,7 @@ import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Random;
 import java.util.stream.Stream;
 
@@ -100,6 +101,17 @@ public final class Sockets {
             return entries.count();
         } catch (IOException e) {
             throw new AssertionError("cannot list /proc/self/fd", e);
+        }
+    }
+
+    /** Closes each, the last opened first, ignoring what is closed already. */
+    public static void closeAllNewestFirst(List<? extends AutoCloseable> opened) {
+        for (int i = opened.size() - 1; i >= 0; i--) {
+            try {
+                opened.get(i).close();
+            } catch (Exception ignored) {
+                // closed already
+            }
         }
     }
 

@@ -249,7 +249,7 @@ public final class Main {
         Launch launch = new Launch(file.containsKey("wss.port") ? settings.get("wss.port") : null,
                 file.containsKey("wss.model") ? knownModel(catalog, settings.modelName()).name() : null,
                 file.containsKey("wss.eventLog") ? settings.eventLog() : null,
-                fromFile ? settings.modelSettings() : null, start);
+                fromFile ? settings.modelKeysSetBy(file) : null, start);
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
         List<PropagationModel> models = catalog.names().stream().map(catalog::find).toList();

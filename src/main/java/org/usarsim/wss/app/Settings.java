@@ -20,11 +20,13 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.logging.Level;
+import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 
 /**
@@ -66,6 +68,12 @@ public final class Settings {
                     .help("Within how long keepalive finds a robot whose machine vanished"),
             Setting.integer("wss.statsInterval", "Statistics interval", Defaults.STATS_INTERVAL).from(0).to(86400).unit("s")
                     .note("0: never").help("Every so many seconds the headless log shows the statistics of every pair of robots"),
+            Setting.addresses("wss.operators", "Operators", "127.0.0.1").orEmpty("nobody")
+                    .help("The addresses whose control connections may force pairs (FORCE, docs/protocol.md section 7)"),
+            Setting.pairs("wss.force.down", "Forced down", "").orEmpty("none")
+                    .help("Pairs of robots forced down from the start, even in range, until an operator releases them"),
+            Setting.pairs("wss.force.up", "Forced up", "").orEmpty("none")
+                    .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -129,7 +137,9 @@ public final class Settings {
                 values.put(key, checked(rules.get(key), properties.getProperty(key), source));
             }
         }
-        ModelCatalog catalog = catalogFor.apply(new Settings(values, null, List.of()));
+        Settings server = new Settings(values, null, List.of());
+        server.forcedPairs(source);
+        ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
         List<Setting> own = chosen == null ? List.of() : chosen.settings();
         own.forEach(setting -> rules.putIfAbsent(setting.key(), setting));
@@ -250,10 +260,43 @@ public final class Settings {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
-                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")));
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("wss.bindAddress was checked", e);
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
+                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null));
+        } catch (UnknownHostException | SettingsException e) {
+            throw new IllegalStateException("wss.bindAddress, wss.operators and wss.force.* were checked", e);
         }
+    }
+
+    /**
+     * The model keys (not {@code wss.*}) that {@code file}, the properties these settings were read
+     * from, sets, with their checked values: what the window puts over the stored model settings.
+     */
+    ModelSettings modelKeysSetBy(Properties file) {
+        Map<String, String> set = new LinkedHashMap<>();
+        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
+        return new ModelSettings(set);
+    }
+
+    /**
+     * The pairs of wss.force.down and wss.force.up, each checked by its rule before.
+     *
+     * @throws SettingsException when a pair is in both (a bad configuration of {@code source})
+     */
+    private Map<RobotPair, Force> forcedPairs(String source) throws SettingsException {
+        Map<RobotPair, Force> forced = new LinkedHashMap<>();
+        listed(get("wss.force.down"), RobotPair::listOf).forEach(pair -> forced.put(pair, Force.DOWN));
+        for (RobotPair pair : listed(get("wss.force.up"), RobotPair::listOf)) {
+            if (forced.put(pair, Force.UP) != null) {
+                throw new SettingsException(source + ": the pair " + pair.first() + ":" + pair.second()
+                        + " is in both wss.force.down and wss.force.up; force it one way");
+            }
+        }
+        return forced;
+    }
+
+    /** The items of a list setting's value, checked by its rule before: none when it is empty. */
+    private static <T> List<T> listed(String value, Function<String, List<T>> parse) {
+        return value.isEmpty() ? List.of() : parse.apply(value);
     }
 
     /** What the chosen model is handed: the value of each key it declares; none when there is no such model. */

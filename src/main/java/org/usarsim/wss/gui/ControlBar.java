@@ -30,6 +30,8 @@ final class ControlBar extends JPanel {
         super(new GridBagLayout());
         model = new JComboBox<>(modelNames.toArray(String[]::new));
         port.setName("port");
+        port.setToolTipText("The control port robots connect to (0: any free port); while the server runs, the port it listens on");
+        port.setDisabledTextColor(DialogParts.READ_ONLY_TEXT); // locked while running, and still readable
         eventLog.setName("eventLog");
         eventLog.setToolTipText("Write every event to a CSV file (wss.eventLog)");
         start.setName("start");

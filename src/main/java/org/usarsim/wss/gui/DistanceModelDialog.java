@@ -79,8 +79,11 @@ final class DistanceModelDialog extends JDialog {
     private String distanceProblem;
     private boolean saved;
 
-    /** Shows, and OK stores, the values of {@code model.name()}'s preferences; it does not touch the model itself. */
-    DistanceModelDialog(Window owner, SimulatorModel model, boolean editable, ModelPreferences preferences) {
+    /**
+     * Shows {@code values} (a value for each key the model declares); OK stores the values in
+     * {@code model.name()}'s preferences. It does not touch the model itself.
+     */
+    DistanceModelDialog(Window owner, SimulatorModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
         super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
         this.model = model;
         this.declared = model.settings();
@@ -97,7 +100,6 @@ final class DistanceModelDialog extends JDialog {
         }
         alignColumns();
 
-        Map<String, String> values = preferences.load(model);
         updating = true;
         fields.forEach((key, field) -> field.setText(values.get(key)));
         updating = false;

@@ -4,8 +4,9 @@ import org.usarsim.wss.model.ModelSettings;
 
 /**
  * What the command line asks of the window: a port, a model and "Enable Logging" over the stored
- * ones (null: the stored one), the model settings of a --config file for this session's runs
- * (null: the stored ones), and whether to press Start at once.
+ * ones (null: the stored one), the model keys a --config file sets, which go over each model's
+ * stored settings until its dialog stores new ones (null or empty: none), and whether to press
+ * Start at once.
  */
 public record Launch(String port, String model, Boolean eventLog, ModelSettings modelSettings, boolean start) {
 

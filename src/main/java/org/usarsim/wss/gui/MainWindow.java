@@ -55,10 +55,12 @@ public final class MainWindow {
     private final ModelPreferences modelPreferences;
     private final WindowLog windowLog;
     private final Runnable onClosed;
-    /** A --config file's model settings, used for every start until a dialog stores new ones. */
-    private ModelSettings runSettings;
+    /** What each model's next start uses, and its dialog shows: the stored settings, a --config file's over them. */
+    private final RunSettings runSettings;
     private ControlBar.State state = ControlBar.State.STOPPED;
     private Servers.Running running;
+    /** The port typed for the server that runs, shown again at Stop (the field shows the actual one meanwhile). */
+    private String askedPort;
     private boolean closing;
 
     private MainWindow(Servers servers, List<PropagationModel> modelList, WindowSettings settings,
@@ -69,7 +71,7 @@ public final class MainWindow {
         this.modelPreferences = modelPreferences;
         this.windowLog = windowLog;
         this.onClosed = onClosed;
-        this.runSettings = launch.modelSettings();
+        this.runSettings = new RunSettings(modelPreferences, launch.modelSettings());
         bar = new ControlBar(List.copyOf(models.keySet()));
         bar.port.setText(launch.port() != null ? launch.port() : settings.port());
         bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : settings.eventLog());
@@ -187,11 +189,7 @@ public final class MainWindow {
         PropagationModel model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
         try {
-            if (runSettings != null) {
-                model.configure(runSettings);
-            } else {
-                ModelDialogs.configureFromPreferences(model, modelPreferences);
-            }
+            model.configure(new ModelSettings(runSettings.values(model)));
         } catch (RuntimeException e) {
             failed(model.name() + " did not accept its settings: " + e.getMessage());
             return;
@@ -220,6 +218,8 @@ public final class MainWindow {
                     throw new IllegalStateException("the event thread was interrupted", e);
                 }
                 settings.storeRun(port, model.name(), eventLog);
+                askedPort = port;
+                bar.port.setText(String.valueOf(running.port()));
                 view.attach(running, model);
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
@@ -249,6 +249,7 @@ public final class MainWindow {
             @Override
             protected void done() {
                 view.detach();
+                bar.port.setText(askedPort);
                 setState(ControlBar.State.STOPPED);
                 if (closing) {
                     finishClosing();
@@ -259,8 +260,8 @@ public final class MainWindow {
 
     private void configure() {
         PropagationModel model = selectedModel();
-        if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences)) {
-            runSettings = null;
+        if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences, runSettings.values(model))) {
+            runSettings.entered(model);
         }
     }
 

@@ -171,6 +171,12 @@ final class MapPanel extends JPanel {
         return found;
     }
 
+    /** The force menu of the line a right click at this point hits; null when it hits none. */
+    JPopupMenu menuAt(double x, double y) {
+        MapData.Line line = lineAt(x, y);
+        return line == null ? null : forceMenu.menuFor(line.first(), line.second());
+    }
+
     /** The map itself. */
     private final class Canvas extends JComponent {
 
@@ -228,9 +234,8 @@ final class MapPanel extends JPanel {
         }
 
         private void popup(MouseEvent e) {
-            MapData.Line line = lineAt(e.getX(), e.getY());
-            if (line != null) {
-                JPopupMenu menu = forceMenu.menuFor(line.first(), line.second());
+            JPopupMenu menu = menuAt(e.getX(), e.getY());
+            if (menu != null) {
                 menu.show(this, e.getX(), e.getY());
             }
         }

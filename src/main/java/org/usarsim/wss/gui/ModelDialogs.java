@@ -1,6 +1,7 @@
 package org.usarsim.wss.gui;
 
 import java.awt.Window;
+import java.util.Map;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
@@ -30,21 +31,30 @@ public final class ModelDialogs {
      * {@link DistanceModelDialog}, provided it declares the keys that dialog shows; any other
      * model with declared settings gets the {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
      * {@code preferences}, under the model's {@code name()}, and hands them to the model's
-     * {@code configure}. Call on the Swing event thread.
+     * {@code configure}. The built-in dialogs show the stored values. Call on the Swing event thread.
      *
      * @return true when a built-in dialog stored new values
      */
     public static boolean show(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences) {
+        return show(owner, model, editable, preferences, preferences.load(model));
+    }
+
+    /**
+     * {@link #show(Window, PropagationModel, boolean, ModelPreferences)}, the built-in dialogs
+     * showing {@code values} (a value for each key the model declares) rather than the stored ones.
+     */
+    static boolean show(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences,
+            Map<String, String> values) {
         boolean saved;
         if (model.isConfigurable()) {
             model.showConfigurationDialog(editable);
             return false;
         } else if (model instanceof SimulatorModel simulatorModel && DistanceModelDialog.fits(simulatorModel)) {
-            DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences);
+            DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences, values);
             dialog.setVisible(true);
             saved = dialog.saved();
         } else if (!model.settings().isEmpty()) {
-            SettingsDialog dialog = new SettingsDialog(owner, model, editable, preferences);
+            SettingsDialog dialog = new SettingsDialog(owner, model, editable, preferences, values);
             dialog.setVisible(true);
             saved = dialog.saved();
         } else {

@@ -39,8 +39,11 @@ final class SettingsDialog extends JDialog {
     private Color normalBackground;
     private boolean saved;
 
-    /** Shows, and OK stores, the values of {@code model.name()}'s preferences; it does not touch the model itself. */
-    SettingsDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences) {
+    /**
+     * Shows {@code values} (a value for each key the model declares); OK stores the values in
+     * {@code model.name()}'s preferences. It does not touch the model itself.
+     */
+    SettingsDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
         super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
         this.model = model;
         this.declared = model.settings();
@@ -48,7 +51,6 @@ final class SettingsDialog extends JDialog {
         this.preferences = preferences;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
-        Map<String, String> values = preferences.load(model);
         JPanel rows = DialogParts.titled("Settings");
         int row = 0;
         for (Setting setting : declared) {

@@ -7,6 +7,7 @@ import java.nio.ByteBuffer;
 import java.nio.channels.ClosedChannelException;
 import java.nio.channels.SocketChannel;
 import java.util.List;
+import java.util.Locale;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.protocol.Arguments;
@@ -116,6 +117,9 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
     }
 
     private String answer(Command command) throws ProtocolException {
+        if (command.type().equals("FORCE") && !command.hasNoSegment()) {
+            return force(command); // an operator's, not a robot's: no INIT needed
+        }
         if (robot == null) {
             boolean init = command.type().equals("INIT") && !command.hasNoSegment();
             return init ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
@@ -174,6 +178,35 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         String asked = Arguments.askedPort(command);
         String source = hub.reverseDns(robot, Integer.parseInt(asked));
         return source == null ? Replies.reverseDnsUnknown(asked) : Replies.reverseDns(asked, source);
+    }
+
+    /**
+     * The operator command (docs/protocol.md section 7): {@code FORCE {Robot A} {Peer B} {State Down|Up|Model}}.
+     * Only from an address of wss.operators; the names need not be registered.
+     */
+    private String force(Command command) throws ProtocolException {
+        if (!hub.isOperator(address)) {
+            hub.warnings.warn(LOG, "operator commands refused", address,
+                    peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators");
+            return Replies.error(Replies.NOT_AN_OPERATOR);
+        }
+        String first = Arguments.robot(command);
+        String second = Arguments.peer(command);
+        if (first.equals(second)) {
+            return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
+        }
+        String state = command.value("State");
+        String wanted = state == null ? "" : state.toLowerCase(Locale.ROOT);
+        if (!List.of("down", "up", "model").contains(wanted)) {
+            return Replies.error(Replies.STATE_MUST_BE_DOWN_UP_OR_MODEL);
+        }
+        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state); // who, before what it does
+        switch (wanted) {
+            case "down" -> hub.force(first, second, Force.DOWN);
+            case "up" -> hub.force(first, second, Force.UP);
+            default -> hub.release(first, second);
+        }
+        return Replies.forceOk();
     }
 
     private void send(String reply) {

@@ -208,6 +208,16 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         event("DATA_SENT", from, to, bytes);
     }
 
+    @Override
+    public void pairForced(String first, String second, boolean up) {
+        event("FORCED", first, second, up ? "UP" : "DOWN");
+    }
+
+    @Override
+    public void pairReleased(String first, String second) {
+        event("RELEASED", first, second);
+    }
+
     /**
      * Stops taking events, waits (at most 10 s, for a disk that hangs) until the writer has
      * written everything queued before, with the count of any dropped, and closed the file.

@@ -82,6 +82,16 @@ final class EventFanOut implements WssEventListener {
         each(l -> l.portForgotten(from, to, targetPort, wssPort));
     }
 
+    @Override
+    public void pairForced(String first, String second, boolean up) {
+        each(l -> l.pairForced(first, second, up));
+    }
+
+    @Override
+    public void pairReleased(String first, String second) {
+        each(l -> l.pairReleased(first, second));
+    }
+
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */
     @Override
     public void dataSent(String from, String to, int bytes) {

@@ -50,6 +50,16 @@ final class EventLogger implements WssEventListener {
     }
 
     @Override
+    public void pairForced(String first, String second, boolean up) {
+        LOG.info(() -> "forced " + first + " - " + second + (up ? " up" : " down"));
+    }
+
+    @Override
+    public void pairReleased(String first, String second) {
+        LOG.info(() -> "released " + first + " - " + second + " to the model");
+    }
+
+    @Override
     public void dataSent(String from, String to, int bytes) {
         if (LOG.isLoggable(Level.FINEST)) { // per chunk: not even a lambda unless it is logged
             LOG.finest(bytes + " bytes " + from + " -> " + to);

@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -10,9 +11,11 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelStartException;
@@ -25,10 +28,13 @@ import org.usarsim.wss.model.WssEventListener;
  * The server: the registry of robots, their WSS ports and the links through them. Control
  * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
  *
- * <p>One lock guards the registry, the ports and the broken pairs. The model is never called
- * while it is held (a model may call back in from its own thread), and no I/O but binding and
- * closing server sockets, and the non-blocking connect that starts a port's drain, happens under
- * it: a link's sockets are opened before it is taken ({@link #accepted}).
+ * <p>One lock guards the registry, the ports and the broken and forced pairs. The model is never called
+ * while it is held (a model may call back in from its own thread), nor is a listener (events are
+ * queued under it and delivered after it, {@link #deliverEvents}). Little I/O happens under it:
+ * closing server sockets, and binding a new port for a DNS or one a resume reopens; a link's
+ * sockets are opened before it is taken ({@link #accepted}), a registration binds the ports it
+ * reopens before it takes it again to adopt them ({@link #listenAgain}), and a departure starts
+ * its ports' drains between its two holds.
  */
 public final class Hub implements RobotLinkModel, AutoCloseable {
 
@@ -55,6 +61,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
     private final Set<RobotPair> broken = new HashSet<>();
+    /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
+    private final ForcedPairs forcedPairs = new ForcedPairs();
+    /** The control sessions whose robots are leaving: their ports drain, their names are freed soon. */
+    private final Set<ControlSession> leaving = new HashSet<>();
     /** The statistics of every pair seen, forgotten with the pair's ports. */
     private final LinkStats stats = new LinkStats();
     private final PortMemory memory;
@@ -62,6 +72,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
     private volatile ControlListener controlListener;
+    /**
+     * The events of the hub's state changes (robots, ports), appended under the lock in the order
+     * the changes happened there, and delivered after it by {@link #deliverEvents}: so a listener
+     * (the event log, the window) sees a robot's DEREGISTERED before its next REGISTERED, and no
+     * listener is ever called with the lock held.
+     */
+    private final List<Runnable> pendingEvents = new ArrayList<>();
+    /** Held by the one thread that delivers {@link #pendingEvents} (not the hub's lock). */
+    private final ReentrantLock delivering = new ReentrantLock();
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -105,6 +124,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 throw new IOException("stopped while starting");
             }
         }
+        // Before the first robot can come; a start that failed forced nothing.
+        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force));
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());
@@ -170,11 +191,13 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      */
     boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
-        List<Runnable> portEvents = new ArrayList<>();
+        List<WssPort> toListen = new ArrayList<>();
         synchronized (lock) {
-            long deadline = System.nanoTime() + NAME_RELEASE_WAIT_NS;
+            long start = System.nanoTime();
             while (robots.containsKey(name) && !closed) {
-                long left = deadline - System.nanoTime();
+                // A robot that is leaving frees its name once its ports drained: wait for that too.
+                long wait = leaving.contains(robots.get(name).session()) ? NAME_RELEASE_WAIT_NS + DRAIN_NS : NAME_RELEASE_WAIT_NS;
+                long left = start + wait - System.nanoTime();
                 if (left <= 0) {
                     return false;
                 }
@@ -189,16 +212,52 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 return false;
             }
             robots.put(name, robot);
+            pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
             for (WssPort port : ports.of(name)) {
-                if (shouldListen(port.key, true)) {
-                    listen(port, portEvents);
+                if (shouldListen(port.key, true) && !port.listening()) {
+                    toListen.add(port);
                 }
             }
         }
-        events.robotRegistered(name, address.getHostAddress(), robot.ports());
-        portEvents.forEach(Runnable::run);
+        listenAgain(toListen, session);
+        deliverEvents();
         return true;
+    }
+
+    /**
+     * The ports a registration reopens: their sockets are bound without the lock (beside the
+     * placeholders, which keep the numbers), adopted under it if they still should listen, and
+     * their threads started after it.
+     */
+    private void listenAgain(List<WssPort> toListen, ControlSession session) {
+        Map<WssPort, ServerSocketChannel> bound = new HashMap<>();
+        for (WssPort port : toListen) {
+            try {
+                bound.put(port, port.bindListening());
+            } catch (IOException e) {
+                LOG.warning(port + ": could not listen again: " + e.getMessage());
+            }
+        }
+        List<PortListener> started = new ArrayList<>();
+        synchronized (lock) {
+            for (Map.Entry<WssPort, ServerSocketChannel> entry : bound.entrySet()) {
+                WssPort port = entry.getKey();
+                boolean stillOurs = ports.get(port.key) == port && !closed && isRegisteredSession(session);
+                if (stillOurs && !port.listening() && shouldListen(port.key, true)) {
+                    started.add(port.adopt(entry.getValue()));
+                    pendingEvents.add(listeningEvent(port));
+                } else {
+                    Closing.quietly(entry.getValue());
+                }
+            }
+        }
+        started.forEach(PortListener::start);
+    }
+
+    /** Under the lock: whether the session's robot is registered now. */
+    private boolean isRegisteredSession(ControlSession session) {
+        return robots.values().stream().anyMatch(robot -> robot.session() == session);
     }
 
     /**
@@ -208,44 +267,58 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * ports have drained, for at most {@link #DRAIN_NS}.
      */
     void deregister(String name, ControlSession session) {
-        List<PortListener> draining = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
+        Map<PortListener, InetAddress> toDrain = new HashMap<>();
         synchronized (lock) {
             if (!isSessionOf(name, session)) {
                 return;
             }
+            leaving.add(session);
+            lock.notifyAll(); // an INIT of the name waits for the drain now
             for (WssPort port : ports.of(name)) {
-                PortListener listener = port.beginDrain();
+                PortListener listener = port.listener();
                 if (listener != null) {
-                    draining.add(listener);
+                    toDrain.put(listener, port.reach());
                 }
             }
         }
+        // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
+        List<PortListener> draining = new ArrayList<>();
+        toDrain.forEach((listener, reach) -> {
+            if (listener.beginDrain(reach)) {
+                draining.add(listener);
+            }
+        });
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
         synchronized (lock) {
+            leaving.remove(session);
             if (!isSessionOf(name, session)) {
                 return; // kicked out meanwhile
             }
             robots.remove(name);
             lock.notifyAll();
+            pendingEvents.add(() -> events.robotDeregistered(name));
             for (WssPort port : ports.of(name)) {
                 if (port.stopListening()) {
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
             }
             if (memory.left(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        events.robotDeregistered(name);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /** Under the lock. */
     private boolean isSessionOf(String name, ControlSession session) {
         RegisteredRobot robot = robots.get(name);
         return robot != null && robot.session() == session;
+    }
+
+    /** Whether a control connection from this address may use the operator command (wss.operators). */
+    boolean isOperator(InetAddress address) {
+        return config.operators().contains(address);
     }
 
     /** The model's strength from one robot to another; empty when {@code to} is not registered. */
@@ -269,13 +342,12 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
         }
         boolean allowed = modelAllows(from, to);
-        List<Runnable> portEvents = new ArrayList<>();
-        DnsResult result = dnsLocked(from, to, targetPort, allowed, portEvents);
-        portEvents.forEach(Runnable::run);
+        DnsResult result = dnsLocked(from, to, targetPort, allowed);
+        deliverEvents();
         return result;
     }
 
-    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed, List<Runnable> portEvents) {
+    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed) {
         synchronized (lock) {
             RegisteredRobot target = robots.get(to);
             if (closed || !robots.containsKey(from) || target == null) {
@@ -306,9 +378,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
                 int number = port.number;
                 boolean listening = port.listening();
-                portEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
+                pendingEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
             } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port, portEvents);
+                listen(port);
             }
             return new DnsResult(DnsOutcome.OK, port.number);
         }
@@ -395,8 +467,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             return "the connection came from " + peer.getHostAddress() + " but " + key.from()
                     + " registered from " + source.address().getHostAddress();
         }
-        if (!allowed || broken.contains(key.pair())) {
-            return model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
+        if (!forcedPairs.allows(key.pair(), allowed && !broken.contains(key.pair()))) {
+            return forcedPairs.of(key.pair()) == Force.DOWN ? key.pair() + " is forced down"
+                    : model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
         }
         return null;
     }
@@ -412,17 +485,16 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     void linkClosed(Link link, boolean wasEstablished) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             link.port.removeLink(link);
             // A port kept only for its last connection is forgotten with it.
             for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
                 if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
-                    forgetPortsOf(robot, portEvents);
+                    forgetPortsOf(robot);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         if (wasEstablished) {
             PortKey key = link.port.key;
             events.connectionTerminated(key.from(), key.to(), key.targetPort());
@@ -435,47 +507,46 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             PairStats pairStats = pairStats(pair); // first seen now: seen up until this break
             changed = broken.add(pair);
             if (changed) {
                 pairStats.modelChanged(true);
-                recordState(pair, portEvents);
+                recordState(pair, true);
             }
-            for (WssPort port : ports.between(pair)) {
+            // Forced up: the break is only remembered, for the release.
+            for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
                 if (port.stopListening()) {
                     changed = true;
-                    portEvents.add(listeningEvent(port));
+                    pendingEvents.add(listeningEvent(port));
                 }
                 links.addAll(port.links());
             }
         }
         closeLinks(links, CloseReason.OUT_OF_RANGE);
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed || !links.isEmpty();
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        List<Runnable> portEvents = new ArrayList<>();
         boolean changed;
         synchronized (lock) {
             PairStats pairStats = pairStats(pair);
             changed = broken.remove(pair);
             if (changed) {
                 pairStats.modelChanged(false);
-                recordState(pair, portEvents);
+                recordState(pair, true);
             }
             for (WssPort port : ports.between(pair)) {
                 if (!port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port, portEvents);
+                    changed |= listen(port);
                 }
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
         return changed;
     }
 
@@ -483,29 +554,30 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     public void kickOutRobot(String name) {
         RegisteredRobot robot;
         List<Link> links = new ArrayList<>();
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             robot = robots.remove(name);
             lock.notifyAll();
+            if (robot != null) {
+                pendingEvents.add(() -> events.robotDeregistered(name));
+            }
             for (WssPort port : ports.of(name)) {
                 port.release();
                 links.addAll(port.links());
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
             }
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
             if (memory.left(name)) { // its pairs' statistics are remembered as long as its ports would have been
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
         closeLinks(links, CloseReason.KICKED);
         if (robot != null) {
             robot.session().close();
             LOG.info("kicked out " + name);
-            events.robotDeregistered(name);
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     @Override
@@ -519,16 +591,86 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /**
      * Forces the pair down or up: a forced state wins over the model's verdict until
-     * {@link #release}. Forced down stops the pair's ports and closes its connections as a break
-     * does; forced up lets them listen whatever the model says.
+     * {@link #release} ({@link ForcedPairs}). Forced down stops the pair's ports and closes its
+     * connections as a break does, and the model's resume does not reopen them; forced up lets
+     * them listen (where both robots are registered) and forwards their connections whatever the
+     * model breaks or forbids. The names need not be registered: the state holds for the pair
+     * whenever its robots come, leave and come back.
+     *
+     * @throws IllegalArgumentException when the names are empty or the same
      */
     public void force(String robotA, String robotB, Force force) {
-        throw new UnsupportedOperationException("forcing a pair is not there yet (issue 12)");
+        RobotPair pair = pairOf(robotA, robotB);
+        Objects.requireNonNull(force, "force");
+        List<Link> links = new ArrayList<>();
+        synchronized (lock) {
+            Force before = forcedPairs.force(pair, force);
+            if (before != force) {
+                pendingEvents.add(() -> events.pairForced(pair.first(), pair.second(), force == Force.UP));
+            }
+            for (WssPort port : ports.between(pair)) {
+                followVerdict(port, force == Force.UP, links);
+            }
+            recordState(pair, false);
+        }
+        closeLinks(links, CloseReason.FORCED);
+        deliverEvents();
     }
 
-    /** Gives the pair back to the model: its verdict counts again. */
+    /**
+     * Gives the pair back to the model: its verdict counts again at once. That verdict is the
+     * model's last break or resume of the pair, and {@code connectionIsPossibleForPair} asked now
+     * for each direction: a direction it broke or forbids stops listening and its connections
+     * close; one it allows listens again (where both robots are registered).
+     */
     public void release(String robotA, String robotB) {
-        throw new UnsupportedOperationException("releasing a pair is not there yet (issue 12)");
+        RobotPair pair = pairOf(robotA, robotB);
+        boolean firstToSecond = modelAllows(pair.first(), pair.second());
+        boolean secondToFirst = modelAllows(pair.second(), pair.first());
+        List<Link> links = new ArrayList<>();
+        synchronized (lock) {
+            Force before = forcedPairs.release(pair);
+            if (before != null) {
+                pendingEvents.add(() -> events.pairReleased(pair.first(), pair.second()));
+            }
+            for (WssPort port : before == null ? List.<WssPort>of() : ports.between(pair)) {
+                boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
+                followVerdict(port, allowed && !broken.contains(pair), links);
+            }
+            recordState(pair, true);
+        }
+        closeLinks(links, CloseReason.OUT_OF_RANGE);
+        deliverEvents();
+    }
+
+    /**
+     * Under the lock: a port of a pair just forced or released follows the verdict at once. Not
+     * talking, it stops listening and its links go to {@code links}, to be closed after the lock;
+     * talking, it listens again where both robots are registered.
+     */
+    private void followVerdict(WssPort port, boolean talks, List<Link> links) {
+        if (!talks) {
+            if (port.stopListening()) {
+                pendingEvents.add(listeningEvent(port));
+            }
+            links.addAll(port.links());
+        } else if (!port.listening() && shouldListen(port.key, true)) {
+            listen(port);
+        }
+    }
+
+    /** The pair's forced state, or null when the model decides it (the per-pair statistics show it). */
+    Force forced(RobotPair pair) {
+        synchronized (lock) {
+            return forcedPairs.of(pair);
+        }
+    }
+
+    private static RobotPair pairOf(String robotA, String robotB) {
+        if (robotA == null || robotB == null || robotA.isEmpty() || robotB.isEmpty() || robotA.equals(robotB)) {
+            throw new IllegalArgumentException("a pair is two different robot names, not '" + robotA + "' and '" + robotB + "'");
+        }
+        return RobotPair.of(robotA, robotB);
     }
 
     /** The robots, the WSS ports and the established links, all at one instant. */
@@ -601,28 +743,27 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
     private void forgetIfGone(String name) {
-        List<Runnable> portEvents = new ArrayList<>();
         synchronized (lock) {
             if (!closed && !robots.containsKey(name) && memory.expired(name)) {
-                forgetPortsOf(name, portEvents);
+                forgetPortsOf(name);
             }
         }
-        portEvents.forEach(Runnable::run);
+        deliverEvents();
     }
 
     /**
      * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
      * but those with open connections, which are forgotten when their last connection closes. The
-     * ports' events go to {@code portEvents}, to be fired after the lock.
+     * ports' events go to {@link #pendingEvents}.
      */
-    private void forgetPortsOf(String name, List<Runnable> portEvents) {
+    private void forgetPortsOf(String name) {
         int forgotten = 0;
         boolean kept = false;
         for (WssPort port : ports.of(name)) {
             if (!port.hasLinks()) {
                 port.release();
                 ports.remove(port);
-                portEvents.add(forgottenEvent(port));
+                pendingEvents.add(forgottenEvent(port));
                 forgotten++;
             } else {
                 kept = true;
@@ -638,20 +779,48 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         stats.forget(name, pair -> ports.between(pair).isEmpty());
     }
 
+    // ---- events ----
+
+    /**
+     * Delivers the pending events in order, never under the lock. One thread delivers at a time;
+     * a thread that finds another delivering leaves its events to it, and the deliverer looks
+     * again after letting go, so none is left behind.
+     */
+    private void deliverEvents() {
+        while (delivering.tryLock()) {
+            try {
+                List<Runnable> batch;
+                while (!(batch = takePendingEvents()).isEmpty()) {
+                    batch.forEach(Runnable::run);
+                }
+            } finally {
+                delivering.unlock();
+            }
+            synchronized (lock) {
+                if (pendingEvents.isEmpty()) {
+                    return;
+                }
+            }
+        }
+    }
+
+    private List<Runnable> takePendingEvents() {
+        synchronized (lock) {
+            List<Runnable> batch = List.copyOf(pendingEvents);
+            pendingEvents.clear();
+            return batch;
+        }
+    }
+
     // ---- rules ----
 
     /** The pair's state now: an operator's force wins over the model's verdict. Under the lock. */
     private PairState stateOf(RobotPair pair) {
-        Force force = forced(pair);
+        Force force = forcedPairs.of(pair);
         if (force != null) {
             return force == Force.DOWN ? PairState.FORCED_DOWN : PairState.FORCED_UP;
         }
         return broken.contains(pair) ? PairState.BROKEN : PairState.UP;
-    }
-
-    /** How an operator forced the pair, or null when the model decides. Under the lock. */
-    private Force forced(RobotPair pair) {
-        return null;
     }
 
     /** The pair's statistics, from now on when it was not seen yet. Under the lock. */
@@ -660,13 +829,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     }
 
     /**
-     * Under the lock: records the pair's state now (after a break, a resume or a force); a change
-     * is logged, one line, through {@code after}, to be run after the lock.
+     * Under the lock: records the state now of a pair seen (after a break, a resume, a force or a
+     * release); with {@code say}, a change is logged, one line, delivered after the lock with the
+     * events (a force says itself: the event's line "forced A - B down").
      */
-    private void recordState(RobotPair pair, List<Runnable> after) {
+    private void recordState(RobotPair pair, boolean say) {
+        PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
-        if (pairStats(pair).moveTo(now, System.nanoTime())) {
-            after.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+        if (pairStats != null && pairStats.moveTo(now, System.nanoTime()) && say) {
+            pendingEvents.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
         }
     }
 
@@ -677,19 +848,20 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /**
      * A WSS port listens while both robots are registered, the target still accepts on the
-     * target port, and the model neither broke nor forbids the pair. Under the lock.
+     * target port, and the model neither broke nor forbids the pair, unless an operator forced
+     * it ({@link ForcedPairs#allows}). Under the lock.
      */
     private boolean shouldListen(PortKey key, boolean modelAllows) {
         RegisteredRobot target = robots.get(key.to());
-        return modelAllows && robots.containsKey(key.from()) && target != null
-                && target.ports().contains(key.targetPort()) && !broken.contains(key.pair());
+        return robots.containsKey(key.from()) && target != null && target.ports().contains(key.targetPort())
+                && forcedPairs.allows(key.pair(), modelAllows && !broken.contains(key.pair()));
     }
 
-    /** Under the lock; the port's event goes to {@code portEvents}, to be fired after it. @return true when it listens now */
-    private boolean listen(WssPort port, List<Runnable> portEvents) {
+    /** Under the lock; the port's event goes to {@link #pendingEvents}. @return true when it listens now */
+    private boolean listen(WssPort port) {
         try {
             port.listen();
-            portEvents.add(listeningEvent(port));
+            pendingEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
             LOG.warning(port + ": could not listen again: " + e.getMessage());

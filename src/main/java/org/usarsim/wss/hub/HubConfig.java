@@ -1,6 +1,12 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
+import java.net.UnknownHostException;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.Set;
+import org.usarsim.wss.model.RobotPair;
 
 /**
  * How the hub runs.
@@ -16,13 +22,39 @@ import java.net.InetAddress;
  * @param maxPortsPerRobot   the most WSS ports one robot may hold as source
  * @param deadPeerSeconds    within how many seconds TCP keepalive finds a peer that vanished,
  *                           on control connections and links; 0 leaves keepalive to the OS
+ * @param operators          the addresses whose control connections may use the operator command (FORCE)
+ * @param forced             the pairs forced down or up from the start (wss.force.down, wss.force.up)
  */
 public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-        boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds) {
+        boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
+        Set<InetAddress> operators, Map<RobotPair, Force> forced) {
+
+    /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
+    public static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
+
+    private static InetAddress ipv4Loopback() {
+        try {
+            return InetAddress.getByAddress(new byte[] {127, 0, 0, 1});
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("four bytes are an IPv4 address", e);
+        }
+    }
+
+    public HubConfig {
+        operators = Set.copyOf(operators);
+        forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
+    }
+
+    /** The operator at 127.0.0.1 only, and no pair forced. */
+    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
+            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds) {
+        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, deadPeerSeconds, LOCAL_OPERATOR, Map.of());
+    }
 
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */
     public HubConfig withControlPort(int port) {
         return new HubConfig(bindAddress, port, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds);
+                maxPortsPerRobot, deadPeerSeconds, operators, forced);
     }
 }

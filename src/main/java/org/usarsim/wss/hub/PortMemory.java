@@ -9,7 +9,9 @@ import java.util.function.Consumer;
 /**
  * How long the WSS ports of a robot that left keep their numbers ({@code wss.portMemory}): when
  * each robot left, and one thread that tells the hub, that long after a departure, to forget
- * the robot's ports. Guarded by the hub's lock, except {@link #close}.
+ * the robot's ports. The thread is started at the first departure, not before, so a hub whose
+ * start fails (its control port in use, say) leaves no thread. Guarded by the hub's lock, except
+ * the timer, which {@link #close} (without that lock) also touches: that is guarded by this object.
  */
 final class PortMemory {
 
@@ -20,8 +22,11 @@ final class PortMemory {
     private final boolean forever;
     /** When each robot that left and still has ports left (System.nanoTime()). */
     private final Map<String, Long> goneSince = new HashMap<>();
-    /** Runs the forgetting; none when ports are forgotten at once or never. */
-    private final ScheduledThreadPoolExecutor timer;
+    /** Whether ports are forgotten after a while, so a timer is needed (not at once, not never). */
+    private final boolean timed;
+    /** Runs the forgetting; started at the first departure (guarded by this object). */
+    private ScheduledThreadPoolExecutor timer;
+    private boolean closed;
     private final Consumer<String> forget;
 
     /** @param forget called with a robot's name, without the hub's lock, once it may have been gone long enough */
@@ -29,17 +34,7 @@ final class PortMemory {
         this.forever = seconds == FOREVER;
         this.memoryNs = TimeUnit.SECONDS.toNanos(Math.max(0, seconds));
         this.forget = forget;
-        if (seconds > 0) {
-            timer = new ScheduledThreadPoolExecutor(1, task -> {
-                Thread thread = new Thread(task, "wss-port-memory");
-                thread.setDaemon(true);
-                return thread;
-            });
-            timer.setRemoveOnCancelPolicy(true);
-            timer.prestartAllCoreThreads(); // the one thread is there from the start, not after the first departure
-        } else {
-            timer = null;
-        }
+        this.timed = seconds > 0;
     }
 
     /** A robot left. @return true when its ports are to be forgotten now (wss.portMemory = 0) */
@@ -48,11 +43,26 @@ final class PortMemory {
             return false;
         }
         goneSince.put(robot, System.nanoTime());
-        if (timer == null) {
+        if (!timed) {
             return true;
         }
-        timer.schedule(() -> forget.accept(robot), memoryNs, TimeUnit.NANOSECONDS);
+        schedule(() -> forget.accept(robot));
         return false;
+    }
+
+    private synchronized void schedule(Runnable task) {
+        if (closed) {
+            return;
+        }
+        if (timer == null) {
+            timer = new ScheduledThreadPoolExecutor(1, runnable -> {
+                Thread thread = new Thread(runnable, "wss-port-memory");
+                thread.setDaemon(true);
+                return thread;
+            });
+            timer.setRemoveOnCancelPolicy(true);
+        }
+        timer.schedule(task, memoryNs, TimeUnit.NANOSECONDS);
     }
 
     /** A robot registered again, or its ports were all forgotten: nothing to remember about its departure. */
@@ -72,7 +82,8 @@ final class PortMemory {
         return since == null ? 0 : TimeUnit.NANOSECONDS.toSeconds(System.nanoTime() - since);
     }
 
-    void close() {
+    synchronized void close() {
+        closed = true;
         if (timer != null) {
             timer.shutdownNow();
         }

@@ -9,22 +9,24 @@ import java.nio.channels.SocketChannel;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import java.util.logging.Logger;
 
 /**
  * A port on the WSS machine for one {@link PortKey}. Its number is chosen by the OS when it is
  * first allocated and kept until the hub forgets the port (wss.portMemory, a kick); it listens
  * or not as the hub decides.
  *
- * <p>While it does not listen, a bound but unconnected socket holds the number, so that the OS
- * gives it to nobody else (not to another WSS port, nor to a link's outgoing socket) and the
- * port can listen on it again. Both sockets set SO_REUSEADDR, which lets the listener bind
- * beside the placeholder; a connect to a number held only by the placeholder is refused.
- * All state is guarded by the hub's lock.
+ * <p>A bound but unconnected socket, the placeholder, holds the number for the port's whole life,
+ * listening or not, so that the OS gives it to nobody else (not to another WSS port, nor to a
+ * link's outgoing socket) and the port can listen on it again. It is bound first (port 0: the OS
+ * chooses) and closed only when the hub gives the number back ({@link #release}); both sockets
+ * set SO_REUSEADDR, which lets the listener bind beside it (Linux refuses the other order, a
+ * socket beside a listening one). So a listener may close whenever it likes (a drain closes its
+ * own when it reaches the marker, without the hub's lock) and the number is never free meanwhile:
+ * a bind(0) never picks a number a socket is bound to, nor does a connect's implicit bind. A
+ * connect to a number held only by the placeholder is refused. All state is guarded by the
+ * hub's lock.
  */
 final class WssPort {
-
-    private static final Logger LOG = Logger.getLogger(WssPort.class.getName());
 
     final PortKey key;
     final int number;
@@ -44,15 +46,17 @@ final class WssPort {
 
     /** Binds a new OS-chosen port, listening on it or not. */
     static WssPort allocate(Hub hub, PortKey key, InetAddress bindAddress, boolean listen) throws IOException {
-        if (listen) {
-            ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, 0));
-            WssPort port = new WssPort(hub, key, bindAddress, channel.socket().getLocalPort());
-            port.startListener(channel);
-            return port;
-        }
         SocketChannel placeholder = hold(new InetSocketAddress(bindAddress, 0));
         WssPort port = new WssPort(hub, key, bindAddress, placeholder.socket().getLocalPort());
         port.placeholder = placeholder;
+        if (listen) {
+            try {
+                port.listen();
+            } catch (IOException e) {
+                port.release();
+                throw e;
+            }
+        }
         return port;
     }
 
@@ -91,26 +95,36 @@ final class WssPort {
     /** Listens again on the same number. */
     void listen() throws IOException {
         if (listener == null) {
-            startListener(PortListener.bind(new InetSocketAddress(bindAddress, number)));
-            Closing.quietly(placeholder);
-            placeholder = null;
+            startListener(bindListening());
         }
     }
 
-    private void startListener(ServerSocketChannel channel) {
-        listener = new PortListener(hub, this, channel);
-        listener.start();
+    /**
+     * A server socket bound to this port's number, beside the placeholder: no lock needed, so a
+     * registration binds its ports before it takes the hub's lock to {@link #adopt} them.
+     */
+    ServerSocketChannel bindListening() throws IOException {
+        return PortListener.bind(new InetSocketAddress(bindAddress, number));
     }
 
-    /**
-     * Begins a drain of the listener (see {@link PortListener#beginDrain}); the port stops
-     * listening once its listener has ended, or at the next {@link #stopListening}.
-     *
-     * @return the listener to wait for, or null when there is none to wait for
-     */
-    PortListener beginDrain() {
-        InetAddress reach = bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
-        return listener != null && listener.beginDrain(reach) ? listener : null;
+    /** Listens with a socket from {@link #bindListening}; its thread is started by the caller, after the lock. */
+    PortListener adopt(ServerSocketChannel channel) {
+        listener = new PortListener(hub, this, channel);
+        return listener;
+    }
+
+    private void startListener(ServerSocketChannel channel) {
+        adopt(channel).start();
+    }
+
+    /** The listener now (to drain it after the lock, see {@link PortListener#beginDrain}), or null. */
+    PortListener listener() {
+        return listener;
+    }
+
+    /** Where the port is reached from this machine: the bind address, or loopback for the wildcard. */
+    InetAddress reach() {
+        return bindAddress.isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : bindAddress;
     }
 
     /** Stops listening at once, so that a connect is refused; keeps the number. @return true when it was listening */
@@ -118,13 +132,8 @@ final class WssPort {
         if (listener == null) {
             return false;
         }
-        listener.close();
+        listener.close(); // the placeholder keeps the number
         listener = null;
-        try {
-            placeholder = hold(new InetSocketAddress(bindAddress, number));
-        } catch (IOException e) {
-            LOG.warning(this + ": could not keep the number while not listening: " + e.getMessage());
-        }
         return true;
     }
 

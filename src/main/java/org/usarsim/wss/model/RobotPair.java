@@ -1,7 +1,37 @@
 package org.usarsim.wss.model;
 
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+
 /** Two robot names in no particular order, kept in ascending order: one unordered pair, the same whichever way it was named. */
 public record RobotPair(String first, String second) {
+
+    /** What {@link #listOf} accepts, in words. */
+    public static final String LIST_WORDS = "a comma-separated list of robot pairs A:B (two different names,"
+            + " without whitespace, braces, ':' or ',')";
+
+    /**
+     * The pairs of a list such as {@code A:B, C:D} (whitespace around the items allowed, a pair
+     * named twice counted once, in either order), or null when the text is not such a list: each
+     * item two different robot names, neither empty nor holding whitespace or braces (names a
+     * robot cannot register, docs/protocol.md section 1.3).
+     */
+    public static List<RobotPair> listOf(String text) {
+        Set<RobotPair> pairs = new LinkedHashSet<>();
+        for (String item : text.split(",", -1)) {
+            String[] names = item.strip().split(":", -1);
+            if (names.length != 2 || !robotName(names[0]) || !robotName(names[1]) || names[0].equals(names[1])) {
+                return null;
+            }
+            pairs.add(of(names[0], names[1]));
+        }
+        return List.copyOf(pairs);
+    }
+
+    private static boolean robotName(String name) {
+        return !name.isEmpty() && name.chars().noneMatch(c -> Character.isWhitespace(c) || c == '{' || c == '}');
+    }
 
     public static RobotPair of(String a, String b) {
         return a.compareTo(b) <= 0 ? new RobotPair(a, b) : new RobotPair(b, a);

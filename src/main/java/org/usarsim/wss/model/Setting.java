@@ -7,6 +7,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.HashSet;
+import java.util.LinkedHashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -44,7 +45,11 @@ public final class Setting {
         /** An existing directory. */
         DIRECTORY,
         /** One of a fixed list of words. */
-        CHOICE
+        CHOICE,
+        /** A comma-separated list of IP addresses, written as numbers ({@link #addressList}). */
+        ADDRESSES,
+        /** A comma-separated list of robot pairs {@code A:B} ({@link RobotPair#listOf}). */
+        PAIRS
     }
 
     private final String key;
@@ -123,6 +128,16 @@ public final class Setting {
     /** An existing directory. */
     public static Setting directory(String key, String label, String defaultValue) {
         return of(key, label, Type.DIRECTORY, defaultValue);
+    }
+
+    /** A comma-separated list of IP addresses, written as numbers. */
+    public static Setting addresses(String key, String label, String defaultValue) {
+        return of(key, label, Type.ADDRESSES, defaultValue);
+    }
+
+    /** A comma-separated list of robot pairs {@code A:B}. */
+    public static Setting pairs(String key, String label, String defaultValue) {
+        return of(key, label, Type.PAIRS, defaultValue);
     }
 
     /** One of these words, exactly. */
@@ -250,6 +265,8 @@ public final class Setting {
             case ADDRESS -> "an IP address of this machine";
             case DIRECTORY -> "an existing directory";
             case CHOICE -> "one of " + String.join(", ", choices);
+            case ADDRESSES -> "a comma-separated list of IP addresses";
+            case PAIRS -> RobotPair.LIST_WORDS;
         });
         boolean numeric = type == Type.INTEGER || type == Type.NUMBER;
         String range = numeric ? range() : "";
@@ -315,6 +332,8 @@ public final class Setting {
             case ADDRESS -> isAddress(value);
             case DIRECTORY -> isDirectory(value);
             case CHOICE -> choices.contains(value);
+            case ADDRESSES -> addressList(value) != null;
+            case PAIRS -> RobotPair.listOf(value) != null;
         };
     }
 
@@ -338,6 +357,36 @@ public final class Setting {
             return Files.isDirectory(Path.of(value));
         } catch (InvalidPathException e) {
             return false;
+        }
+    }
+
+    /**
+     * The addresses of a list such as {@code 127.0.0.1, 10.0.0.7} (whitespace around the items
+     * allowed), or null when the text is not such a list. Each item is an IPv4 address in dotted
+     * decimal or an IPv6 address in hex, never a name: nothing is looked up.
+     */
+    public static List<InetAddress> addressList(String text) {
+        Set<InetAddress> addresses = new LinkedHashSet<>();
+        for (String item : text.split(",", -1)) {
+            InetAddress address = numericAddress(item.strip());
+            if (address == null) {
+                return null;
+            }
+            addresses.add(address);
+        }
+        return List.copyOf(addresses);
+    }
+
+    private static InetAddress numericAddress(String text) {
+        boolean v4 = text.matches("(25[0-5]|2[0-4][0-9]|1[0-9][0-9]|[1-9]?[0-9])(\\.(25[0-5]|2[0-4][0-9]|1[0-9][0-9]|[1-9]?[0-9])){3}");
+        boolean v6 = text.contains(":") && text.matches("[0-9A-Fa-f:.]+");
+        if (!v4 && !v6) {
+            return null;
+        }
+        try {
+            return InetAddress.getByName(text); // a literal: parsed, not looked up
+        } catch (UnknownHostException e) {
+            return null;
         }
     }
 

@@ -43,4 +43,15 @@ public interface WssEventListener {
     /** A WSS port was given back to the OS (its robot was kicked out); the same DNS would get a new one. */
     default void portForgotten(String from, String to, int targetPort, int wssPort) {
     }
+
+    /**
+     * An operator forced the pair (names in ascending order) up or down: its state no longer
+     * follows the model until {@link #pairReleased}.
+     */
+    default void pairForced(String first, String second, boolean up) {
+    }
+
+    /** An operator gave the forced pair (names in ascending order) back to the model. */
+    default void pairReleased(String first, String second) {
+    }
 }

@@ -16,12 +16,20 @@ public final class Arguments {
 
     /** The {@code Robot} field: present, not empty, no whitespace inside. */
     public static String robot(Command command) throws ProtocolException {
-        String name = command.value("Robot");
+        return name(command.value("Robot"), Replies.NAME_MUST_NOT_BE_EMPTY, Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE);
+    }
+
+    /** FORCE's {@code Peer} field, the other robot of the pair: checked as {@link #robot}, with its own reasons. */
+    public static String peer(Command command) throws ProtocolException {
+        return name(command.value("Peer"), Replies.PEER_NAME_MUST_NOT_BE_EMPTY, Replies.PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE);
+    }
+
+    private static String name(String name, String emptyReason, String whitespaceReason) throws ProtocolException {
         if (name == null || name.isEmpty()) {
-            throw new ProtocolException(Replies.NAME_MUST_NOT_BE_EMPTY);
+            throw new ProtocolException(emptyReason);
         }
         if (name.chars().anyMatch(Character::isWhitespace)) {
-            throw new ProtocolException(Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE);
+            throw new ProtocolException(whitespaceReason);
         }
         return name;
     }

@@ -31,6 +31,13 @@ public final class Replies {
     /** A fault of the server's own (logged as a WARNING); the connection stays usable. */
     public static final String INTERNAL_ERROR = "Server.Internal.Error";
 
+    // Reasons of the operator command FORCE, an extension of ours (docs/protocol.md section 7).
+    public static final String NOT_AN_OPERATOR = "Not.An.Operator.Address";
+    public static final String PEER_NAME_MUST_NOT_BE_EMPTY = "Peer.Name.Must.Not.Be.Empty";
+    public static final String PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE = "Peer.Name.Must.Not.Contain.Whitespace";
+    public static final String PEER_MUST_NOT_BE_THE_ROBOT = "Peer.Must.Not.Be.The.Robot";
+    public static final String STATE_MUST_BE_DOWN_UP_OR_MODEL = "State.Must.Be.Down.Up.Or.Model";
+
     private Replies() {
     }
 
@@ -98,5 +105,10 @@ public final class Replies {
 
     public static String reverseDnsUnknown(String port) {
         return "REVERSEDNSREPLY {Port " + port + "} {Error UnknownOrIllegalPort}";
+    }
+
+    /** FORCE done: the pair is forced down or up, or given back to the model. */
+    public static String forceOk() {
+        return "FORCEREPLY {Status OK}";
     }
 }

@@ -20,6 +20,8 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
     private final Socket socket;
     private final String peer;
     private final LineSplitter splitter = new LineSplitter();
+    /** Its thread, once {@link #start} started it. */
+    private volatile Thread thread;
 
     WorldClient(WorldServer server, Socket socket) {
         this.server = server;
@@ -28,9 +30,19 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
     }
 
     void start() {
-        Thread thread = new Thread(this, "world-client " + peer);
-        thread.setDaemon(true);
-        thread.start();
+        Thread started = new Thread(this, "world-client " + peer);
+        started.setDaemon(true);
+        thread = started;
+        started.start();
+    }
+
+    /** Waits, until {@code deadline} ({@link System#nanoTime()}) at most, for its thread to end. */
+    void awaitEnd(long deadline) throws InterruptedException {
+        Thread started = thread;
+        long left = deadline - System.nanoTime();
+        if (started != null && left > 0) {
+            started.join(Math.max(1, left / 1_000_000));
+        }
     }
 
     void close() {
@@ -56,8 +68,8 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
             LOG.fine(() -> "client " + peer + ": " + e);
         } finally {
             close();
-            server.ended(this);
             LOG.info("client " + peer + " left");
+            server.ended(this);
         }
     }
 

@@ -6,6 +6,7 @@ import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
@@ -75,7 +76,7 @@ public final class WorldServer implements AutoCloseable {
         return world.at(clock.getAsDouble());
     }
 
-    /** Stops listening, at once, and closes every client connection. */
+    /** Stops listening, at once, and closes every client connection; waits (at most a second) for their threads to end. */
     @Override
     public void close() {
         // Not server.isOpen(): the acceptor closes the socket itself when it gives up (AcceptLoop).
@@ -93,7 +94,18 @@ public final class WorldServer implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        clients.forEach(WorldClient::close);
+        List<WorldClient> closing = List.copyOf(clients);
+        closing.forEach(WorldClient::close);
+        // Their threads say "left" before "stopped", not after whoever closed the server has gone on
+        // (Main.run puts its caller's logging back as it returns). At most a second in all.
+        long deadline = System.nanoTime() + 1_000_000_000L;
+        try {
+            for (WorldClient client : closing) {
+                client.awaitEnd(deadline);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         LOG.info("world server stopped");
     }
 

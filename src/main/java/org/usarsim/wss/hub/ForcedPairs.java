@@ -1,0 +1,40 @@
+package org.usarsim.wss.hub;
+
+import java.util.HashMap;
+import java.util.Map;
+import org.usarsim.wss.model.RobotPair;
+
+/**
+ * The pairs an operator forced down or up, and the rule that a forced state wins over the model's
+ * verdict. A pair is forced by name, registered or not, and stays forced until released, through
+ * robots leaving, coming back or being kicked out: an operator who forced "A:B down" meant it for
+ * the run (docs/protocol.md section 7). Guarded by the hub's lock.
+ */
+final class ForcedPairs {
+
+    private final Map<RobotPair, Force> forced = new HashMap<>();
+
+    /** The pair's forced state, or null when the model decides it. */
+    Force of(RobotPair pair) {
+        return forced.get(pair);
+    }
+
+    /** Forces the pair; returns its forced state before (null: the model decided it). */
+    Force force(RobotPair pair, Force force) {
+        return forced.put(pair, force);
+    }
+
+    /** Gives the pair back to the model; returns its forced state before (null: it was not forced). */
+    Force release(RobotPair pair) {
+        return forced.remove(pair);
+    }
+
+    /**
+     * The rule: whether the pair may talk (its ports listen, its connections are forwarded).
+     * Forced up: yes, forced down: no, whatever the model says; otherwise the model's verdict.
+     */
+    boolean allows(RobotPair pair, boolean modelVerdict) {
+        Force force = forced.get(pair);
+        return force == null ? modelVerdict : force == Force.UP;
+    }
+}

@@ -1,0 +1,47 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.Properties;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.gui.Servers;
+import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.hub.Wait;
+import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.noop.NoopPropagationModel;
+
+/**
+ * The window's servers as the application builds them ({@link WindowServers}): the --config
+ * file's forced pairs hold there too, and the window's force and release reach the hub.
+ */
+class WindowServersForceTest {
+
+    @Test
+    void theFilesForcedPairsHoldAndTheWindowForcesAndReleases() throws Exception {
+        Properties file = new Properties();
+        file.setProperty("wss.bindAddress", "127.0.0.1");
+        file.setProperty("wss.force.down", "r1:r2");
+        WindowServers servers = new WindowServers(Settings.of(file, "test"));
+        Servers.Running running = servers.start("0", new NoopPropagationModel(), false, new WssEventListener() { });
+        try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
+            r1.init("r1");
+            r2.initAccepting("r2");
+            r1.dns("r2", 0);
+            assertEquals(List.of(false), listening(running), "forced down by the file");
+            running.release("r2", "r1");
+            assertEquals(List.of(true), listening(running), "released to NoopPropagationModel");
+            running.force("r1", "r2", Force.DOWN);
+            assertEquals(List.of(false), listening(running), "forced down by the window");
+        } finally {
+            running.stop();
+        }
+        Wait.until("stopped", () -> running.snapshot().robots().isEmpty());
+    }
+
+    private static List<Boolean> listening(Servers.Running running) {
+        return running.snapshot().ports().stream().map(HubSnapshot.PortEntry::listening).toList();
+    }
+}

@@ -1,0 +1,136 @@
+package org.usarsim.wss.gui;
+
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.gui.Gui.cells;
+import static org.usarsim.wss.gui.Gui.find;
+import static org.usarsim.wss.gui.Gui.onEdt;
+import static org.usarsim.wss.gui.Gui.run;
+import static org.usarsim.wss.gui.Gui.until;
+import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
+
+import java.awt.event.WindowEvent;
+import java.net.ConnectException;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Logger;
+import java.util.prefs.Preferences;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JMenuItem;
+import javax.swing.JPopupMenu;
+import javax.swing.JTable;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.hub.TestHub;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.noop.NoopPropagationModel;
+
+/**
+ * The right-click menu on a pair, for real: the main window runs a server, robots register over
+ * real sockets, and the items of a real {@link ForceMenu} force the pair down, up and back to the
+ * model; the window's Ports table shows the pair's ports stop and start listening.
+ */
+@Timeout(60)
+class ForceMenuTest {
+
+    private final HubServers servers;
+    private Preferences preferences;
+    private WindowLog windowLog;
+    private JFrame frame;
+    private CountDownLatch closed;
+    private ForceMenu menu;
+
+    ForceMenuTest() throws Exception {
+        servers = new HubServers(TestHub.config(true, 65536, 600, 1000, 30));
+    }
+
+    @BeforeAll
+    static void display() {
+        Gui.requireDisplay();
+    }
+
+    @BeforeEach
+    void open() throws Exception {
+        preferences = TestPreferences.create();
+        windowLog = new WindowLog();
+        Logger.getLogger("").addHandler(windowLog);
+        CountDownLatch windowClosed = new CountDownLatch(1);
+        closed = windowClosed;
+        frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel()),
+                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+                windowLog, new Launch("0", "NoopPropagationModel", false, null, false), windowClosed::countDown).frame());
+        menu = onEdt(() -> new ForceMenu(servers::running));
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        run(menu::close);
+        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
+        assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
+        Logger.getLogger("").removeHandler(windowLog);
+        TestPreferences.remove(preferences);
+    }
+
+    /** Clicks the menu's item whose text starts so, as a user's click does. */
+    private void click(String robotA, String robotB, String item) {
+        run(() -> {
+            JPopupMenu popup = menu.menuFor(robotA, robotB);
+            JMenuItem found = Gui.all(popup, JMenuItem.class).stream().filter(i -> i.getText().startsWith(item))
+                    .findFirst().orElseThrow(() -> new AssertionError("no item '" + item + "'"));
+            assertTrue(found.isEnabled(), item + " is enabled while a server runs");
+            found.doClick();
+        });
+    }
+
+    private void waitForPorts(List<List<String>> expected) {
+        JTable ports = onEdt(() -> find(frame.getContentPane(), JTable.class, "ports"));
+        until("ports shows " + expected, () -> cells(ports).equals(expected));
+    }
+
+    @Test
+    void forceDownUpAndReleaseThroughTheMenuChangeWhatThePortsTableShows() throws Exception {
+        run(() -> {
+            JPopupMenu idle = menu.menuFor("r1", "r2");
+            assertTrue(Gui.all(idle, JMenuItem.class).stream().noneMatch(JMenuItem::isEnabled), "no server: every item disabled");
+        });
+        JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));
+        run(start::doClick);
+        until("the server runs", () -> start.getText().equals("Stop"));
+        int port = servers.running().port();
+        try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3")) {
+            ServerSocket r1Accepts = r1.initAccepting("r1");
+            ServerSocket r2Accepts = r2.initAccepting("r2");
+            int toR2 = r1.dns("r2", 0);
+            int toR1 = r2.dns("r1", 0);
+            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes");
+            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes");
+            waitForPorts(List.of(r1r2, r2r1));
+
+            try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
+                click("r1", "r2", ForceMenu.DOWN);
+                waitForPorts(List.of(no(r1r2), no(r2r1)));
+                assertClosedByPeer(atR2, "the established connection, at r2");
+                assertClosedByPeer(data, "the established connection, at r1");
+            }
+            assertThrows(ConnectException.class, () -> r1.connect(toR2).close(), "forced down: refused");
+
+            click("r2", "r1", ForceMenu.RELEASE);
+            waitForPorts(List.of(r1r2, r2r1));
+            click("r1", "r2", ForceMenu.UP);
+            until("the log says r1 - r2 was forced up", () -> find(frame.getContentPane(), javax.swing.JTextArea.class, "log")
+                    .getText().contains("forced r1 - r2 up"));
+            waitForPorts(List.of(r1r2, r2r1));
+        }
+    }
+
+    private static List<String> no(List<String> portRow) {
+        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no");
+    }
+}

@@ -1,0 +1,71 @@
+package org.usarsim.wss.gui;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.Hub;
+import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * The window's {@link Servers} for tests and benchmarks in the test tree: a {@link Hub} of the
+ * given configuration per start (the port field is not read: the configuration's port counts), as
+ * the application's own servers build one, without the event log.
+ */
+public final class HubServers implements Servers {
+
+    private final HubConfig config;
+    private final List<Hub> hubs = new CopyOnWriteArrayList<>();
+    private volatile Running running;
+
+    public HubServers(HubConfig config) {
+        this.config = config;
+    }
+
+    /** Every hub started so far, in order. */
+    public List<Hub> hubs() {
+        return hubs;
+    }
+
+    /** The server started last (stopped or not), or null before any start. */
+    public Running running() {
+        return running;
+    }
+
+    @Override
+    public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Exception {
+        Hub hub = new Hub(config, model);
+        hub.addListener(listener);
+        hub.start();
+        hubs.add(hub);
+        running = new Running() {
+            @Override
+            public int port() {
+                return hub.controlPort();
+            }
+
+            @Override
+            public HubSnapshot snapshot() {
+                return hub.snapshot();
+            }
+
+            @Override
+            public void force(String robotA, String robotB, Force force) {
+                hub.force(robotA, robotB, force);
+            }
+
+            @Override
+            public void release(String robotA, String robotB) {
+                hub.release(robotA, robotB);
+            }
+
+            @Override
+            public void stop() {
+                hub.close();
+            }
+        };
+        return running;
+    }
+}

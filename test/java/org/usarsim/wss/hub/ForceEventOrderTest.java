@@ -1,0 +1,60 @@
+package org.usarsim.wss.hub;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicReference;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.model.WssEventListener;
+
+/**
+ * Two operators force the same pair at once (the control port and the window's menu): the event
+ * log's FORCED and RELEASED lines come in the order the pair was forced, so its last line for the
+ * pair is the state the pair is in.
+ */
+class ForceEventOrderTest {
+
+    private static final RobotPair PAIR = RobotPair.of("R1", "R2");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void theEventLogsLastLineForAPairForcedFromTwoPlacesAtOnceIsItsState() throws Exception {
+        try (TestHub server = new TestHub(new ScriptedModel(), true, 65536); TestRobot operator = server.robot()) {
+            Hub hub = server.hub;
+            AtomicReference<Thread> window = new AtomicReference<>();
+            // Between the control port's FORCE Up and its event, the window forces the pair down
+            // (the listeners before the event log may take their time: a slow console, say).
+            hub.addListener(new WssEventListener() {
+                @Override
+                public void pairForced(String first, String second, boolean up) {
+                    if (!up || window.get() != null) {
+                        return;
+                    }
+                    Thread other = new Thread(() -> hub.force("R2", "R1", Force.DOWN), "window's force menu");
+                    window.set(other);
+                    other.start();
+                    Wait.settle("the window's force done, or waiting for this one", () -> other.getState() == Thread.State.TERMINATED
+                            || other.getState() == Thread.State.BLOCKED ? 1 : 0, done -> done == 1);
+                }
+            });
+            CsvEventLog log = CsvEventLog.create(dir);
+            hub.addListener(log);
+
+            assertEquals("FORCEREPLY {Status OK}", operator.ask("FORCE {Robot R1} {Peer R2} {State Up}"));
+            Wait.until("the window forced the pair", () -> window.get() != null);
+            window.get().join(5000);
+            assertEquals(Force.DOWN, hub.forced(PAIR), "the window's force came last");
+            log.close();
+
+            List<String> lines = Files.readAllLines(log.file()).stream().filter(line -> line.startsWith("FORCED"))
+                    .map(line -> line.replaceFirst(",\\d\\d:\\d\\d:\\d\\d\\.\\d{3}", "")).toList();
+            assertEquals(List.of("FORCED,R1,R2,UP", "FORCED,R1,R2,DOWN"), lines, "in the order the pair was forced");
+        }
+    }
+}

@@ -82,6 +82,18 @@ class WorldServerTest {
     }
 
     @Test
+    void getwallsListsEveryWallInFileOrderInAnyCase() throws IOException {
+        Socket client = connect();
+        send(client, "GETWALLS\r\n");
+        String walls = "WALLS {Walls 3} {Wall 5.0000,-10.0000,5.0000,10.0000} {Wall 7.0000,-10.0000,7.0000,10.0000}"
+                + " {Wall -1.0000,1.0000,1.0000,1.0000}\r\n";
+        assertEquals(walls, readLine(client));
+        send(client, "getwalls\r\nGETPOS\r\n");
+        assertEquals(walls, readLine(client));
+        assertEquals(AT_10, readLine(client), "answered in order");
+    }
+
+    @Test
     void answersTheWorldAtTheTimeOfTheCommand() throws IOException {
         Socket client = connect();
         seconds = 0;

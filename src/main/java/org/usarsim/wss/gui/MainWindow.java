@@ -27,7 +27,7 @@ import org.usarsim.wss.model.PropagationModel;
 
 /**
  * The main window (the manual's Figure 1): the control bar, "Connected Robots", the ports and
- * connections tables, and the log. Starts and stops a server through {@link Servers}, off the
+ * connections tables (tab "Connections"), the map (tab "Map"), and the log. Starts and stops a server through {@link Servers}, off the
  * event thread; shows the hub through a {@link NetworkView} and the log through a
  * {@link WindowLog}, both taken on a Swing timer every {@link #REFRESH_MS} ms. Everything here
  * runs on the event thread.
@@ -46,6 +46,7 @@ public final class MainWindow {
     private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
     private final StatsPanel stats = new StatsPanel(forceMenu);
     private final LogPanel log = new LogPanel();
+    private final MapPanel map = new MapPanel(forceMenu);
     private final NetworkView view = new NetworkView();
     private final Timer timer;
     private final Servers servers;
@@ -126,6 +127,7 @@ public final class MainWindow {
         JTabbedPane tabs = new JTabbedPane();
         tabs.setName("tabs");
         tabs.addTab("Connections", tables);
+        tabs.addTab("Map", map);
         tabs.addTab("Link statistics", stats);
         JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabs, log);
         center.setResizeWeight(0.75);
@@ -166,6 +168,10 @@ public final class MainWindow {
             ports.show(snapshot.ports());
             links.show(snapshot.links());
             stats.show(snapshot.pairs());
+        }
+        MapData mapData = view.pollMap();
+        if (mapData != null) {
+            map.show(mapData);
         }
         log.append(windowLog.drain());
     }
@@ -214,7 +220,7 @@ public final class MainWindow {
                 settings.storeRun(port, model.name(), eventLog);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
-                view.attach(running);
+                view.attach(running, model);
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();

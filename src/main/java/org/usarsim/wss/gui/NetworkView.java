@@ -4,7 +4,10 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.logging.Level;
+import java.util.logging.Logger;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -15,9 +18,15 @@ import org.usarsim.wss.model.WssEventListener;
  * back, and the next poll returns it. Many events between two polls make one snapshot, and a
  * snapshot is always the hub's whole truth: an event seen out of order, or before the window
  * started observing, cannot leave the tables wrong.
+ *
+ * <p>The map moves without the hub's events (the model polls positions on its own): at every poll
+ * of the event thread the view thread also gathers the {@link MapData} from the model's query
+ * methods (never the hub's lock) and the robots of the last snapshot, and {@link #pollMap} hands it
+ * over the same way.
  */
 final class NetworkView implements WssEventListener {
 
+    private static final Logger LOG = Logger.getLogger(NetworkView.class.getName());
     /** How often a snapshot is taken even without an event: the link statistics' bytes and throughput move on. */
     static final long STATISTICS_NS = java.util.concurrent.TimeUnit.SECONDS.toNanos(1);
 
@@ -29,16 +38,23 @@ final class NetworkView implements WssEventListener {
     private final AtomicBoolean stale = new AtomicBoolean();
     private final AtomicBoolean taking = new AtomicBoolean();
     private final AtomicReference<HubSnapshot> ready = new AtomicReference<>();
+    private final AtomicReference<MapData> readyMap = new AtomicReference<>();
     /** When the last snapshot was asked for (System.nanoTime()); event thread only. */
     private long askedNs;
     /** Guards {@link #source} against a snapshot of a server that stopped meanwhile. */
     private final Object sourceLock = new Object();
     private Servers.Running source;
+    private PropagationModel model;
+    /** The last snapshot of the source, whose robots the map shows (view thread). */
+    private HubSnapshot last = HubSnapshot.EMPTY;
+    /** Whether gathering the map failed since it last worked, and was said (view thread). */
+    private boolean mapFailed;
 
-    /** Observes this server from now on (the first poll takes a snapshot). */
-    void attach(Servers.Running running) {
+    /** Observes this server, which runs {@code runModel}, from now on (the first poll takes a snapshot). */
+    void attach(Servers.Running running, PropagationModel runModel) {
         synchronized (sourceLock) {
             source = running;
+            model = runModel;
             stale.set(true);
         }
     }
@@ -47,37 +63,67 @@ final class NetworkView implements WssEventListener {
     void detach() {
         synchronized (sourceLock) {
             source = null;
+            model = null;
             ready.set(HubSnapshot.EMPTY);
+            readyMap.set(MapData.EMPTY);
         }
     }
 
-    /** Event thread: asks for a snapshot when something changed; returns one when there is a new one, else null. */
+    /**
+     * Event thread: asks for the map, and for a snapshot when something changed; returns the
+     * snapshot when there is a new one, else null.
+     */
     HubSnapshot poll() {
         long now = System.nanoTime();
         if (now - askedNs >= STATISTICS_NS) {
             stale.set(true); // the link statistics count on without an event
         }
-        if (!taking.get() && stale.get()) {
+        if (!taking.get()) {
             Servers.Running from;
+            PropagationModel of;
             synchronized (sourceLock) {
                 from = source;
+                of = model;
             }
-            if (from != null && stale.getAndSet(false)) {
+            if (from != null) {
+                boolean hub = stale.getAndSet(false);
                 taking.set(true);
-                askedNs = now;
-                snapshots.execute(() -> take(from));
+                if (hub) {
+                    askedNs = now;
+                }
+                snapshots.execute(() -> take(from, of, hub));
             }
         }
         return ready.getAndSet(null);
     }
 
-    private void take(Servers.Running from) {
+    /** Event thread: the map gathered since the last call, else null. */
+    MapData pollMap() {
+        return readyMap.getAndSet(null);
+    }
+
+    private void take(Servers.Running from, PropagationModel of, boolean hub) {
         try {
-            HubSnapshot snapshot = from.snapshot();
+            if (hub || last == null) {
+                last = from.snapshot();
+            }
+            HubSnapshot snapshot = last;
+            MapData map = MapData.gather(snapshot, of);
             synchronized (sourceLock) {
                 if (source == from) {
-                    ready.set(snapshot);
+                    if (hub) {
+                        ready.set(snapshot);
+                    }
+                    readyMap.set(map);
+                } else {
+                    last = null;
                 }
+            }
+            mapFailed = false;
+        } catch (RuntimeException e) {
+            if (!mapFailed) {
+                LOG.log(Level.WARNING, "gathering the map failed (the model's query methods threw): " + e, e);
+                mapFailed = true;
             }
         } finally {
             taking.set(false);

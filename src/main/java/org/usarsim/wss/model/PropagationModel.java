@@ -93,4 +93,20 @@ public interface PropagationModel {
     default double rangeFor(String from, String to) {
         return Double.NaN;
     }
+
+    /**
+     * The walls the model knows, seen from above (the map draws them). Empty when the model has no
+     * simulator or the simulator does not give its walls (USARSim does not).
+     */
+    default List<Wall> walls() {
+        return List.of();
+    }
+
+    /**
+     * The strength in dBm below which the model breaks a pair (the map colours a pair near it
+     * amber). NaN when the model has no such cutoff.
+     */
+    default double cutoff() {
+        return Double.NaN;
+    }
 }

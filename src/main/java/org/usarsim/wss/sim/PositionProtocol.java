@@ -9,7 +9,8 @@ import org.usarsim.wss.protocol.SegmentParser;
 
 /**
  * USARSim's answers to the two commands the WSS's models send: {@code GETPOS} and
- * {@code GETOBS {From a} {To b}}, command words and keys in any case ({@code getpos},
+ * {@code GETOBS {From a} {To b}}, and one of the world server's own that USARSim does not know,
+ * {@code GETWALLS} (the map draws the walls), command words and keys in any case ({@code getpos},
  * {@code GetObs {from a} {TO b}}) as USARSim matches them, in the segment grammar of
  * {@link SegmentParser}. Every other line has no answer, as in USARSim. The only place a reply of
  * the world server is written.
@@ -24,6 +25,7 @@ final class PositionProtocol {
         return switch (SegmentParser.word(line).toUpperCase(Locale.ROOT)) {
             case "GETPOS" -> positions(now.get());
             case "GETOBS" -> obstacles(line, now);
+            case "GETWALLS" -> walls(now.get());
             default -> null;
         };
     }
@@ -35,6 +37,16 @@ final class PositionProtocol {
             reply.append(" {Name ").append(robot.name())
                     .append(" Location ").append(metres(p.x())).append(',').append(metres(p.y())).append(',').append(metres(p.z()))
                     .append(" BatteryEmpty ").append(robot.batteryEmpty() ? "True" : "False").append('}');
+        }
+        return reply.toString();
+    }
+
+    /** {@code WALLS {Walls 2} {Wall x1,y1,x2,y2} {Wall ...}}: every wall of the world, in file order. */
+    static String walls(Snapshot world) {
+        StringBuilder reply = new StringBuilder("WALLS {Walls ").append(world.walls().size()).append('}');
+        for (Wall wall : world.walls()) {
+            reply.append(" {Wall ").append(metres(wall.x1())).append(',').append(metres(wall.y1())).append(',')
+                    .append(metres(wall.x2())).append(',').append(metres(wall.y2())).append('}');
         }
         return reply.toString();
     }

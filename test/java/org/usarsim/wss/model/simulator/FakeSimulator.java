@@ -41,6 +41,8 @@ public final class FakeSimulator implements AutoCloseable {
     private volatile Mode mode = Mode.ANSWER;
     private volatile long getobsDelayMs;
     private volatile Supplier<String> garbage = () -> "this is not a reply";
+    /** The answer to GETWALLS; null: none, as USARSim. */
+    private volatile String wallsReply;
     private LongFunction<List<ReportedRobot>> script;
     private long scriptBase;
 
@@ -85,6 +87,11 @@ public final class FakeSimulator implements AutoCloseable {
 
     public void mode(Mode mode) {
         this.mode = mode;
+    }
+
+    /** Answers GETWALLS with this line from now on (null: no answer, as USARSim). */
+    public void answerGetwalls(String line) {
+        wallsReply = line;
     }
 
     /** Answers each GETPOS with the next of these lines (no line end in them) from now on: mode GARBAGE. */
@@ -180,6 +187,9 @@ public final class FakeSimulator implements AutoCloseable {
                     default -> positions(n);
                 };
             }
+        }
+        if (line.equals("GETWALLS")) {
+            return wallsReply;
         }
         if (line.startsWith("GETOBS")) {
             getobs.add(line);

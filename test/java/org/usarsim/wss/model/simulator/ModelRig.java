@@ -59,6 +59,11 @@ public final class ModelRig implements AutoCloseable {
         this(model, settings, new FakeSimulator(), 0, clock);
     }
 
+    /** The model polling this fake, set up by the caller before the model's first poll. */
+    public static ModelRig with(FakeSimulator fake, SimulatorModel model, Map<String, String> settings) throws Exception {
+        return new ModelRig(model, settings, fake, 0, null);
+    }
+
     /** The model polling a simulator that already runs on 127.0.0.1 at {@code port} (no fake: {@link #sim} is null). */
     public static ModelRig polling(int port, SimulatorModel model, Map<String, String> settings) throws Exception {
         return new ModelRig(model, settings, null, port, null);

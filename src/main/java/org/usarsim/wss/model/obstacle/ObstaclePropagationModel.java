@@ -68,6 +68,12 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return pathLoss().strength(a.distanceTo(b)) - obstacles * attenuation;
     }
 
+    /** The range less the attenuation of the obstacles between: a pair behind two walls reaches less far. */
+    @Override
+    protected double range(double obstacles) {
+        return pathLoss().range(obstacles * attenuation);
+    }
+
     @Override
     protected boolean allowsUnknownRobots() {
         return false;

@@ -13,7 +13,15 @@ public record PathLoss(double pd0, double n, double d0, double cutoff) {
 
     /** The distance at which the strength falls to the cutoff. */
     public double range() {
-        return d0 * Math.pow(10, (pd0 - cutoff) / (10 * n));
+        return range(0);
+    }
+
+    /**
+     * The distance at which the strength, less {@code lossDb} (the walls between, say), falls to the
+     * cutoff; below d0 when the loss alone takes it there, and 0 for an infinite loss.
+     */
+    public double range(double lossDb) {
+        return d0 * Math.pow(10, (pd0 - lossDb - cutoff) / (10 * n));
     }
 
     /**

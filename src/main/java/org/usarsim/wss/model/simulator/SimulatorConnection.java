@@ -11,13 +11,15 @@ import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.model.Wall;
 
 /**
  * One connection to a USARSim-compatible position socket: {@code GETPOS} and {@code GETOBS}, each
- * answered by one line. Used by one thread at a time. Every request waits at most the timeout for
+ * answered by one line, and once {@code GETWALLS}, which only the world server answers. Used by one thread at a time. Every request waits at most the timeout for
  * its answer; a stale answer to an earlier request (a late {@code NUMOBS}) is skipped.
  */
 public final class SimulatorConnection implements Closeable {
@@ -34,6 +36,14 @@ public final class SimulatorConnection implements Closeable {
     private final ByteArrayOutputStream partial = new ByteArrayOutputStream();
     private int bufferStart;
     private int bufferEnd;
+    /** Whether GETWALLS goes with the next GETPOS (once per connection). */
+    private boolean wallsToAsk = true;
+    /** Whether the answer to GETWALLS may still come before the next POSITIONS. */
+    private boolean wallsAsked;
+    /** The simulator's walls: null until it answered GETWALLS or showed it will not; empty for none. */
+    private List<Wall> walls;
+    /** Why the simulator's WALLS answer was not used; null when it was, or none came. */
+    private String wallsProblem;
 
     private SimulatorConnection(Socket socket, int timeoutMs) throws IOException {
         this.socket = socket;
@@ -55,21 +65,61 @@ public final class SimulatorConnection implements Closeable {
         }
     }
 
-    /** Sends {@code GETPOS}; the robots the simulator lists, by name. */
+    /**
+     * Sends {@code GETPOS}; the robots the simulator lists, by name. The first time on a connection,
+     * {@code GETWALLS} goes before it in the same write: the walls come in their own time
+     * ({@link #walls()}), never delaying the positions.
+     */
     public Map<String, ReportedRobot> positions() throws IOException {
-        send("GETPOS\r\n");
+        send(wallsToAsk ? "GETWALLS\r\nGETPOS\r\n" : "GETPOS\r\n");
+        wallsAsked |= wallsToAsk;
+        wallsToAsk = false;
         long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
         while (true) {
             String line = readLine(deadline, "GETPOS");
             switch (SimulatorReplies.type(line)) {
                 case SimulatorReplies.POSITIONS:
+                    if (wallsAsked) {
+                        // Answered in order: a simulator that answers GETPOS but said nothing to GETWALLS does not know it.
+                        wallsAsked = false;
+                        walls = List.of();
+                    }
                     return SimulatorReplies.positions(line);
                 case SimulatorReplies.NUMOBS:
                     continue; // a late answer to an earlier GETOBS
+                case SimulatorReplies.WALLS:
+                    wallsAsked = false;
+                    try {
+                        walls = SimulatorReplies.walls(line);
+                    } catch (SimulatorReplyException e) {
+                        // The walls only draw the map: a bad list costs the walls, not the simulator.
+                        wallsProblem = e.getMessage();
+                        walls = List.of();
+                    }
+                    continue;
                 default:
+                    if (wallsAsked) {
+                        // Its answer to GETWALLS, an unknown command to it: no walls.
+                        wallsAsked = false;
+                        walls = List.of();
+                        continue;
+                    }
                     throw unexpected(line);
             }
         }
+    }
+
+    /**
+     * The walls the simulator gave on this connection; empty when it does not know {@code GETWALLS};
+     * null until the first {@link #positions()} showed which.
+     */
+    public List<Wall> walls() {
+        return walls;
+    }
+
+    /** Why the WALLS answer was not used (malformed); null when it was, or none came. */
+    public String wallsProblem() {
+        return wallsProblem;
     }
 
     /**

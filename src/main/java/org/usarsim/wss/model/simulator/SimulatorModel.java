@@ -5,15 +5,18 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -75,6 +78,8 @@ public abstract class SimulatorModel implements PropagationModel {
     private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile Poller poller;
+    /** The simulator's walls as its connection last gave them (GETWALLS); empty when it gives none. */
+    private volatile List<Wall> walls = List.of();
 
     /** A model on the machine's clock. */
     protected SimulatorModel() {
@@ -129,6 +134,7 @@ public abstract class SimulatorModel implements PropagationModel {
         config = run;
         LinkStates links = new LinkStates(run.pathLoss().cutoff(), run.margin(), run.holdSeconds());
         snapshot = PollSnapshot.empty(links, clock.nanoTime());
+        walls = List.of();
         started(run.values());
         PathLoss pathLoss = run.pathLoss();
         log.info(name() + " polls the simulator at " + run.where() + " every " + run.intervalMs() + " ms; range "
@@ -182,7 +188,42 @@ public abstract class SimulatorModel implements PropagationModel {
         return a == null || b == null ? allowsUnknownRobots() : strength(a, b, known.obstacles(pair)) >= pathLoss().cutoff();
     }
 
+    /** Where the last poll found the robot; empty before it or when the simulator did not list it. */
+    @Override
+    public Optional<Position> positionOf(String robot) {
+        ReportedRobot known = snapshot.positions().get(robot);
+        return known == null ? Optional.empty() : Optional.of(new Position(known.x(), known.y(), known.z()));
+    }
+
+    /**
+     * The distance at which the pair's strength reaches the cutoff, with the obstacle count between
+     * them as the last poll counted it (none when not counted, and between a robot and itself: the
+     * range through open space).
+     */
+    @Override
+    public double rangeFor(String from, String to) {
+        double obstacles = from.equals(to) ? Double.NaN : snapshot.obstacles(RobotPair.of(from, to));
+        return range(Double.isNaN(obstacles) ? 0 : obstacles);
+    }
+
+    /** The walls the simulator gave ({@code GETWALLS}, which only the world server answers); empty otherwise. */
+    @Override
+    public List<Wall> walls() {
+        return walls;
+    }
+
+    /** The cutoff of the current run (the declared default before the first start). */
+    @Override
+    public double cutoff() {
+        return pathLoss().cutoff();
+    }
+
     // ---- what a subclass decides ----
+
+    /** The distance at which the strength with this many obstacles between reaches the cutoff: the path loss's range by default. */
+    protected double range(double obstacles) {
+        return pathLoss().range();
+    }
 
     /**
      * The strength in dBm between two robots the simulator lists, with the obstacle count between
@@ -235,6 +276,10 @@ public abstract class SimulatorModel implements PropagationModel {
         private long troubleSince;
         /** A failure that is not the simulator's, already logged; null after a good poll. */
         private String failure;
+        /** The connection whose walls {@link #walls} holds. */
+        private SimulatorConnection wallsFrom;
+        /** Whether this run said that the simulator gives no walls. */
+        private boolean saidNoWalls;
 
         Poller(SimulatorConfig run, SimulatorConnection connection) {
             this.run = run;
@@ -308,6 +353,7 @@ public abstract class SimulatorModel implements PropagationModel {
             if (stopped) {
                 return;
             }
+            learnWalls(simulator);
             for (PollStep.Kick kick : PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed))) {
                 log.info("kicking " + kick.robot() + ": " + kick.reason());
                 if (kick.batteryEmpty()) {
@@ -337,6 +383,27 @@ public abstract class SimulatorModel implements PropagationModel {
                 }
             }
             failure = null;
+        }
+
+        /** Takes the walls of a new connection once they are known, and says what they are, once per connection. */
+        private void learnWalls(SimulatorConnection simulator) {
+            List<Wall> given = simulator.walls();
+            if (given == null || simulator == wallsFrom) {
+                return;
+            }
+            wallsFrom = simulator;
+            walls = given;
+            if (simulator.wallsProblem() != null) {
+                log.warning("the simulator at " + run.where() + " gave its walls in a reply that cannot be read ("
+                        + simulator.wallsProblem() + "): the map shows none");
+            } else if (given.isEmpty()) {
+                if (!saidNoWalls) {
+                    log.info("the simulator at " + run.where() + " gives no walls (USARSim does not answer GETWALLS): the map shows none");
+                    saidNoWalls = true;
+                }
+            } else {
+                log.info("the simulator at " + run.where() + " gives " + given.size() + " walls");
+            }
         }
 
         private void lost(IOException e) {

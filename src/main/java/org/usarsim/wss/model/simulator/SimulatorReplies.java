@@ -8,11 +8,13 @@ import org.usarsim.wss.protocol.Command;
 import org.usarsim.wss.protocol.SegmentException;
 import org.usarsim.wss.protocol.SegmentParser;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.model.Wall;
 
 /**
  * Reads the simulator's replies:
  * {@code POSITIONS {Robots 2} {Name R1 Location 1.25,-3.0,0.45 BatteryEmpty False} {Name R2 ...}} and
- * {@code NUMOBS {From a} {To b} {ObstCount 3.0000}}, in the segment grammar of
+ * {@code NUMOBS {From a} {To b} {ObstCount 3.0000}}, and the world server's
+ * {@code WALLS {Walls 1} {Wall x1,y1,x2,y2}}, in the segment grammar of
  * {@link SegmentParser} (extra whitespace tolerated). Fields it does not use are ignored; anything else
  * is a {@link SimulatorReplyException} naming what is wrong.
  */
@@ -20,6 +22,7 @@ final class SimulatorReplies {
 
     static final String POSITIONS = "POSITIONS";
     static final String NUMOBS = "NUMOBS";
+    static final String WALLS = "WALLS";
 
     private SimulatorReplies() {
     }
@@ -136,6 +139,43 @@ final class SimulatorReplies {
             throw malformed(line, "ObstCount " + count + " is not a number");
         }
         return new ObstacleCount(RobotPair.of(from, to), value >= 0 && Double.isFinite(value) ? value : Double.NaN);
+    }
+
+    /** The walls of a WALLS line, in the order given. */
+    static List<Wall> walls(String line) throws SimulatorReplyException {
+        List<List<String>> segments = segments(line, WALLS);
+        if (segments.isEmpty() || segments.get(0).size() != 2 || !segments.get(0).get(0).equals("Walls")) {
+            throw malformed(line, "it does not start with {Walls n}");
+        }
+        int walls;
+        try {
+            walls = Integer.parseInt(segments.get(0).get(1));
+        } catch (NumberFormatException e) {
+            throw malformed(line, "the wall count is not a number");
+        }
+        if (walls != segments.size() - 1) {
+            throw malformed(line, "it says " + walls + " walls but lists " + (segments.size() - 1));
+        }
+        List<Wall> result = new ArrayList<>();
+        for (List<String> segment : segments.subList(1, segments.size())) {
+            String[] parts = segment.size() == 2 && segment.get(0).equals("Wall") ? segment.get(1).split(",", -1) : new String[0];
+            if (parts.length != 4) {
+                throw malformed(line, "{" + String.join(" ", segment) + "} is not {Wall x1,y1,x2,y2}");
+            }
+            double[] xy = new double[4];
+            for (int i = 0; i < 4; i++) {
+                try {
+                    xy[i] = Double.parseDouble(parts[i]);
+                } catch (NumberFormatException e) {
+                    xy[i] = Double.NaN;
+                }
+                if (!Double.isFinite(xy[i])) {
+                    throw malformed(line, "wall " + segment.get(1) + " is not four finite numbers");
+                }
+            }
+            result.add(new Wall(xy[0], xy[1], xy[2], xy[3]));
+        }
+        return List.copyOf(result);
     }
 
     /**

@@ -1,0 +1,77 @@
+package org.usarsim.wss.gui;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.HashMap;
+import java.util.Map;
+import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.model.Position;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Wall;
+
+/**
+ * What the map shows at one instant, gathered off the event thread (NetworkView) and never changed
+ * after: the robots (each with its position, or null when the model has none, and its range
+ * through open space, NaN when the model has none), a line per pair, the walls and the model's
+ * cutoff (NaN when it has none).
+ */
+record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff) {
+
+    static final MapData EMPTY = new MapData(List.of(), List.of(), List.of(), Double.NaN);
+
+    MapData {
+        robots = List.copyOf(robots);
+        lines = List.copyOf(lines);
+        walls = List.copyOf(walls);
+    }
+
+    /**
+     * Gathers the map of the hub's robots from the model (its query methods only: quick, and never
+     * the hub's lock): positions, open-space ranges, walls and cutoff, and a line for every pair of
+     * registered robots, in the state the snapshot's pairs give it (forced ones included), or, for
+     * a pair the hub has not seen yet, up or broken as the model allows. Strengths are the model's
+     * now. Off the event thread.
+     */
+    static MapData gather(HubSnapshot hub, PropagationModel model) {
+        List<Robot> robots = new ArrayList<>();
+        for (HubSnapshot.RobotEntry entry : hub.robots()) {
+            String name = entry.name();
+            robots.add(new Robot(name, model.positionOf(name).orElse(null), model.rangeFor(name, name)));
+        }
+        Map<String, PairState> states = new HashMap<>();
+        for (HubSnapshot.PairEntry pair : hub.pairs()) {
+            states.put(pair.first() + '\n' + pair.second(), pair.state());
+        }
+        List<Line> lines = new ArrayList<>();
+        for (int i = 0; i < robots.size(); i++) {
+            for (int j = i + 1; j < robots.size(); j++) {
+                String a = robots.get(i).name();
+                String b = robots.get(j).name();
+                PairState state = states.get(a + '\n' + b);
+                if (state == null) {
+                    state = model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
+                }
+                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b)));
+            }
+        }
+        return new MapData(robots, lines, model.walls(), model.cutoff());
+    }
+
+    /** A registered robot; {@code position} null when the model does not know it. */
+    record Robot(String name, Position position, double range) {
+    }
+
+    /** A pair of robots, names in ascending order: its state and the model's strength (dBm, NaN unknown). */
+    record Line(String first, String second, PairState state, double strength) {
+
+        boolean forced() {
+            return state == PairState.FORCED_DOWN || state == PairState.FORCED_UP;
+        }
+    }
+
+    /** The robot of that name, or null. */
+    Robot robot(String name) {
+        return robots.stream().filter(robot -> robot.name().equals(name)).findFirst().orElse(null);
+    }
+}

@@ -1,0 +1,401 @@
+package org.usarsim.wss.gui;
+
+import java.awt.BasicStroke;
+import java.awt.BorderLayout;
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.Font;
+import java.awt.FontMetrics;
+import java.awt.Graphics;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.Stroke;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseWheelEvent;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
+import java.util.List;
+import java.util.Locale;
+import java.util.Objects;
+import javax.swing.DefaultListModel;
+import javax.swing.JComponent;
+import javax.swing.JLabel;
+import javax.swing.JList;
+import javax.swing.JPanel;
+import javax.swing.JPopupMenu;
+import javax.swing.JScrollPane;
+import javax.swing.SwingUtilities;
+import org.usarsim.wss.model.Position;
+import org.usarsim.wss.model.Wall;
+
+/**
+ * The "Map" tab: the robots at their positions (names beside the dots), a line per pair coloured
+ * by {@link MapColours}, dashed when forced, the selected robot's range as a circle, the walls, and
+ * beside it the robots without a position. Fits the world until the user zooms (wheel) or pans
+ * (drag); a double click fits it again. A click on a dot selects the robot; a right click on a line
+ * opens the {@link ForceMenu}. Event thread only; painting reads the {@link MapData} it was given.
+ */
+final class MapPanel extends JPanel {
+
+    static final int MARGIN = 40;
+    /** How near, in pixels, a click must be to a dot or a line to hit it. */
+    static final int HIT = 8;
+    private static final int DOT = 10;
+    private static final Color WALL = new Color(0x40, 0x40, 0x48);
+    private static final Color ROBOT = new Color(0x1F, 0x4E, 0x9A);
+    private static final Color SELECTED = new Color(0xD0, 0x40, 0x20);
+    private static final Color RANGE = new Color(0x1F, 0x4E, 0x9A);
+    private static final Color GRID = new Color(0xEE, 0xEE, 0xF2);
+
+    private final Canvas canvas = new Canvas();
+    private final DefaultListModel<String> unplaced = new DefaultListModel<>();
+    private final ForceMenu forceMenu;
+    private MapData data = MapData.EMPTY;
+    /** The user's zoom and pan; null while the map fits the world by itself. */
+    private MapTransform userTransform;
+    private String selected;
+
+    MapPanel(ForceMenu forceMenu) {
+        super(new BorderLayout(8, 0));
+        this.forceMenu = forceMenu;
+        canvas.setName("map");
+        JList<String> list = new JList<>(unplaced);
+        list.setName("withoutPosition");
+        JPanel side = new JPanel(new BorderLayout(0, 4));
+        side.add(new JLabel("Without a position"), BorderLayout.NORTH);
+        JScrollPane scroll = new JScrollPane(list);
+        scroll.setPreferredSize(new Dimension(160, 100));
+        side.add(scroll, BorderLayout.CENTER);
+        add(canvas, BorderLayout.CENTER);
+        add(side, BorderLayout.EAST);
+    }
+
+    /** Shows what the last poll gathered. */
+    void show(MapData newData) {
+        data = Objects.requireNonNull(newData);
+        List<String> without = data.robots().stream().filter(robot -> robot.position() == null).map(MapData.Robot::name).toList();
+        if (!without.equals(java.util.Collections.list(unplaced.elements()))) {
+            unplaced.clear();
+            unplaced.addAll(without);
+        }
+        canvas.repaint();
+    }
+
+    /** What the map shows now. */
+    MapData data() {
+        return data;
+    }
+
+    /** Selects the robot whose range is drawn (null: none). */
+    void select(String robot) {
+        selected = robot;
+        canvas.repaint();
+    }
+
+    String selected() {
+        return selected;
+    }
+
+    /** The transform the map is drawn with now: the user's, or the one that fits the world into the canvas. */
+    MapTransform transform() {
+        return userTransform != null ? userTransform : MapTransform.fit(worldBounds(), canvas.getWidth(), canvas.getHeight(), MARGIN);
+    }
+
+    /** The canvas the map is painted on (tests and screenshots read it). */
+    JComponent canvas() {
+        return canvas;
+    }
+
+    /** Where the robot's dot is on the canvas; null when it has no position or is not shown. */
+    Point2D screenOf(String robot) {
+        MapData.Robot known = data.robot(robot);
+        return known == null || known.position() == null ? null
+                : transform().toScreen(known.position().x(), known.position().y());
+    }
+
+    /** The rectangle of the world that fitting shows: the positions and the walls. */
+    private Rectangle2D worldBounds() {
+        Rectangle2D bounds = null;
+        for (MapData.Robot robot : data.robots()) {
+            if (robot.position() != null) {
+                bounds = add(bounds, robot.position().x(), robot.position().y());
+            }
+        }
+        for (Wall wall : data.walls()) {
+            bounds = add(bounds, wall.x1(), wall.y1());
+            bounds = add(bounds, wall.x2(), wall.y2());
+        }
+        return bounds != null ? bounds : new Rectangle2D.Double(0, 0, 0, 0);
+    }
+
+    private static Rectangle2D add(Rectangle2D bounds, double x, double y) {
+        if (bounds == null) {
+            return new Rectangle2D.Double(x, y, 0, 0);
+        }
+        bounds.add(x, y);
+        return bounds;
+    }
+
+    /** The robot whose dot is within {@link #HIT} pixels of the point, the nearest; null when none. */
+    String robotAt(double x, double y) {
+        String found = null;
+        double best = HIT;
+        for (MapData.Robot robot : data.robots()) {
+            Point2D at = screenOf(robot.name());
+            if (at != null && at.distance(x, y) <= best) {
+                best = at.distance(x, y);
+                found = robot.name();
+            }
+        }
+        return found;
+    }
+
+    /** The line within {@link #HIT} pixels of the point, the nearest; null when none. */
+    MapData.Line lineAt(double x, double y) {
+        MapData.Line found = null;
+        double best = HIT;
+        for (MapData.Line line : data.lines()) {
+            Point2D a = screenOf(line.first());
+            Point2D b = screenOf(line.second());
+            if (a != null && b != null) {
+                double distance = Line2D.ptSegDist(a.getX(), a.getY(), b.getX(), b.getY(), x, y);
+                if (distance <= best) {
+                    best = distance;
+                    found = line;
+                }
+            }
+        }
+        return found;
+    }
+
+    /** The force menu of the line a right click at this point hits; null when it hits none. */
+    JPopupMenu menuAt(double x, double y) {
+        MapData.Line line = lineAt(x, y);
+        return line == null ? null : forceMenu.menuFor(line.first(), line.second());
+    }
+
+    /** The map itself. */
+    private final class Canvas extends JComponent {
+
+        private Point2D dragFrom;
+
+        Canvas() {
+            setOpaque(true);
+            setBackground(Color.WHITE);
+            setPreferredSize(new Dimension(600, 400));
+            MouseAdapter mouse = new MouseAdapter() {
+                @Override
+                public void mousePressed(MouseEvent e) {
+                    if (e.isPopupTrigger()) {
+                        popup(e);
+                    } else if (SwingUtilities.isLeftMouseButton(e)) {
+                        dragFrom = e.getPoint();
+                        if (e.getClickCount() == 2) {
+                            userTransform = null;
+                            repaint();
+                        } else {
+                            String robot = robotAt(e.getX(), e.getY());
+                            if (robot != null) {
+                                select(robot);
+                            }
+                        }
+                    }
+                }
+
+                @Override
+                public void mouseReleased(MouseEvent e) {
+                    dragFrom = null;
+                    if (e.isPopupTrigger()) {
+                        popup(e);
+                    }
+                }
+
+                @Override
+                public void mouseDragged(MouseEvent e) {
+                    if (dragFrom != null) {
+                        userTransform = transform().pan(e.getX() - dragFrom.getX(), e.getY() - dragFrom.getY());
+                        dragFrom = e.getPoint();
+                        repaint();
+                    }
+                }
+
+                @Override
+                public void mouseWheelMoved(MouseWheelEvent e) {
+                    userTransform = transform().zoom(Math.pow(1.15, -e.getPreciseWheelRotation()), e.getX(), e.getY());
+                    repaint();
+                }
+            };
+            addMouseListener(mouse);
+            addMouseMotionListener(mouse);
+            addMouseWheelListener(mouse);
+        }
+
+        private void popup(MouseEvent e) {
+            JPopupMenu menu = menuAt(e.getX(), e.getY());
+            if (menu != null) {
+                menu.show(this, e.getX(), e.getY());
+            }
+        }
+
+        @Override
+        protected void paintComponent(Graphics graphics) {
+            Graphics2D g = (Graphics2D) graphics.create();
+            try {
+                g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+                g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
+                g.setColor(getBackground());
+                g.fillRect(0, 0, getWidth(), getHeight());
+                MapData shown = data;
+                MapTransform t = transform();
+                double step = gridStep(t.scale());
+                paintGrid(g, t, step);
+                paintWalls(g, t, shown);
+                paintRange(g, t, shown);
+                paintLines(g, t, shown);
+                paintRobots(g, t, shown);
+                paintLegend(g, step);
+                if (shown.robots().stream().noneMatch(robot -> robot.position() != null)) {
+                    g.setColor(Color.GRAY);
+                    String text = shown.robots().isEmpty() ? "No robots" : "No robot has a position (the model gives none)";
+                    g.drawString(text, (getWidth() - g.getFontMetrics().stringWidth(text)) / 2, getHeight() / 2);
+                }
+            } finally {
+                g.dispose();
+            }
+        }
+
+        private void paintGrid(Graphics2D g, MapTransform t, double step) {
+            Point2D from = t.toWorld(0, getHeight());
+            Point2D to = t.toWorld(getWidth(), 0);
+            g.setColor(GRID);
+            g.setStroke(new BasicStroke(1));
+            for (double x = Math.floor(from.getX() / step) * step; x <= to.getX(); x += step) {
+                int sx = (int) Math.round(t.toScreen(x, 0).getX());
+                g.drawLine(sx, 0, sx, getHeight());
+            }
+            for (double y = Math.floor(from.getY() / step) * step; y <= to.getY(); y += step) {
+                int sy = (int) Math.round(t.toScreen(0, y).getY());
+                g.drawLine(0, sy, getWidth(), sy);
+            }
+        }
+
+        private void paintWalls(Graphics2D g, MapTransform t, MapData shown) {
+            g.setColor(WALL);
+            g.setStroke(new BasicStroke(3, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
+            for (Wall wall : shown.walls()) {
+                g.draw(new Line2D.Double(t.toScreen(wall.x1(), wall.y1()), t.toScreen(wall.x2(), wall.y2())));
+            }
+        }
+
+        private void paintRange(Graphics2D g, MapTransform t, MapData shown) {
+            MapData.Robot robot = selected != null ? shown.robot(selected) : null;
+            if (robot == null || robot.position() == null || !(robot.range() > 0) || Double.isInfinite(robot.range())) {
+                return;
+            }
+            Point2D at = t.toScreen(robot.position().x(), robot.position().y());
+            double r = robot.range() * t.scale();
+            Ellipse2D circle = new Ellipse2D.Double(at.getX() - r, at.getY() - r, 2 * r, 2 * r);
+            g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 24));
+            g.fill(circle);
+            g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 160));
+            g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
+            g.draw(circle);
+            // Under the robot's name: the circle itself may lie beyond the canvas.
+            String label = String.format(Locale.ROOT, "range %.1f m", robot.range());
+            g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
+            label(g, label, at.getX() + DOT, at.getY() + 2 * DOT);
+        }
+
+        private void paintLines(Graphics2D g, MapTransform t, MapData shown) {
+            for (MapData.Line line : shown.lines()) {
+                Point2D a = screenOf(line.first());
+                Point2D b = screenOf(line.second());
+                if (a == null || b == null) {
+                    continue;
+                }
+                g.setColor(MapColours.of(line, shown.cutoff()));
+                g.setStroke(lineStroke(line.forced()));
+                g.draw(new Line2D.Double(a, b));
+                if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
+                    String text = String.format(Locale.ROOT, "%.1f dBm", line.strength());
+                    g.setFont(getFont().deriveFont(Font.PLAIN, 10f));
+                    label(g, text, (a.getX() + b.getX()) / 2 + 4, (a.getY() + b.getY()) / 2 - 4);
+                }
+            }
+        }
+
+        /** Text in the current colour and font on a light patch, legible over lines and walls. */
+        private void label(Graphics2D g, String text, double x, double y) {
+            FontMetrics metrics = g.getFontMetrics();
+            Color ink = g.getColor();
+            g.setColor(new Color(255, 255, 255, 210));
+            g.fillRect((int) x - 2, (int) y - metrics.getAscent(), metrics.stringWidth(text) + 4, metrics.getHeight());
+            g.setColor(ink);
+            g.drawString(text, (float) x, (float) y);
+        }
+
+        private Stroke lineStroke(boolean dashed) {
+            return dashed ? new BasicStroke(2.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {8, 6}, 0)
+                    : new BasicStroke(2.5f);
+        }
+
+        private void paintRobots(Graphics2D g, MapTransform t, MapData shown) {
+            g.setFont(getFont().deriveFont(Font.BOLD, 12f));
+            for (MapData.Robot robot : shown.robots()) {
+                Position p = robot.position();
+                if (p == null) {
+                    continue;
+                }
+                Point2D at = t.toScreen(p.x(), p.y());
+                boolean isSelected = robot.name().equals(selected);
+                g.setColor(isSelected ? SELECTED : ROBOT);
+                g.fill(new Ellipse2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT));
+                g.drawString(robot.name(), (float) at.getX() + DOT, (float) at.getY() - DOT / 2f);
+            }
+        }
+
+        private void paintLegend(Graphics2D g, double step) {
+            g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
+            FontMetrics metrics = g.getFontMetrics();
+            int x = 10;
+            int y = getHeight() - 12;
+            Object[][] entries = {
+                {MapColours.STRONG, false, "up"},
+                {MapColours.NEAR, false, "within " + (int) MapColours.NEAR_DB + " dB of the cutoff"},
+                {MapColours.BROKEN, false, "broken / forced down"},
+                {Color.DARK_GRAY, true, "forced"}};
+            for (Object[] entry : entries) {
+                g.setColor((Color) entry[0]);
+                g.setStroke(lineStroke((Boolean) entry[1]));
+                g.drawLine(x, y - 4, x + 24, y - 4);
+                g.setColor(Color.DARK_GRAY);
+                g.drawString((String) entry[2], x + 30, y);
+                x += 40 + metrics.stringWidth((String) entry[2]);
+            }
+            // The scale: one grid step.
+            int pixels = (int) Math.round(step * transform().scale());
+            int right = getWidth() - 12;
+            g.setStroke(new BasicStroke(2));
+            g.drawLine(right - pixels, y - 4, right, y - 4);
+            g.drawLine(right - pixels, y - 8, right - pixels, y);
+            g.drawLine(right, y - 8, right, y);
+            String label = (step >= 1 ? String.valueOf((long) step) : String.valueOf(step)) + " m";
+            g.drawString(label, right - pixels / 2 - metrics.stringWidth(label) / 2, y - 10);
+        }
+    }
+
+    /** A round number of metres (1, 2 or 5 times a power of ten) that is 50 to 125 pixels at this scale. */
+    static double gridStep(double scale) {
+        double metres = 60 / scale;
+        double power = Math.pow(10, Math.floor(Math.log10(metres)));
+        for (double m : new double[] {1, 2, 5, 10}) {
+            if (m * power >= metres) {
+                return m * power;
+            }
+        }
+        return 10 * power;
+    }
+}

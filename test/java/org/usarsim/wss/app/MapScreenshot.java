@@ -1,0 +1,140 @@
+package org.usarsim.wss.app;
+
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.Reader;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.prefs.Preferences;
+import javax.imageio.ImageIO;
+import javax.swing.JFrame;
+import javax.swing.JTabbedPane;
+import javax.swing.SwingUtilities;
+import org.usarsim.wss.gui.Gui;
+import org.usarsim.wss.gui.Launch;
+import org.usarsim.wss.gui.MainWindow;
+import org.usarsim.wss.gui.MapProbe;
+import org.usarsim.wss.gui.ModelPreferences;
+import org.usarsim.wss.gui.Servers;
+import org.usarsim.wss.gui.WindowLog;
+import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
+import org.usarsim.wss.sim.WorldServer;
+
+/**
+ * Takes the map screenshots of docs/images (docs/gui.md, "For developers"): serves the world file,
+ * opens the window with the properties file's model, registers the world's robots with the WSS,
+ * shows the map, waits SECONDS of world time, selects ROBOT and paints the window to PNG.
+ *
+ *     xvfb-run -a -s "-screen 0 1280x900x24" java -cp target/classes:target/test-classes \
+ *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png
+ */
+public final class MapScreenshot {
+
+    private MapScreenshot() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Path worldFile = Path.of(args[0]);
+        Properties properties = new Properties();
+        try (Reader in = Files.newBufferedReader(Path.of(args[1]))) {
+            properties.load(in);
+        }
+        long millis = (long) (Double.parseDouble(args[2]) * 1000);
+        String selected = args[3];
+        Path out = Path.of(args[4]);
+
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        WorldServer world = WorldServer.start(worldFile, InetAddress.getByName("127.0.0.1"), simulatorPort);
+        long started = System.nanoTime();
+        PropagationModel model = properties.getProperty("wss.model").contains("Obstacle")
+                ? new ObstaclePropagationModel() : new DistanceOnlyPropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(model.settings()));
+        properties.stringPropertyNames().stream().filter(key -> !key.startsWith("wss."))
+                .forEach(key -> settings.put(key, properties.getProperty(key).strip()));
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.interval", "200");
+
+        Preferences preferences = Preferences.userRoot().node("wss-map-screenshot-" + ProcessHandle.current().pid());
+        Properties serverProperties = new Properties();
+        serverProperties.setProperty("wss.bindAddress", "127.0.0.1");
+        WindowServers application = new WindowServers(Settings.of(serverProperties, "screenshot"));
+        AtomicReference<Servers.Running> running = new AtomicReference<>();
+        Servers servers = (port, runModel, eventLog, listener) -> {
+            Servers.Running run = application.start(port, runModel, eventLog, listener);
+            running.set(run);
+            return run;
+        };
+        WindowLog windowLog = new WindowLog();
+        java.util.logging.Logger.getLogger("").addHandler(windowLog);
+        AtomicReference<JFrame> frame = new AtomicReference<>();
+        SwingUtilities.invokeAndWait(() -> {
+            JFrame window = MainWindow.open(servers, List.of(model), new WindowSettings(preferences.node("window")),
+                    new ModelPreferences(preferences.node("models")), windowLog,
+                    new Launch("0", model.name(), false, new ModelSettings(settings), true), () -> { }).frame();
+            window.setBounds(0, 0, 1100, 780);
+            frame.set(window);
+        });
+        Gui.until("the server runs", () -> running.get() != null);
+        int port = running.get().port();
+
+        List<Socket> robots = new ArrayList<>();
+        for (String line : Files.readAllLines(worldFile)) {
+            String[] words = line.strip().split("\\s+");
+            if (words[0].equals("robot")) {
+                Socket robot = new Socket("127.0.0.1", port);
+                robot.getOutputStream().write(("INIT {Robot " + words[1] + "}\r\n").getBytes(StandardCharsets.UTF_8));
+                readLine(robot.getInputStream());
+                robots.add(robot);
+            }
+        }
+        MapProbe map = MapProbe.of(frame.get());
+        map.showMap();
+        Thread.sleep(Math.max(0, millis - (System.nanoTime() - started) / 1_000_000));
+        map.select(selected);
+        Thread.sleep(500); // a poll and a refresh of the window after the last move
+        BufferedImage image = Gui.onEdt(() -> {
+            JFrame window = frame.get();
+            BufferedImage shot = new BufferedImage(window.getRootPane().getWidth(), window.getRootPane().getHeight(),
+                    BufferedImage.TYPE_INT_RGB);
+            Graphics2D g = shot.createGraphics();
+            window.getRootPane().printAll(g);
+            g.dispose();
+            return shot;
+        });
+        ImageIO.write(image, "png", out.toFile());
+        for (Socket robot : robots) {
+            robot.close();
+        }
+        world.close();
+        preferences.removeNode();
+        System.exit(0);
+    }
+
+    private static String readLine(InputStream in) throws IOException {
+        StringBuilder line = new StringBuilder();
+        for (int c = in.read(); c != '\n' && c >= 0; c = in.read()) {
+            line.append((char) c);
+        }
+        return line.toString();
+    }
+}

@@ -1,0 +1,175 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.usarsim.wss.gui.Gui.find;
+import static org.usarsim.wss.gui.Gui.onEdt;
+import static org.usarsim.wss.gui.Gui.run;
+import static org.usarsim.wss.gui.Gui.until;
+
+import java.awt.Color;
+import java.awt.event.WindowEvent;
+import java.awt.geom.Point2D;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Properties;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.logging.Logger;
+import java.util.prefs.Preferences;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import javax.swing.JButton;
+import javax.swing.JFrame;
+import javax.swing.JTextArea;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.gui.Gui;
+import org.usarsim.wss.gui.Launch;
+import org.usarsim.wss.gui.MainWindow;
+import org.usarsim.wss.gui.MapProbe;
+import org.usarsim.wss.gui.ModelPreferences;
+import org.usarsim.wss.gui.TestPreferences;
+import org.usarsim.wss.gui.WindowLog;
+import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.Position;
+import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
+import org.usarsim.wss.sim.WorldServer;
+
+/**
+ * The map tab for real: a world server serving a world file, the DistanceOnly model polling it, the
+ * window the application opens, robots registered over real sockets; the map read back.
+ */
+@Timeout(60)
+class MapWindowTest {
+
+    private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");
+
+    /** Range 55.6 m (distance.n 3): Base - Scout 10 m apart talk, Far is 100 m from both. */
+    private static final String WORLD = """
+            robot Base  0,0,0
+            robot Scout 10,0,0
+            robot Far   0,100,0
+            wall 5,-5 5,5
+            """;
+
+    @TempDir
+    Path dir;
+
+    private WorldServer world;
+    private Preferences preferences;
+    private WindowLog windowLog;
+    private JFrame frame;
+    private final CountDownLatch closed = new CountDownLatch(1);
+
+    @BeforeAll
+    static void display() {
+        Gui.requireDisplay();
+    }
+
+    @AfterEach
+    void close() throws Exception {
+        if (frame != null) {
+            run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
+            assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
+        }
+        if (world != null) {
+            world.close();
+        }
+        if (windowLog != null) {
+            Logger.getLogger("").removeHandler(windowLog);
+        }
+        if (preferences != null) {
+            TestPreferences.remove(preferences);
+        }
+    }
+
+    @Test
+    void theMapShowsTheRobotsOfAWorldFileAtTheirPositionsAndABrokenPairGrey() throws Exception {
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        world = WorldServer.start(Files.writeString(dir.resolve("map.world"), WORLD), InetAddress.getByName("127.0.0.1"), simulatorPort);
+        DistanceOnlyPropagationModel model = new DistanceOnlyPropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(model.settings()));
+        settings.put("usarsim.host", "127.0.0.1");
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.interval", "100");
+        settings.put("distance.n", "3");
+        frame = open(model, new ModelSettings(settings));
+        int port = controlPort();
+
+        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3");
+                TestRobot far = new TestRobot(port, "127.0.0.4")) {
+            base.init("Base");
+            scout.init("Scout");
+            far.init("Far");
+            MapProbe map = MapProbe.of(frame);
+            map.showMap();
+            until("the map shows the three robots at positions and their pairs", () -> map.shows(List.of("Base", "Far", "Scout")));
+
+            Map<String, Position> expected = Map.of("Base", new Position(0, 0, 0), "Scout", new Position(10, 0, 0),
+                    "Far", new Position(0, 100, 0));
+            for (Map.Entry<String, Position> robot : expected.entrySet()) {
+                assertEquals(robot.getValue(), map.position(robot.getKey()), "the model's position of " + robot.getKey());
+                Point2D dot = map.dotInWorld(robot.getKey());
+                assertEquals(robot.getValue().x(), dot.getX(), 1e-9, robot.getKey() + "'s dot, x in metres");
+                assertEquals(robot.getValue().y(), dot.getY(), 1e-9, robot.getKey() + "'s dot, y in metres");
+                assertTrue(map.dotOnCanvas(robot.getKey()), robot.getKey() + " is drawn inside the map");
+            }
+            until("the pairs decided by the model's poll", () -> map.lineColour("Base", "Far").equals(MapProbe.broken()));
+            assertEquals(MapProbe.broken(), map.lineColour("Base", "Far"), "100 m: out of range, grey");
+            assertEquals(MapProbe.broken(), map.lineColour("Far", "Scout"), "100.5 m: out of range, grey");
+            assertEquals(MapProbe.strong(), map.lineColour("Base", "Scout"), "10 m, -70.6 dBm: in range, green");
+            assertEquals(MapProbe.broken(), map.pixelAlong("Base", "Far", 0.3), "painted grey");
+            assertEquals(MapProbe.strong(), map.pixelAlong("Base", "Scout", 0.25), "painted green");
+            assertEquals("Base - Far", map.lineHit("Base", "Far", 0.3), "a right click there opens the menu on Base - Far");
+
+            // The menu of a line, for real: Base - Scout, in range, forced down, then released.
+            map.chooseOnLine("Base", "Scout", 0.25, "Force down");
+            until("Base - Scout forced down", () -> map.line("Base", "Scout", PairState.FORCED_DOWN));
+            assertEquals(MapProbe.broken(), map.lineColour("Base", "Scout"), "forced down: grey (and dashed)");
+            List<Color> along = java.util.stream.IntStream.rangeClosed(10, 45).mapToObj(i -> map.pixelAlong("Base", "Scout", i / 100.0)).toList();
+            assertTrue(along.contains(MapProbe.broken()), "painted grey: " + along);
+            assertTrue(along.stream().anyMatch(c -> c.getRed() > 200), "with gaps, dashed: " + along);
+            map.chooseOnLine("Base", "Scout", 0.25, "Release");
+            until("Base - Scout back to the model", () -> map.line("Base", "Scout", PairState.UP));
+            assertEquals(MapProbe.strong(), map.lineColour("Base", "Scout"));
+        }
+    }
+
+    private JFrame open(PropagationModel model, ModelSettings settings) throws Exception {
+        preferences = TestPreferences.create();
+        windowLog = new WindowLog();
+        Logger.getLogger("").addHandler(windowLog);
+        Properties properties = new Properties();
+        properties.setProperty("wss.bindAddress", "127.0.0.1");
+        properties.setProperty("wss.eventLogDir", dir.toString());
+        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
+        return onEdt(() -> MainWindow.open(servers, List.of(model), new WindowSettings(preferences.node("window")),
+                new ModelPreferences(preferences.node("models")), windowLog,
+                new Launch("0", model.name(), false, settings, true), closed::countDown).frame());
+    }
+
+    private int controlPort() {
+        until("the server runs", () -> find(frame.getContentPane(), JButton.class, "start").getText().equals("Stop"));
+        until("the log names the port", () -> LISTENING.matcher(find(frame.getContentPane(), JTextArea.class, "log").getText()).find());
+        Matcher matcher = LISTENING.matcher(onEdt(() -> find(frame.getContentPane(), JTextArea.class, "log").getText()));
+        assertTrue(matcher.find());
+        return Integer.parseInt(matcher.group(1));
+    }
+}

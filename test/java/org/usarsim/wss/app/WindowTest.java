@@ -287,7 +287,7 @@ class WindowTest {
             // "Last close" is wide enough for its longest reasons, not cut to "out of r..." (960 wide, the first run's size).
             int lastCloseWidth = onEdt(() -> stats.getColumnModel()
                     .getColumn(stats.getColumnModel().getColumnIndex("Last close")).getWidth());
-            for (String reason : List.of("out of range", "target refused", "peer closed")) {
+            for (String reason : List.of("out of range", "target refused", "peer closed", "server stopped")) {
                 int needed = onEdt(() -> stats.getFontMetrics(stats.getFont()).stringWidth(reason) + 4);
                 assertTrue(needed < lastCloseWidth, reason + " needs " + needed + " px, has " + lastCloseWidth);
             }

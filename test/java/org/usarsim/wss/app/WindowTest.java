@@ -284,6 +284,13 @@ class WindowTest {
             javax.swing.JTabbedPane tabs = component(javax.swing.JTabbedPane.class, "tabs");
             run(() -> tabs.setSelectedIndex(tabs.indexOfTab("Link statistics")));
             until("the statistics tab shows", stats::isShowing);
+            // "Last close" is wide enough for its longest reasons, not cut to "out of r..." (960 wide, the first run's size).
+            int lastCloseWidth = onEdt(() -> stats.getColumnModel()
+                    .getColumn(stats.getColumnModel().getColumnIndex("Last close")).getWidth());
+            for (String reason : List.of("out of range", "target refused", "peer closed", "server stopped")) {
+                int needed = onEdt(() -> stats.getFontMetrics(stats.getFont()).stringWidth(reason) + 4);
+                assertTrue(needed < lastCloseWidth, reason + " needs " + needed + " px, has " + lastCloseWidth);
+            }
             run(() -> {
                 java.awt.Rectangle cell = stats.getCellRect(0, 0, true);
                 stats.dispatchEvent(new java.awt.event.MouseEvent(stats, java.awt.event.MouseEvent.MOUSE_PRESSED,

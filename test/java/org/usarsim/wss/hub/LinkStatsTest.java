@@ -195,6 +195,14 @@ class LinkStatsTest {
     }
 
     @Test
+    void aServerStoppingIsTheLastCloseOfItsPairs() throws Exception {
+        start(600);
+        connectAToB(robotsAAndB(), 1);
+        server.hub.close();
+        Wait.until("the link closed by the stop", () -> "server stopped".equals(pair().lastClose()));
+    }
+
+    @Test
     void aTargetThatDoesNotAcceptIsTheLastClose() throws Exception {
         start(600);
         ServerSocket bAccepts = robotsAAndB();

@@ -88,6 +88,16 @@ class FilteredTablePanel<T> extends JPanel {
         });
     }
 
+    /**
+     * Event thread: the columns' preferred widths, in order; the table shares its width out in
+     * these proportions, so that a wide column ("Last close") is not cut.
+     */
+    void preferredWidths(int... widths) {
+        for (int i = 0; i < widths.length; i++) {
+            table.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
+        }
+    }
+
     /** Event thread. */
     void show(List<T> rows) {
         model.setRows(rows);

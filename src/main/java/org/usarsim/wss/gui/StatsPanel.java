@@ -25,6 +25,8 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 new RowsModel.Column<>("Resumes", Long.class, PairEntry::resumes),
                 new RowsModel.Column<>("Up %", Double.class, pair -> Math.round(pair.upShare() * 1000) / 10.0),
                 new RowsModel.Column<>("Last close", String.class, pair -> pair.lastClose() == null ? "" : pair.lastClose())));
+        // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Conns, Breaks, Resumes, Up %, Last close
+        preferredWidths(70, 70, 80, 60, 60, 80, 80, 70, 70, 50, 55, 65, 50, 105);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
     }

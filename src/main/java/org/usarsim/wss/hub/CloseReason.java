@@ -6,12 +6,14 @@ public enum CloseReason {
     OUT_OF_RANGE("out of range"),
     /** The model kicked one of the robots out. */
     KICKED("kicked"),
-    /** Either end closed its connection, or reset it, or the server stopped. */
+    /** Either end closed its connection, or reset it. */
     PEER_CLOSED("peer closed"),
     /** The target robot did not accept the WSS's connection. */
     TARGET_REFUSED("target refused"),
     /** An operator forced the pair down. */
-    FORCED("forced");
+    FORCED("forced"),
+    /** The server stopped (Stop in the window, SIGTERM headless): it closed every connection. */
+    SERVER_STOPPED("server stopped");
 
     private final String text;
 

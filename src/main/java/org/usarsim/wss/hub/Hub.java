@@ -159,7 +159,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             ports.clear();
             robots.clear();
         }
-        links.forEach(Link::close);
+        closeLinks(links, CloseReason.SERVER_STOPPED);
         warnings.close();
         LOG.info("WSS stopped");
     }

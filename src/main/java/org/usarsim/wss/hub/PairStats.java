@@ -39,6 +39,7 @@ final class PairStats {
         this.state = state;
         this.firstSeenNs = nowNs;
         this.stateSinceNs = nowNs;
+        this.sampledNs = nowNs; // the first span starts when the pair is first seen, at zero bytes
     }
 
     /** The counter of bytes forwarded from {@code robot} to the other robot of the pair. */
@@ -114,16 +115,13 @@ final class PairStats {
 
     /**
      * The throughput each way (bytes/s, first to second then second to first) over the span since
-     * the previous sample that was at least {@link #RATE_SPAN_NS} ago; 0 until there is one.
+     * the previous sample that was at least {@link #RATE_SPAN_NS} ago, or since the pair was first
+     * seen (so bytes moved before the first sample count too); 0 until a span has passed.
      */
     synchronized double[] rates(long nowNs) {
         long toSecond = bytesFirstToSecond.sum();
         long toFirst = bytesSecondToFirst.sum();
-        if (sampledNs == 0) {
-            sampledNs = nowNs;
-            sampledFirstToSecond = toSecond;
-            sampledSecondToFirst = toFirst;
-        } else if (nowNs - sampledNs >= RATE_SPAN_NS) {
+        if (nowNs - sampledNs >= RATE_SPAN_NS) {
             double seconds = (nowNs - sampledNs) / 1e9;
             rateFirstToSecond = (toSecond - sampledFirstToSecond) / seconds;
             rateSecondToFirst = (toFirst - sampledSecondToFirst) / seconds;

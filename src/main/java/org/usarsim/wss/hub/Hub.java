@@ -214,6 +214,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.put(name, robot);
             pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
+            // A kick forgot the model's breaks of the robot's pairs: their statistics follow the state they are in now.
+            stats.pairsOf(name).forEach(pair -> recordState(pair, true));
             for (WssPort port : ports.of(name)) {
                 if (shouldListen(port.key, true) && !port.listening()) {
                     toListen.add(port);

@@ -13,8 +13,12 @@ import org.usarsim.wss.model.RobotPair;
  */
 final class PairStats {
 
-    /** The shortest span a throughput is computed over. */
-    static final long RATE_SPAN_NS = TimeUnit.SECONDS.toNanos(1);
+    /**
+     * The shortest span a throughput is computed over: half a second, so that readers once a
+     * second (the window, wss.statsInterval = 1) whose timer fires a little early still get a new
+     * figure at every reading, not every other one.
+     */
+    static final long RATE_SPAN_NS = TimeUnit.MILLISECONDS.toNanos(500);
 
     final RobotPair pair;
     private final LongAdder bytesFirstToSecond = new LongAdder();

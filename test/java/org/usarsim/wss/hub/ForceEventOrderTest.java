@@ -2,6 +2,8 @@ package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
+import java.net.ServerSocket;
+import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -55,6 +57,49 @@ class ForceEventOrderTest {
             List<String> lines = Files.readAllLines(log.file()).stream().filter(line -> line.startsWith("FORCED"))
                     .map(line -> line.replaceFirst(",\\d\\d:\\d\\d:\\d\\d\\.\\d{3}", "")).toList();
             assertEquals(List.of("FORCED,R1,R2,UP", "FORCED,R1,R2,DOWN"), lines, "in the order the pair was forced");
+        }
+    }
+
+    @Test
+    void aConnectionAForceClosesEndsInTheEventLogAfterTheForce() throws Exception {
+        try (TestHub server = new TestHub(new ScriptedModel(), true, 65536); TestRobot a = server.robot();
+                TestRobot b = server.robot()) {
+            Hub hub = server.hub;
+            // A listener before the event log takes its time over the force (a slow console, say),
+            // long enough for the closed connection's thread to end.
+            hub.addListener(new WssEventListener() {
+                @Override
+                public void pairForced(String first, String second, boolean up) {
+                    Wait.settle("the forced connection's thread ended", ForceEventOrderTest::linkThreads, threads -> threads == 0);
+                }
+            });
+            CsvEventLog log = CsvEventLog.create(dir);
+            hub.addListener(log);
+            a.init("Slow1");
+            ServerSocket accepting = b.initAccepting("Slow2");
+            try (Socket out = a.connect(a.dns("Slow2", 0)); Socket in = accepting.accept()) {
+                Wait.until("the connection established", () -> hub.snapshot().links().size() == 1);
+                hub.force("Slow1", "Slow2", Force.DOWN);
+                Wait.until("the connection's end in the event log", () -> lines(log).stream().anyMatch(l -> l.startsWith("CON_TERMINATED")));
+            }
+            log.close();
+            assertEquals(List.of("CON_ESTABLISHED", "FORCED", "CON_TERMINATED"),
+                    lines(log).stream().map(line -> line.split(",")[0]).filter(type -> type.startsWith("CON") || type.startsWith("FORCED")).toList(),
+                    "the force closed the connection: its end comes after it");
+        }
+    }
+
+    /** The threads of this test's links but the caller (a link's thread may be the one delivering the force). */
+    private static long linkThreads() {
+        return Thread.getAllStackTraces().keySet().stream().filter(thread -> thread.getName().startsWith("link Slow1 -> Slow2:")
+                && thread.isAlive() && thread != Thread.currentThread()).count();
+    }
+
+    private static List<String> lines(CsvEventLog log) {
+        try {
+            return Files.readAllLines(log.file());
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
         }
     }
 }

@@ -214,6 +214,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.put(name, robot);
             pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
             memory.clear(name);
+            // A kick forgot the model's breaks of the robot's pairs: their statistics follow the state they are in now.
+            stats.pairsOf(name).forEach(pair -> recordState(pair, true));
             for (WssPort port : ports.of(name)) {
                 if (shouldListen(port.key, true) && !port.listening()) {
                     toListen.add(port);
@@ -484,9 +486,17 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         events.connectionEstablished(key.from(), key.to(), key.targetPort());
     }
 
+    /**
+     * The link's end goes out with the hub's ordered events: after those of the change that closed
+     * it (a force, a break, a kick), even while another thread is still delivering them.
+     */
     void linkClosed(Link link, boolean wasEstablished) {
+        PortKey key = link.port.key;
         synchronized (lock) {
             link.port.removeLink(link);
+            if (wasEstablished) {
+                pendingEvents.add(() -> events.connectionTerminated(key.from(), key.to(), key.targetPort()));
+            }
             // A port kept only for its last connection is forgotten with it.
             for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
                 if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
@@ -495,10 +505,6 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
         }
         deliverEvents();
-        if (wasEstablished) {
-            PortKey key = link.port.key;
-            events.connectionTerminated(key.from(), key.to(), key.targetPort());
-        }
     }
 
     // ---- RobotLinkModel: called by the model ----

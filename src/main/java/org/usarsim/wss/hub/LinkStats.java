@@ -31,6 +31,11 @@ final class LinkStats {
         pairs.keySet().removeIf(pair -> pair.contains(robot) && gone.test(pair));
     }
 
+    /** The pairs seen of the robot. Under the hub's lock. */
+    List<RobotPair> pairsOf(String robot) {
+        return pairs.keySet().stream().filter(pair -> pair.contains(robot)).toList();
+    }
+
     /** Under the hub's lock. */
     List<PairStats> all() {
         return new ArrayList<>(pairs.values());

@@ -13,8 +13,12 @@ import org.usarsim.wss.model.RobotPair;
  */
 final class PairStats {
 
-    /** The shortest span a throughput is computed over. */
-    static final long RATE_SPAN_NS = TimeUnit.SECONDS.toNanos(1);
+    /**
+     * The shortest span a throughput is computed over: half a second, so that readers once a
+     * second (the window, wss.statsInterval = 1) whose timer fires a little early still get a new
+     * figure at every reading, not every other one.
+     */
+    static final long RATE_SPAN_NS = TimeUnit.MILLISECONDS.toNanos(500);
 
     final RobotPair pair;
     private final LongAdder bytesFirstToSecond = new LongAdder();
@@ -39,6 +43,7 @@ final class PairStats {
         this.state = state;
         this.firstSeenNs = nowNs;
         this.stateSinceNs = nowNs;
+        this.sampledNs = nowNs; // the first span starts when the pair is first seen, at zero bytes
     }
 
     /** The counter of bytes forwarded from {@code robot} to the other robot of the pair. */
@@ -114,16 +119,13 @@ final class PairStats {
 
     /**
      * The throughput each way (bytes/s, first to second then second to first) over the span since
-     * the previous sample that was at least {@link #RATE_SPAN_NS} ago; 0 until there is one.
+     * the previous sample that was at least {@link #RATE_SPAN_NS} ago, or since the pair was first
+     * seen (so bytes moved before the first sample count too); 0 until a span has passed.
      */
     synchronized double[] rates(long nowNs) {
         long toSecond = bytesFirstToSecond.sum();
         long toFirst = bytesSecondToFirst.sum();
-        if (sampledNs == 0) {
-            sampledNs = nowNs;
-            sampledFirstToSecond = toSecond;
-            sampledSecondToFirst = toFirst;
-        } else if (nowNs - sampledNs >= RATE_SPAN_NS) {
+        if (nowNs - sampledNs >= RATE_SPAN_NS) {
             double seconds = (nowNs - sampledNs) / 1e9;
             rateFirstToSecond = (toSecond - sampledFirstToSecond) / seconds;
             rateSecondToFirst = (toFirst - sampledSecondToFirst) / seconds;

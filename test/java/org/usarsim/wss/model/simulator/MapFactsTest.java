@@ -97,6 +97,22 @@ class MapFactsTest {
     }
 
     @Test
+    void aWallsLineOverTheLineLimitCostsOnlyTheWalls() throws Exception {
+        // A world of some 30 000 walls (a floor plan converted by a tool): its WALLS line is over 1 MiB.
+        StringBuilder walls = new StringBuilder("WALLS {Walls 30000}");
+        for (int i = 0; i < 30_000; i++) {
+            walls.append(" {Wall ").append(i).append(".1234,-1.5000,").append(i + 1).append(".5678,-1.5000}");
+        }
+        assertTrue(walls.length() > SimulatorConnection.MAX_LINE_BYTES);
+        rig = answeringGetwalls(walls.toString());
+        rig.polls(3);
+        assertEquals(0, rig.logLines(Level.WARNING, "lost the simulator"), "the positions still come");
+        assertTrue(rig.model.positionOf("A").isPresent());
+        assertEquals(List.of(), rig.model.walls());
+        assertEquals(1, rig.logLines(Level.WARNING, "cannot be read"));
+    }
+
+    @Test
     void theObstacleRangeIsThePairsWithItsWallsAndTheOpenSpaceOneForARobotAlone() throws Exception {
         rig = new ModelRig(new ObstaclePropagationModel(), Map.of("distance.n", "3"));
         rig.robot("A", 0, 0, 0);

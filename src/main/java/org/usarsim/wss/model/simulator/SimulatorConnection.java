@@ -44,6 +44,8 @@ public final class SimulatorConnection implements Closeable {
     private List<Wall> walls;
     /** Why the simulator's WALLS answer was not used; null when it was, or none came. */
     private String wallsProblem;
+    /** A WALLS line over {@link #MAX_LINE_BYTES} is being dropped up to its end: it costs the walls, not the simulator. */
+    private boolean droppingWalls;
 
     private SimulatorConnection(Socket socket, int timeoutMs) throws IOException {
         this.socket = socket;
@@ -166,6 +168,14 @@ public final class SimulatorConnection implements Closeable {
         ByteArrayOutputStream line = partial;
         while (true) {
             for (int i = bufferStart; i < bufferEnd; i++) {
+                if (buffer[i] == '\n' && droppingWalls) {
+                    droppingWalls = false;
+                    bufferStart = i + 1;
+                    wallsAsked = false;
+                    walls = List.of();
+                    wallsProblem = "a WALLS line longer than " + MAX_LINE_BYTES + " bytes";
+                    continue;
+                }
                 if (buffer[i] == '\n') {
                     line.write(buffer, bufferStart, i - bufferStart);
                     bufferStart = i + 1;
@@ -177,10 +187,16 @@ public final class SimulatorConnection implements Closeable {
                     continue; // a blank line: skipped
                 }
             }
-            line.write(buffer, bufferStart, bufferEnd - bufferStart);
+            if (!droppingWalls) {
+                line.write(buffer, bufferStart, bufferEnd - bufferStart);
+            }
             bufferStart = bufferEnd;
             if (line.size() > MAX_LINE_BYTES) {
-                throw new SimulatorReplyException("a reply line longer than " + MAX_LINE_BYTES + " bytes");
+                if (!wallsAsked || !SimulatorReplies.WALLS.equals(SimulatorReplies.type(firstWords(line)))) {
+                    throw new SimulatorReplyException("a reply line longer than " + MAX_LINE_BYTES + " bytes");
+                }
+                droppingWalls = true;
+                line.reset();
             }
             long left = (deadline - System.nanoTime()) / 1_000_000L;
             if (left <= 0) {
@@ -199,6 +215,12 @@ public final class SimulatorConnection implements Closeable {
             bufferStart = 0;
             bufferEnd = read;
         }
+    }
+
+    /** The start of a long line, enough for its first word. */
+    private static String firstWords(ByteArrayOutputStream line) {
+        byte[] bytes = line.toByteArray();
+        return new String(bytes, 0, Math.min(bytes.length, 64), StandardCharsets.UTF_8);
     }
 
     private static SimulatorReplyException unexpected(String line) {

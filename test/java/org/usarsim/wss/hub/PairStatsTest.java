@@ -1,0 +1,26 @@
+package org.usarsim.wss.hub;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.model.RobotPair;
+
+/** The throughput sampling of {@link PairStats}, at given instants (a reader's timer is never exact). */
+class PairStatsTest {
+
+    private static final long SECOND = TimeUnit.SECONDS.toNanos(1);
+
+    @Test
+    void aReadingEverySecondGivesEverySecondsThroughputThoughTheTimerRunsALittleEarly() {
+        long start = 1_000 * SECOND;
+        PairStats stats = new PairStats(RobotPair.of("A", "B"), PairState.UP, start);
+        stats.bytesFrom("A").add(1_000_000);
+        assertEquals(1_000_000, stats.rates(start + SECOND)[0], 1e-6, "the first second, counted from first seen");
+        stats.bytesFrom("A").add(490_000); // wss.statsInterval = 1: the next reading comes 0.98 s later
+        assertEquals(500_000, stats.rates(start + SECOND + SECOND * 98 / 100)[0], 1e-6, "the second second's own rate");
+        // The traffic stopped: the next reading says so, not the rate of before.
+        assertEquals(0, stats.rates(start + 2 * SECOND + SECOND * 97 / 100)[0], 1e-6);
+        assertEquals(0, stats.rates(start + 3 * SECOND)[1], 1e-6, "nothing B -> A");
+    }
+}

@@ -298,6 +298,25 @@ class LinkStatsTest {
         }
     }
 
+    @Test
+    void aPairIsNotUpWhileOneOfItsRobotsIsGone() throws Exception {
+        start(600);
+        a = robot("127.0.0.1");
+        TestRobot b = robot("127.0.0.2");
+        a.init("A");
+        b.initAccepting("B");
+        toB = a.dns("B", 0);
+        assertEquals(1.0, pair().upShare(), 1e-9);
+        b.close();
+        Wait.until("B gone", () -> server.hub.snapshot().robots().size() == 1);
+        Wait.until("the time B is gone is not time up", () -> pair().upShare() < 0.5);
+        assertEquals(PairState.UP, pair().state(), "the state shown stays: the model did not break the pair");
+        TestRobot back = robot("127.0.0.2");
+        back.initAccepting("B");
+        double whenBack = pair().upShare();
+        Wait.until("up again once B is back", () -> pair().upShare() > whenBack);
+    }
+
     /** Robot A, and robot B accepting on one port; returns B's accepting socket and sets {@link #a} and {@link #toB}. */
     private ServerSocket robotsAAndB() throws Exception {
         a = robot("127.0.0.1");

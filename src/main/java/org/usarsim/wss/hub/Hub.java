@@ -300,6 +300,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             robots.remove(name);
             lock.notifyAll();
             pendingEvents.add(() -> events.robotDeregistered(name));
+            stats.left(name, System.nanoTime());
             for (WssPort port : ports.of(name)) {
                 if (port.stopListening()) {
                     pendingEvents.add(listeningEvent(port));
@@ -572,6 +573,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                 ports.remove(port);
                 pendingEvents.add(forgottenEvent(port));
             }
+            stats.left(name, System.nanoTime());
             broken.removeIf(pair -> pair.contains(name));
             memory.clear(name);
             if (memory.left(name)) { // its pairs' statistics are remembered as long as its ports would have been
@@ -831,7 +833,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** The pair's statistics, from now on when it was not seen yet. Under the lock. */
     private PairStats pairStats(RobotPair pair) {
-        return stats.of(pair, stateOf(pair));
+        return stats.of(pair, stateOf(pair), bothPresent(pair));
     }
 
     /**
@@ -842,9 +844,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     private void recordState(RobotPair pair, boolean say) {
         PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
-        if (pairStats != null && pairStats.moveTo(now, System.nanoTime()) && say) {
+        if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), System.nanoTime()) && say) {
             pendingEvents.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
         }
+    }
+
+    /** Whether both robots of the pair are registered. Under the lock. */
+    private boolean bothPresent(RobotPair pair) {
+        return robots.containsKey(pair.first()) && robots.containsKey(pair.second());
     }
 
     /** Closes the links after the lock, saying why (the last close their pairs' statistics show). */

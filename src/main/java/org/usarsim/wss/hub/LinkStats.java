@@ -17,8 +17,8 @@ final class LinkStats {
     private final Map<RobotPair, PairStats> pairs = new HashMap<>();
 
     /** The pair's statistics, from now on when it was not seen yet. Under the hub's lock. */
-    PairStats of(RobotPair pair, PairState state) {
-        return pairs.computeIfAbsent(pair, p -> new PairStats(p, state, System.nanoTime()));
+    PairStats of(RobotPair pair, PairState state, boolean bothPresent) {
+        return pairs.computeIfAbsent(pair, p -> new PairStats(p, state, bothPresent, System.nanoTime()));
     }
 
     /** Under the hub's lock. */
@@ -29,6 +29,14 @@ final class LinkStats {
     /** Forgets the pairs of the robot that {@code gone} says are gone. Under the hub's lock. */
     void forget(String robot, Predicate<RobotPair> gone) {
         pairs.keySet().removeIf(pair -> pair.contains(robot) && gone.test(pair));
+    }
+
+    /**
+     * The robot left (or was kicked out): its pairs' time up stops counting until it is back, the
+     * states they show unchanged. Under the hub's lock.
+     */
+    void left(String robot, long nowNs) {
+        pairs.values().stream().filter(stats -> stats.pair.contains(robot)).forEach(stats -> stats.absent(nowNs));
     }
 
     /** The pairs seen of the robot. Under the hub's lock. */

@@ -27,8 +27,10 @@ final class PairStats {
     private volatile CloseReason lastClose;
     private final long firstSeenNs;
     private PairState state;
+    /** Both robots are registered: only then can the pair talk, whatever its state. */
+    private boolean present;
     private long stateSinceNs;
-    /** Time up before {@link #stateSinceNs}. */
+    /** Time up (and present) before {@link #stateSinceNs}. */
     private long upNs;
     private long breaks;
     private long resumes;
@@ -38,9 +40,10 @@ final class PairStats {
     private double rateFirstToSecond;
     private double rateSecondToFirst;
 
-    PairStats(RobotPair pair, PairState state, long nowNs) {
+    PairStats(RobotPair pair, PairState state, boolean present, long nowNs) {
         this.pair = pair;
         this.state = state;
+        this.present = present;
         this.firstSeenNs = nowNs;
         this.stateSinceNs = nowNs;
         this.sampledNs = nowNs; // the first span starts when the pair is first seen, at zero bytes
@@ -69,28 +72,47 @@ final class PairStats {
         }
     }
 
-    /** @return true when the state changed */
-    synchronized boolean moveTo(PairState now, long nowNs) {
-        if (now == state) {
+    /**
+     * The pair's state now, and whether both robots are registered now (a pair is up only for the
+     * time both are: the share of time up says how long the two could talk).
+     *
+     * @return true when the state changed
+     */
+    synchronized boolean moveTo(PairState now, boolean bothPresent, long nowNs) {
+        if (now == state && bothPresent == present) {
             return false;
         }
-        if (isUp(state)) {
+        if (talking()) {
             upNs += nowNs - stateSinceNs;
         }
+        boolean changed = now != state;
         state = now;
+        present = bothPresent;
         stateSinceNs = nowNs;
-        return true;
+        return changed;
+    }
+
+    /** One of the robots left: the time up stops counting, the state shown stays. */
+    synchronized void absent(long nowNs) {
+        moveTo(state, false, nowNs);
+    }
+
+    private boolean talking() {
+        return isUp(state) && present;
     }
 
     synchronized PairState state() {
         return state;
     }
 
-    /** The share of time up since first seen, 0..1 (the state at the first instant when no time has passed). */
+    /**
+     * The share of time since first seen that the pair was up with both robots registered, 0..1
+     * (whether it is so now, at the first instant when no time has passed).
+     */
     synchronized double upShare(long nowNs) {
-        long up = upNs + (isUp(state) ? nowNs - stateSinceNs : 0);
+        long up = upNs + (talking() ? nowNs - stateSinceNs : 0);
         long seen = nowNs - firstSeenNs;
-        return seen <= 0 ? (isUp(state) ? 1 : 0) : Math.min(1, (double) up / seen);
+        return seen <= 0 ? (talking() ? 1 : 0) : Math.min(1, (double) up / seen);
     }
 
     synchronized long breaks() {

@@ -882,13 +882,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
+    /** The event saying the port's number was given back, to be fired after the lock is released. Under the lock. */
     private Runnable forgottenEvent(WssPort port) {
         PortKey key = port.key;
         int number = port.number;
         return () -> events.portForgotten(key.from(), key.to(), key.targetPort(), number);
     }
 
+    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
     private Runnable listeningEvent(WssPort port) {
         PortKey key = port.key;
         int number = port.number;

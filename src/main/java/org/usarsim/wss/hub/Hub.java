@@ -667,7 +667,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    /** The pair's forced state, or null when the model decides it (the per-pair statistics show it). */
+    /** The pair's forced state, or null when the model decides it (for the tests; the window and the log read it in the pairs' states). */
     Force forced(RobotPair pair) {
         synchronized (lock) {
             return forcedPairs.of(pair);

@@ -89,6 +89,35 @@ class ForceEventOrderTest {
         }
     }
 
+    @Test
+    void aListenerThatChangesTheHubFromItsEventHearsTheChangeAfterTheEventsBeforeIt() throws Exception {
+        try (TestHub server = new TestHub(new ScriptedModel(), true, 65536); TestRobot a = server.robot();
+                TestRobot b = server.robot()) {
+            Hub hub = server.hub;
+            a.init("Near1");
+            b.initAccepting("Near2");
+            a.dns("Near2", 0); // a listening port: forcing the pair down stops it, a second event of the force
+            List<String> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
+            hub.addListener(new WssEventListener() {
+                @Override
+                public void pairForced(String first, String second, boolean up) {
+                    heard.add("forced " + first + " - " + second);
+                    if (first.equals("Near1")) {
+                        hub.force("Far1", "Far2", Force.UP); // from the event's own thread
+                    }
+                }
+
+                @Override
+                public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
+                    heard.add("listening " + from + " -> " + to + " " + listening);
+                }
+            });
+            hub.force("Near1", "Near2", Force.DOWN);
+            assertEquals(List.of("forced Near1 - Near2", "listening Near1 -> Near2 false", "forced Far1 - Far2"), heard,
+                    "the nested force's event after the rest of the first force's");
+        }
+    }
+
     /** The threads of this test's links but the caller (a link's thread may be the one delivering the force). */
     private static long linkThreads() {
         return Thread.getAllStackTraces().keySet().stream().filter(thread -> thread.getName().startsWith("link Slow1 -> Slow2:")

@@ -792,9 +792,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /**
      * Delivers the pending events in order, never under the lock. One thread delivers at a time;
      * a thread that finds another delivering leaves its events to it, and the deliverer looks
-     * again after letting go, so none is left behind.
+     * again after letting go, so none is left behind. A listener that changes the hub from its
+     * event (the delivering thread itself) leaves its events to the loop it is called from, which
+     * delivers them after the rest of the batch it is in: the lock is reentrant, and delivering
+     * them at once would put them before events that came first.
      */
     private void deliverEvents() {
+        if (delivering.isHeldByCurrentThread()) {
+            return;
+        }
         while (delivering.tryLock()) {
             try {
                 List<Runnable> batch;

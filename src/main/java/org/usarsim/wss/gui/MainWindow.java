@@ -28,9 +28,9 @@ import org.usarsim.wss.model.PropagationModel;
 /**
  * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
  * Robots", the ports and connections tables; "Map"; "Link statistics"), and the log. Starts and
- * stops a server through {@link Servers}, off the event thread; shows the hub through a {@link NetworkView} and the log through a
- * {@link WindowLog}, both taken on a Swing timer every {@link #REFRESH_MS} ms. Everything here
- * runs on the event thread.
+ * stops a server through {@link Servers}, off the event thread; shows the hub through a
+ * {@link NetworkView} and the log through a {@link WindowLog}, both taken on a Swing timer every
+ * {@link #REFRESH_MS} ms. Everything here runs on the event thread.
  */
 public final class MainWindow {
 

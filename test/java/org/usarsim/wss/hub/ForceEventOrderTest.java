@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -97,7 +98,7 @@ class ForceEventOrderTest {
             a.init("Near1");
             b.initAccepting("Near2");
             a.dns("Near2", 0); // a listening port: forcing the pair down stops it, a second event of the force
-            List<String> heard = new java.util.concurrent.CopyOnWriteArrayList<>();
+            List<String> heard = new CopyOnWriteArrayList<>();
             hub.addListener(new WssEventListener() {
                 @Override
                 public void pairForced(String first, String second, boolean up) {

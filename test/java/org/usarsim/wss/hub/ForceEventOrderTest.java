@@ -7,6 +7,7 @@ import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -86,6 +87,35 @@ class ForceEventOrderTest {
             assertEquals(List.of("CON_ESTABLISHED", "FORCED", "CON_TERMINATED"),
                     lines(log).stream().map(line -> line.split(",")[0]).filter(type -> type.startsWith("CON") || type.startsWith("FORCED")).toList(),
                     "the force closed the connection: its end comes after it");
+        }
+    }
+
+    @Test
+    void aListenerThatChangesTheHubFromItsEventHearsTheChangeAfterTheEventsBeforeIt() throws Exception {
+        try (TestHub server = new TestHub(new ScriptedModel(), true, 65536); TestRobot a = server.robot();
+                TestRobot b = server.robot()) {
+            Hub hub = server.hub;
+            a.init("Near1");
+            b.initAccepting("Near2");
+            a.dns("Near2", 0); // a listening port: forcing the pair down stops it, a second event of the force
+            List<String> heard = new CopyOnWriteArrayList<>();
+            hub.addListener(new WssEventListener() {
+                @Override
+                public void pairForced(String first, String second, boolean up) {
+                    heard.add("forced " + first + " - " + second);
+                    if (first.equals("Near1")) {
+                        hub.force("Far1", "Far2", Force.UP); // from the event's own thread
+                    }
+                }
+
+                @Override
+                public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
+                    heard.add("listening " + from + " -> " + to + " " + listening);
+                }
+            });
+            hub.force("Near1", "Near2", Force.DOWN);
+            assertEquals(List.of("forced Near1 - Near2", "listening Near1 -> Near2 false", "forced Far1 - Far2"), heard,
+                    "the nested force's event after the rest of the first force's");
         }
     }
 

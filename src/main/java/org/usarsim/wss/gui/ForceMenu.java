@@ -2,6 +2,7 @@ package org.usarsim.wss.gui;
 
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -43,7 +44,7 @@ final class ForceMenu {
         return menu;
     }
 
-    private JMenuItem item(String text, java.util.function.Consumer<Servers.Running> action) {
+    private JMenuItem item(String text, Consumer<Servers.Running> action) {
         JMenuItem item = new JMenuItem(text);
         Servers.Running server = running.get();
         item.setEnabled(server != null);

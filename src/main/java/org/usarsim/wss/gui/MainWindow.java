@@ -26,11 +26,11 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PropagationModel;
 
 /**
- * The main window (the manual's Figure 1): the control bar, "Connected Robots", the ports and
- * connections tables (tab "Connections"), the map (tab "Map"), and the log. Starts and stops a server through {@link Servers}, off the
- * event thread; shows the hub through a {@link NetworkView} and the log through a
- * {@link WindowLog}, both taken on a Swing timer every {@link #REFRESH_MS} ms. Everything here
- * runs on the event thread.
+ * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
+ * Robots", the ports and connections tables; "Map"; "Link statistics"), and the log. Starts and
+ * stops a server through {@link Servers}, off the event thread; shows the hub through a
+ * {@link NetworkView} and the log through a {@link WindowLog}, both taken on a Swing timer every
+ * {@link #REFRESH_MS} ms. Everything here runs on the event thread.
  */
 public final class MainWindow {
 

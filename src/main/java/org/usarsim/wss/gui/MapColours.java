@@ -1,7 +1,6 @@
 package org.usarsim.wss.gui;
 
 import java.awt.Color;
-import org.usarsim.wss.hub.PairState;
 
 /** The colour of a pair's line on the map: one rule, read by the painting and the legend. */
 final class MapColours {
@@ -21,7 +20,7 @@ final class MapColours {
      * cutoff to compare).
      */
     static Color of(MapData.Line line, double cutoff) {
-        if (line.state() == PairState.BROKEN || line.state() == PairState.FORCED_DOWN) {
+        if (!line.state().isUp()) {
             return BROKEN;
         }
         return line.strength() < cutoff + NEAR_DB ? NEAR : STRONG;

@@ -66,7 +66,7 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
     record Line(String first, String second, PairState state, double strength) {
 
         boolean forced() {
-            return state == PairState.FORCED_DOWN || state == PairState.FORCED_UP;
+            return state.isForced();
         }
     }
 

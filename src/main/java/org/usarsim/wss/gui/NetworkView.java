@@ -2,6 +2,7 @@ package org.usarsim.wss.gui;
 
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
@@ -28,7 +29,7 @@ final class NetworkView implements WssEventListener {
 
     private static final Logger LOG = Logger.getLogger(NetworkView.class.getName());
     /** How often a snapshot is taken even without an event: the link statistics' bytes and throughput move on. */
-    static final long STATISTICS_NS = java.util.concurrent.TimeUnit.SECONDS.toNanos(1);
+    static final long STATISTICS_NS = TimeUnit.SECONDS.toNanos(1);
 
     private final ExecutorService snapshots = Executors.newSingleThreadExecutor(task -> {
         Thread thread = new Thread(task, "wss-window-view");

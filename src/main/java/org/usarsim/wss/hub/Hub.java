@@ -667,7 +667,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    /** The pair's forced state, or null when the model decides it (the per-pair statistics show it). */
+    /** The pair's forced state, or null when the model decides it (for the tests; the window and the log read it in the pairs' states). */
     Force forced(RobotPair pair) {
         synchronized (lock) {
             return forcedPairs.of(pair);
@@ -792,9 +792,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /**
      * Delivers the pending events in order, never under the lock. One thread delivers at a time;
      * a thread that finds another delivering leaves its events to it, and the deliverer looks
-     * again after letting go, so none is left behind.
+     * again after letting go, so none is left behind. A listener that changes the hub from its
+     * event (the delivering thread itself) leaves its events to the loop it is called from, which
+     * delivers them after the rest of the batch it is in: the lock is reentrant, and delivering
+     * them at once would put them before events that came first.
      */
     private void deliverEvents() {
+        if (delivering.isHeldByCurrentThread()) {
+            return;
+        }
         while (delivering.tryLock()) {
             try {
                 List<Runnable> batch;
@@ -882,13 +888,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
+    /** The event saying the port's number was given back, to be fired after the lock is released. Under the lock. */
     private Runnable forgottenEvent(WssPort port) {
         PortKey key = port.key;
         int number = port.number;
         return () -> events.portForgotten(key.from(), key.to(), key.targetPort(), number);
     }
 
+    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
     private Runnable listeningEvent(WssPort port) {
         PortKey key = port.key;
         int number = port.number;

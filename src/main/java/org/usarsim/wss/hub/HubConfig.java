@@ -30,7 +30,7 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
         Set<InetAddress> operators, Map<RobotPair, Force> forced) {
 
     /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
-    public static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
+    private static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
 
     private static InetAddress ipv4Loopback() {
         try {

@@ -1,5 +1,7 @@
 package org.usarsim.wss.hub;
 
+import java.util.Locale;
+
 /** Where a pair of robots stands: as the model decides it, or as an operator forced it. */
 public enum PairState {
     /** The model lets the pair talk. */
@@ -13,6 +15,16 @@ public enum PairState {
 
     /** How the window and the log say it: "up", "broken", "forced down", "forced up". */
     public String text() {
-        return name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ');
+        return name().toLowerCase(Locale.ROOT).replace('_', ' ');
+    }
+
+    /** Whether the pair may talk in this state: up, by the model or forced. */
+    public boolean isUp() {
+        return this == UP || this == FORCED_UP;
+    }
+
+    /** Whether an operator forced the pair (down or up). */
+    public boolean isForced() {
+        return this == FORCED_DOWN || this == FORCED_UP;
     }
 }

@@ -98,7 +98,7 @@ final class PairStats {
     }
 
     private boolean talking() {
-        return isUp(state) && present;
+        return state.isUp() && present;
     }
 
     synchronized PairState state() {
@@ -156,9 +156,5 @@ final class PairStats {
             sampledSecondToFirst = toFirst;
         }
         return new double[] {rateFirstToSecond, rateSecondToFirst};
-    }
-
-    static boolean isUp(PairState state) {
-        return state == PairState.UP || state == PairState.FORCED_UP;
     }
 }

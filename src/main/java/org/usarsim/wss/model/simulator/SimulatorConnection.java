@@ -19,8 +19,9 @@ import org.usarsim.wss.model.Wall;
 
 /**
  * One connection to a USARSim-compatible position socket: {@code GETPOS} and {@code GETOBS}, each
- * answered by one line, and once {@code GETWALLS}, which only the world server answers. Used by one thread at a time. Every request waits at most the timeout for
- * its answer; a stale answer to an earlier request (a late {@code NUMOBS}) is skipped.
+ * answered by one line, and once {@code GETWALLS}, which only the world server answers. Used by
+ * one thread at a time. Every request waits at most the timeout for its answer; a stale answer to
+ * an earlier request (a late {@code NUMOBS}) is skipped.
  */
 public final class SimulatorConnection implements Closeable {
 

@@ -365,20 +365,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             WssPort port = ports.get(key);
             if (port == null) {
                 long held = ports.fromCount(from);
+                InetAddress fromAddress = robots.get(from).address();
                 if (held >= config.maxPortsPerRobot()) {
-                    warnings.warn(LOG, "DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
-                            + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key);
+                    pendingEvents.add(() -> warnings.warn(LOG, "DNS beyond the port limit", fromAddress, from + " holds " + held
+                            + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key));
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 try {
                     port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
                 } catch (IOException e) {
-                    warnings.warn(LOG, "ports not allocated", robots.get(from).address(),
-                            "could not allocate a WSS port for " + key + ": " + e.getMessage());
+                    pendingEvents.add(() -> warnings.warn(LOG, "ports not allocated", fromAddress,
+                            "could not allocate a WSS port for " + key + ": " + e.getMessage()));
                     return new DnsResult(DnsOutcome.NO_PORT, -1);
                 }
                 ports.add(port);
-                LOG.info("allocated " + port + (port.listening() ? "" : ", not listening"));
+                String allocated = "allocated " + port + (port.listening() ? "" : ", not listening");
+                pendingEvents.add(() -> LOG.info(allocated));
                 int number = port.number;
                 boolean listening = port.listening();
                 pendingEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
@@ -778,8 +780,9 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             }
         }
         if (forgotten > 0) {
-            LOG.info("forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name + ", gone for "
-                    + memory.goneSeconds(name) + " s");
+            String forgot = "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name + ", gone for "
+                    + memory.goneSeconds(name) + " s";
+            pendingEvents.add(() -> LOG.info(forgot));
         }
         if (!kept) {
             memory.clear(name);
@@ -883,7 +886,8 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
             pendingEvents.add(listeningEvent(port));
             return true;
         } catch (IOException e) {
-            LOG.warning(port + ": could not listen again: " + e.getMessage());
+            String why = port + ": could not listen again: " + e.getMessage();
+            pendingEvents.add(() -> LOG.warning(why));
             return false;
         }
     }

@@ -40,7 +40,7 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowSettings;
-import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Position;

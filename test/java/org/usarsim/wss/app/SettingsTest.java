@@ -21,7 +21,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;

@@ -8,7 +8,7 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
-import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;

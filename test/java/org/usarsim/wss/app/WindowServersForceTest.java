@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Properties;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.gui.Servers;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;

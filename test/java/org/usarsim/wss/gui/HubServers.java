@@ -2,7 +2,7 @@ package org.usarsim.wss.gui;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;

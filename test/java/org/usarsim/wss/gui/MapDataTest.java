@@ -9,7 +9,7 @@ import java.util.Map;
 import java.util.Optional;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.hub.HubSnapshot;
-import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;

@@ -126,7 +126,7 @@ public final class MapProbe {
     }
 
     /** Whether the pair's line is drawn dashed (forced) in this state. */
-    public boolean line(String a, String b, org.usarsim.wss.hub.PairState state) {
+    public boolean line(String a, String b, org.usarsim.wss.hub.core.PairState state) {
         return edt(() -> line(a, b).state() == state);
     }
 

@@ -6,7 +6,7 @@ import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.core.PairState;
 
 /** The map's transform (fit, zoom, pan) and its colouring rule: pure functions, no window. */
 class MapTransformTest {

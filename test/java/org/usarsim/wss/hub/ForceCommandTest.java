@@ -1,5 +1,6 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -40,7 +41,7 @@ class ForceCommandTest {
 
     @Test
     void fromAForeignAddressFORCEIsRefusedWithAClearErrorAndChangesNothing() throws Exception {
-        try (LogCapture warnings = LogCapture.of(ControlSession.class.getName(), Level.WARNING);
+        try (LogCapture warnings = LogCapture.of("org.usarsim.wss.hub.tcp.ControlSession", Level.WARNING);
                 TestRobot foreign = server.robotAt("127.0.0.2")) {
             assertEquals("ERROR {Reason Not.An.Operator.Address}", foreign.ask("FORCE {Robot R1} {Peer R2} {State Down}"),
                     "before INIT");

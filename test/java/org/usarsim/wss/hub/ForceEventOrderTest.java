@@ -1,5 +1,6 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.net.ServerSocket;

@@ -1,5 +1,10 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.tcp.Closing;
+import org.usarsim.wss.hub.core.CloseReason;
+import org.usarsim.wss.hub.core.PairState;
+import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;

@@ -20,7 +20,7 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.logging.Level;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelSettings;

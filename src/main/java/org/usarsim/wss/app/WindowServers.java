@@ -2,7 +2,7 @@ package org.usarsim.wss.app;
 
 import java.util.concurrent.atomic.AtomicReference;
 import org.usarsim.wss.gui.Servers;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;

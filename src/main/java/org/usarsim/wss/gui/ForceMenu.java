@@ -8,7 +8,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.JMenuItem;
 import javax.swing.JPopupMenu;
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 
 /**
  * The right-click menu on a pair of robots (a row of the statistics table, a line of the map):

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.HashMap;
 import java.util.Map;
 import org.usarsim.wss.hub.HubSnapshot;
-import org.usarsim.wss.hub.PairState;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Wall;

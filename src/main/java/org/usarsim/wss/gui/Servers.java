@@ -1,6 +1,6 @@
 package org.usarsim.wss.gui;
 
-import org.usarsim.wss.hub.Force;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.WssEventListener;

@@ -1,18 +1,41 @@
 package org.usarsim.wss.hub;
 
+import java.net.InetAddress;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import java.util.function.Consumer;
+import org.usarsim.wss.hub.core.EventSink;
 import org.usarsim.wss.model.WssEventListener;
 
-/** Hands every event to every listener; a listener that throws is logged, never fatal. */
-final class EventFanOut implements WssEventListener {
+/**
+ * Hands every event to every listener, a listener that throws is logged, never fatal; and the
+ * hub's own lines to its log, the WARNINGs a client caused through the limiter.
+ */
+final class EventFanOut implements EventSink {
 
     private static final Logger LOG = Logger.getLogger(EventFanOut.class.getName());
 
     private final List<WssEventListener> listeners = new CopyOnWriteArrayList<>();
+    /** Where the hub's own lines go. */
+    private final Logger hubLog;
+    private final WarningLimiter warnings;
+
+    EventFanOut(Logger hubLog, WarningLimiter warnings) {
+        this.hubLog = hubLog;
+        this.warnings = warnings;
+    }
+
+    @Override
+    public void say(Level level, String line) {
+        hubLog.log(level, line);
+    }
+
+    @Override
+    public void warn(String category, InetAddress client, String message) {
+        warnings.warn(hubLog, category, client, message);
+    }
 
     void add(WssEventListener listener) {
         listeners.add(listener);

@@ -3,21 +3,39 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.OptionalDouble;
-import java.util.Set;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.Changes;
+import org.usarsim.wss.hub.core.CloseReason;
+import org.usarsim.wss.hub.core.Connection;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.HubEvent;
+import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.core.RegisteredRobot;
+import org.usarsim.wss.hub.core.RobotSession;
+import org.usarsim.wss.hub.core.WssPort;
+import org.usarsim.wss.hub.tcp.Closing;
+import org.usarsim.wss.hub.tcp.ControlListener;
+import org.usarsim.wss.hub.tcp.ControlSession;
+import org.usarsim.wss.hub.tcp.KeepAlive;
+import org.usarsim.wss.hub.tcp.Link;
+import org.usarsim.wss.hub.tcp.PortListener;
+import org.usarsim.wss.hub.tcp.PortSockets;
+import org.usarsim.wss.hub.tcp.SocketBuffers;
+import org.usarsim.wss.hub.tcp.Switchboard;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
@@ -25,18 +43,17 @@ import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
- * The server: the registry of robots, their WSS ports and the links through them. Control
- * sessions and the port listeners call in; the propagation model calls in as a {@link RobotLinkModel}.
+ * The server: runs the {@link HubCore} (the rules and the state) under one lock, and applies what
+ * each of its steps returns after the lock: the socket work (ports to listen on, stop or give
+ * back, connections to close) in the order of the steps, then the events, in order, through the
+ * {@link Outbox}. Control sessions, port listeners and links call in through {@link Switchboard};
+ * the propagation model through {@link RobotLinkModel}.
  *
- * <p>One lock guards the registry, the ports and the broken and forced pairs. The model is never called
- * while it is held (a model may call back in from its own thread), nor is a listener (events are
- * queued under it and delivered after it, {@link #deliverEvents}). Little I/O happens under it:
- * closing server sockets, and binding a new port for a DNS or one a resume reopens; a link's
- * sockets are opened before it is taken ({@link #accepted}), a registration binds the ports it
- * reopens before it takes it again to adopt them ({@link #listenAgain}), and a departure starts
- * its ports' drains between its two holds.
+ * <p>The model is never called under the lock (a model may call back in from its own thread), nor
+ * is a listener. The only I/O under it is none: a DNS binds a new port's number before it takes
+ * the lock to allocate it, and a link's sockets are opened between two checks ({@link #accepted}).
  */
-public final class Hub implements RobotLinkModel, AutoCloseable {
+public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
 
     private static final Logger LOG = Logger.getLogger(Hub.class.getName());
     /** How long an INIT of a taken name waits for the name to be freed. */
@@ -44,51 +61,39 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /** How long a departure waits for its ports to hand over the connections already completed. */
     private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
 
-    /** The outcome of a DNS. */
-    enum DnsOutcome { OK, NO_SUCH_ROBOT, NO_SUCH_TARGET_PORT, NO_PORT }
-
-    record DnsResult(DnsOutcome outcome, int port) {
-    }
-
     private final HubConfig config;
     private final PropagationModel model;
-    private final EventFanOut events = new EventFanOut();
+    private final LongSupplier clock;
+    private final EventFanOut events;
     private final SocketBuffers socketBuffers;
     /** Every WARNING a client can cause goes through it (docs/reliability.md). */
-    final WarningLimiter warnings = WarningLimiter.standard();
+    private final WarningLimiter warnings;
     private final Object lock = new Object();
-    private final Map<String, RegisteredRobot> robots = new HashMap<>();
-    private final Ports ports = new Ports();
-    /** Pairs the model broke and has not resumed. */
-    private final Set<RobotPair> broken = new HashSet<>();
-    /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
-    private final ForcedPairs forcedPairs = new ForcedPairs();
-    /** The control sessions whose robots are leaving: their ports drain, their names are freed soon. */
-    private final Set<ControlSession> leaving = new HashSet<>();
-    /** The statistics of every pair seen, forgotten with the pair's ports. */
-    private final LinkStats stats = new LinkStats();
-    private final PortMemory memory;
+    private final HubCore core;
+    /** The sockets of each port the core holds. Guarded by {@link #lock}. */
+    private final Map<WssPort, PortSockets> sockets = new HashMap<>();
+    private final Outbox outbox;
+    private final SocketTurns turns = new SocketTurns();
+    private final ForgetTimer forgetTimer = new ForgetTimer(this::forgetIfGone);
     private final KeepAlive keepAlive;
-    /** Set by {@link #close}: nothing registers or listens any more. */
-    private boolean closed;
     private volatile ControlListener controlListener;
-    /**
-     * The events of the hub's state changes (robots, ports), appended under the lock in the order
-     * the changes happened there, and delivered after it by {@link #deliverEvents}: so a listener
-     * (the event log, the window) sees a robot's DEREGISTERED before its next REGISTERED, and no
-     * listener is ever called with the lock held.
-     */
-    private final List<Runnable> pendingEvents = new ArrayList<>();
-    /** Held by the one thread that delivers {@link #pendingEvents} (not the hub's lock). */
-    private final ReentrantLock delivering = new ReentrantLock();
 
     public Hub(HubConfig config, PropagationModel model) {
+        this(config, model, System::nanoTime);
+    }
+
+    /** With the clock the core, the statistics and the warnings' limit read ({@link System#nanoTime()} in use). */
+    Hub(HubConfig config, PropagationModel model, LongSupplier clock) {
         this.config = config;
         this.model = model;
+        this.clock = clock;
+        this.warnings = WarningLimiter.standard(clock);
+        this.events = new EventFanOut(LOG, warnings);
+        this.outbox = new Outbox(events);
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
+        this.core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot());
+        this.keepAlive = KeepAlive.within(config.deadPeerSeconds());
         events.add(new EventLogger());
-        memory = new PortMemory(config.portMemorySeconds(), this::forgetIfGone);
-        keepAlive = KeepAlive.within(config.deadPeerSeconds());
     }
 
     public void addListener(WssEventListener listener) {
@@ -110,14 +115,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         controlListener = new ControlListener(this, new InetSocketAddress(config.bindAddress(), config.controlPort()));
         try {
             model.setRobotLinkModel(this);
-            model.setEventListener(events);
+            model.setEventListener(new ModelEvents());
             model.start();
         } catch (ModelStartException | RuntimeException e) {
             controlListener.close();
             throw e;
         }
         synchronized (lock) {
-            if (closed) {
+            if (core.isClosed()) {
                 // Stopped while the model was starting (a slow simulator connection, say).
                 controlListener.close();
                 model.shutdown();
@@ -147,37 +152,103 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         } catch (RuntimeException e) {
             LOG.log(Level.WARNING, "the model failed to shut down: " + e, e);
         }
-        memory.close();
-        List<Link> links = new ArrayList<>();
-        synchronized (lock) {
-            closed = true;
-            lock.notifyAll(); // an INIT waiting for a name gives up at once
-            for (WssPort port : ports.all()) {
-                port.release();
-                links.addAll(port.links());
-            }
-            ports.clear();
-            robots.clear();
-        }
-        closeLinks(links, CloseReason.SERVER_STOPPED);
+        forgetTimer.close();
+        step(core::close);
         warnings.close();
         LOG.info("WSS stopped");
     }
 
-    /** How control connections and links find a peer that vanished. */
-    KeepAlive keepAlive() {
+    @Override
+    public KeepAlive keepAlive() {
         return keepAlive;
     }
 
     /** The sockets of the control connections and of both legs of every link, for the tests of their options. */
     List<SocketChannel> openSockets() {
-        List<SocketChannel> sockets = new ArrayList<>(controlListener.channels());
+        List<SocketChannel> open = new ArrayList<>(controlListener.channels());
         synchronized (lock) {
-            for (WssPort port : ports.all()) {
-                port.links().forEach(link -> sockets.addAll(link.channels()));
+            for (WssPort port : core.ports()) {
+                for (Connection link : port.links()) {
+                    open.addAll(((Link) link).channels());
+                }
             }
         }
-        return sockets;
+        return open;
+    }
+
+    // ---- applying the core's steps ----
+
+    /** One step of the core under the lock, its changes applied after it. */
+    private void step(Consumer<Changes> step) {
+        Changes out = new Changes();
+        Applying applying;
+        synchronized (lock) {
+            step.accept(out);
+            applying = taken(out);
+        }
+        apply(applying);
+    }
+
+    /** A step's changes as the hub applies them: its port work resolved to sockets, its turn and its last event's number. */
+    private record Applying(Changes changes, List<PortTask> portTasks, long turn, long lastEvent) {
+    }
+
+    /** A port's socket work with the sockets it is for, resolved under the lock (a port forgotten later keeps its own). */
+    private record PortTask(Changes.PortAction action, PortSockets sockets) {
+    }
+
+    /** Under the lock: the step's events are numbered in the outbox, its port work resolved and given a turn. */
+    private Applying taken(Changes out) {
+        long lastEvent = outbox.append(out.events());
+        if (!out.hasSocketWork()) {
+            return new Applying(out, List.of(), 0, lastEvent);
+        }
+        List<PortTask> tasks = new ArrayList<>();
+        for (Changes.PortAction action : out.portActions()) {
+            PortSockets portSockets = action.work() == Changes.PortWork.RELEASE ? sockets.remove(action.port())
+                    : sockets.get(action.port());
+            if (portSockets != null) {
+                tasks.add(new PortTask(action, portSockets));
+            }
+        }
+        return new Applying(out, tasks, turns.take(), lastEvent);
+    }
+
+    /**
+     * After the lock: the socket work in the order the steps were taken (a break's port stops
+     * before the resume that follows it listens again), then the port memory's timers, then the
+     * events. Returns once this step's socket work is done: a break has stopped its ports.
+     */
+    private void apply(Applying applying) {
+        Changes changes = applying.changes();
+        if (applying.turn() > 0) {
+            turns.await(applying.turn());
+            try {
+                applying.portTasks().forEach(this::portWork);
+                changes.closes().forEach(close -> close.link().close(close.reason()));
+                changes.sessionsToClose().forEach(RobotSession::close);
+            } finally {
+                turns.done(applying.turn());
+            }
+        }
+        changes.forgetLater().forEach(later -> forgetTimer.schedule(later.robot(), later.afterNs()));
+        outbox.deliver();
+    }
+
+    private void portWork(PortTask task) {
+        Changes.PortAction action = task.action();
+        PortSockets portSockets = task.sockets();
+        switch (action.work()) {
+            case LISTEN -> {
+                try {
+                    portSockets.listen(this, action.epoch());
+                } catch (IOException e) {
+                    step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out));
+                }
+            }
+            case STOP -> portSockets.stopListening();
+            case RELEASE -> portSockets.release();
+        }
     }
 
     // ---- called by control sessions ----
@@ -185,20 +256,22 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     /**
      * Registers a robot. When the name is taken, waits a moment for it to be freed: a robot whose
      * control connection dropped reconnects at once, and its old connection's end may not have
-     * been read yet.
+     * been read yet; one that is leaving frees it once its ports drained.
      *
      * @return false when the name stays taken (nothing changes then)
      */
-    boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
+    @Override
+    public boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
-        List<WssPort> toListen = new ArrayList<>();
+        Changes out = new Changes();
+        Applying applying;
         synchronized (lock) {
             long start = System.nanoTime();
-            while (robots.containsKey(name) && !closed) {
-                // A robot that is leaving frees its name once its ports drained: wait for that too.
-                long wait = leaving.contains(robots.get(name).session()) ? NAME_RELEASE_WAIT_NS + DRAIN_NS : NAME_RELEASE_WAIT_NS;
+            HubCore.NameCheck check;
+            while ((check = core.register(robot, clock.getAsLong(), out)) != HubCore.NameCheck.REGISTERED) {
+                long wait = check == HubCore.NameCheck.TAKEN_BY_LEAVING ? NAME_RELEASE_WAIT_NS + DRAIN_NS : NAME_RELEASE_WAIT_NS;
                 long left = start + wait - System.nanoTime();
-                if (left <= 0) {
+                if (check == HubCore.NameCheck.CLOSED || left <= 0) {
                     return false;
                 }
                 try {
@@ -208,58 +281,10 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
                     return false;
                 }
             }
-            if (closed) {
-                return false;
-            }
-            robots.put(name, robot);
-            pendingEvents.add(() -> events.robotRegistered(name, address.getHostAddress(), robot.ports()));
-            memory.clear(name);
-            // A kick forgot the model's breaks of the robot's pairs: their statistics follow the state they are in now.
-            stats.pairsOf(name).forEach(pair -> recordState(pair, true));
-            for (WssPort port : ports.of(name)) {
-                if (shouldListen(port.key, true) && !port.listening()) {
-                    toListen.add(port);
-                }
-            }
+            applying = taken(out);
         }
-        listenAgain(toListen, session);
-        deliverEvents();
+        apply(applying);
         return true;
-    }
-
-    /**
-     * The ports a registration reopens: their sockets are bound without the lock (beside the
-     * placeholders, which keep the numbers), adopted under it if they still should listen, and
-     * their threads started after it.
-     */
-    private void listenAgain(List<WssPort> toListen, ControlSession session) {
-        Map<WssPort, ServerSocketChannel> bound = new HashMap<>();
-        for (WssPort port : toListen) {
-            try {
-                bound.put(port, port.bindListening());
-            } catch (IOException e) {
-                LOG.warning(port + ": could not listen again: " + e.getMessage());
-            }
-        }
-        List<PortListener> started = new ArrayList<>();
-        synchronized (lock) {
-            for (Map.Entry<WssPort, ServerSocketChannel> entry : bound.entrySet()) {
-                WssPort port = entry.getKey();
-                boolean stillOurs = ports.get(port.key) == port && !closed && isRegisteredSession(session);
-                if (stillOurs && !port.listening() && shouldListen(port.key, true)) {
-                    started.add(port.adopt(entry.getValue()));
-                    pendingEvents.add(listeningEvent(port));
-                } else {
-                    Closing.quietly(entry.getValue());
-                }
-            }
-        }
-        started.forEach(PortListener::start);
-    }
-
-    /** Under the lock: whether the session's robot is registered now. */
-    private boolean isRegisteredSession(ControlSession session) {
-        return robots.values().stream().anyMatch(robot -> robot.session() == session);
     }
 
     /**
@@ -268,66 +293,36 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * (a robot that sends and leaves at once loses nothing): the robot stays registered until its
      * ports have drained, for at most {@link #DRAIN_NS}.
      */
-    void deregister(String name, ControlSession session) {
-        Map<PortListener, InetAddress> toDrain = new HashMap<>();
+    @Override
+    public void deregister(String name, ControlSession session) {
+        List<PortSockets> toDrain = new ArrayList<>();
         synchronized (lock) {
-            if (!isSessionOf(name, session)) {
+            List<WssPort> listening = core.beginLeaving(name, session);
+            if (listening == null) {
                 return;
             }
-            leaving.add(session);
             lock.notifyAll(); // an INIT of the name waits for the drain now
-            for (WssPort port : ports.of(name)) {
-                PortListener listener = port.listener();
-                if (listener != null) {
-                    toDrain.put(listener, port.reach());
-                }
-            }
+            listening.stream().map(sockets::get).filter(Objects::nonNull).forEach(toDrain::add);
         }
         // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
-        List<PortListener> draining = new ArrayList<>();
-        toDrain.forEach((listener, reach) -> {
-            if (listener.beginDrain(reach)) {
-                draining.add(listener);
-            }
-        });
+        List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
-        synchronized (lock) {
-            leaving.remove(session);
-            if (!isSessionOf(name, session)) {
-                return; // kicked out meanwhile
-            }
-            robots.remove(name);
+        step(out -> {
+            core.left(name, session, clock.getAsLong(), out);
             lock.notifyAll();
-            pendingEvents.add(() -> events.robotDeregistered(name));
-            stats.left(name, System.nanoTime());
-            for (WssPort port : ports.of(name)) {
-                if (port.stopListening()) {
-                    pendingEvents.add(listeningEvent(port));
-                }
-            }
-            if (memory.left(name)) {
-                forgetPortsOf(name);
-            }
-        }
-        deliverEvents();
+        });
     }
 
-    /** Under the lock. */
-    private boolean isSessionOf(String name, ControlSession session) {
-        RegisteredRobot robot = robots.get(name);
-        return robot != null && robot.session() == session;
-    }
-
-    /** Whether a control connection from this address may use the operator command (wss.operators). */
-    boolean isOperator(InetAddress address) {
+    @Override
+    public boolean isOperator(InetAddress address) {
         return config.operators().contains(address);
     }
 
-    /** The model's strength from one robot to another; empty when {@code to} is not registered. */
-    OptionalDouble signalStrength(String from, String to) {
+    @Override
+    public OptionalDouble signalStrength(String from, String to) {
         synchronized (lock) {
-            if (!robots.containsKey(to)) {
+            if (!core.isRegistered(to)) {
                 return OptionalDouble.empty();
             }
         }
@@ -339,67 +334,56 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    /** The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the first). */
-    DnsResult dns(String from, String to, int targetPort) {
+    /**
+     * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
+     * first). A new port's number is bound first, without the lock, then allocated under it.
+     * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
+     */
+    @Override
+    public HubCore.DnsResult dns(String from, String to, int targetPort) {
         if (from.equals(to)) {
-            return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
+            return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
         }
         boolean allowed = modelAllows(from, to);
-        DnsResult result = dnsLocked(from, to, targetPort, allowed);
-        deliverEvents();
+        HubCore.DnsResult result = dns(from, to, targetPort, allowed, null);
+        if (result.outcome() != HubCore.DnsOutcome.NEEDS_NUMBER) {
+            return result;
+        }
+        SocketChannel placeholder;
+        try {
+            placeholder = PortSockets.hold(config.bindAddress());
+        } catch (IOException e) {
+            step(out -> core.couldNotAllocate(result.key(), e.getMessage(), out));
+            return new HubCore.DnsResult(HubCore.DnsOutcome.NO_PORT, -1, result.key(), false);
+        }
+        HubCore.DnsResult allocated = dns(from, to, targetPort, allowed, placeholder);
+        if (!allocated.numberUsed()) {
+            Closing.quietly(placeholder); // another DNS allocated the port meanwhile, or the robots left
+        }
+        return allocated;
+    }
+
+    private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, SocketChannel placeholder) {
+        Changes out = new Changes();
+        HubCore.DnsResult result;
+        Applying applying;
+        synchronized (lock) {
+            int number = placeholder == null ? -1 : PortSockets.numberOf(placeholder);
+            result = core.dns(from, to, targetPort, allowed, number, clock.getAsLong(), out);
+            if (result.numberUsed()) {
+                WssPort port = core.port(result.key());
+                sockets.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder));
+            }
+            applying = taken(out);
+        }
+        apply(applying);
         return result;
     }
 
-    private DnsResult dnsLocked(String from, String to, int targetPort, boolean allowed) {
+    @Override
+    public String reverseDns(String asker, int port) {
         synchronized (lock) {
-            RegisteredRobot target = robots.get(to);
-            if (closed || !robots.containsKey(from) || target == null) {
-                return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1);
-            }
-            int resolved = target.resolvePort(targetPort);
-            if (resolved < 0) {
-                return new DnsResult(DnsOutcome.NO_SUCH_TARGET_PORT, -1);
-            }
-            PortKey key = new PortKey(from, to, resolved);
-            pairStats(key.pair());
-            WssPort port = ports.get(key);
-            if (port == null) {
-                long held = ports.fromCount(from);
-                InetAddress fromAddress = robots.get(from).address();
-                if (held >= config.maxPortsPerRobot()) {
-                    pendingEvents.add(() -> warnings.warn(LOG, "DNS beyond the port limit", fromAddress, from + " holds " + held
-                            + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key));
-                    return new DnsResult(DnsOutcome.NO_PORT, -1);
-                }
-                try {
-                    port = WssPort.allocate(this, key, config.bindAddress(), shouldListen(key, allowed));
-                } catch (IOException e) {
-                    pendingEvents.add(() -> warnings.warn(LOG, "ports not allocated", fromAddress,
-                            "could not allocate a WSS port for " + key + ": " + e.getMessage()));
-                    return new DnsResult(DnsOutcome.NO_PORT, -1);
-                }
-                ports.add(port);
-                String allocated = "allocated " + port + (port.listening() ? "" : ", not listening");
-                pendingEvents.add(() -> LOG.info(allocated));
-                int number = port.number;
-                boolean listening = port.listening();
-                pendingEvents.add(() -> events.portAllocated(from, to, key.targetPort(), number, listening));
-            } else if (!port.listening() && shouldListen(key, allowed)) {
-                listen(port);
-            }
-            return new DnsResult(DnsOutcome.OK, port.number);
-        }
-    }
-
-    /** The source robot of the link whose outgoing port {@code port} leads to {@code asker}, or null. */
-    String reverseDns(String asker, int port) {
-        synchronized (lock) {
-            for (WssPort wssPort : ports.of(asker)) {
-                if (wssPort.key.to().equals(asker) && wssPort.hasLinkFrom(port)) {
-                    return wssPort.key.from();
-                }
-            }
-            return null;
+            return core.reverseDns(asker, port);
         }
     }
 
@@ -409,40 +393,31 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
      * A connection arrived on a WSS port: forward it, or close it at once and say why. The link's
      * sockets and selector are opened without the lock, between a first check of the rules
      * (a refused connection opens nothing) and a second one, under which the link is committed
-     * to the port. A robot that left or came back in between has stopped the port's listener, so
-     * {@code listensWith} then fails, and the target's address read at the first check still holds.
+     * to the port. A port that stopped listening meanwhile (its listener's epoch is old) refuses it.
      */
-    void accepted(WssPort port, PortListener listener, SocketChannel socket) {
-        PortKey key = port.key;
+    @Override
+    public void accepted(WssPort port, int epoch, SocketChannel socket) {
         InetAddress peer = socket.socket().getInetAddress();
-        boolean allowed = modelAllows(key.from(), key.to());
-        String refusal;
-        InetSocketAddress targetAddress = null;
-        PairStats pairStats = null;
+        boolean allowed = modelAllows(port.key.from(), port.key.to());
+        HubCore.Admission admission;
         synchronized (lock) {
-            refusal = refusal(port, listener, peer, allowed);
-            if (refusal == null) {
-                targetAddress = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
-                pairStats = pairStats(key.pair());
-            }
+            admission = core.admit(port, epoch, peer, allowed, clock.getAsLong());
         }
-        if (refusal != null) {
-            refuse(port, socket, peer, refusal);
+        if (admission.refusal() != null) {
+            refuse(port, socket, peer, admission.refusal());
             return;
         }
         Link link;
         try {
-            link = new Link(this, port, socket, targetAddress, config.chunkSize(), socketBuffers, events, pairStats);
+            link = new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats());
         } catch (IOException e) {
             warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
             return;
         }
+        String refusal;
         synchronized (lock) {
-            refusal = refusal(port, listener, peer, allowed);
-            if (refusal == null) {
-                port.addLink(link);
-            }
+            refusal = core.commit(port, epoch, peer, allowed, link);
         }
         if (refusal != null) {
             link.discard();
@@ -454,29 +429,11 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         } catch (Throwable e) {
             // No thread for the link: undone here, and the listener's AcceptLoop says so.
             synchronized (lock) {
-                port.removeLink(link);
+                core.uncommit(port, link);
             }
             link.discard();
             throw e;
         }
-    }
-
-    /** Why a connection on the port cannot be forwarded now, or null when it can. Under the lock. */
-    private String refusal(WssPort port, PortListener listener, InetAddress peer, boolean allowed) {
-        PortKey key = port.key;
-        RegisteredRobot source = robots.get(key.from());
-        if (closed || !port.listensWith(listener) || source == null || !robots.containsKey(key.to())) {
-            return "the port no longer listens";
-        }
-        if (config.matchSourceAddress() && !peer.equals(source.address())) {
-            return "the connection came from " + peer.getHostAddress() + " but " + key.from()
-                    + " registered from " + source.address().getHostAddress();
-        }
-        if (!forcedPairs.allows(key.pair(), allowed && !broken.contains(key.pair()))) {
-            return forcedPairs.of(key.pair()) == Force.DOWN ? key.pair() + " is forced down"
-                    : model.name() + " does not allow " + key.from() + " -> " + key.to() + " now";
-        }
-        return null;
     }
 
     private void refuse(WssPort port, SocketChannel socket, InetAddress peer, String refusal) {
@@ -484,30 +441,27 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         Closing.quietly(socket);
     }
 
-    void linkEstablished(Link link) {
-        PortKey key = link.port.key;
-        events.connectionEstablished(key.from(), key.to(), key.targetPort());
+    @Override
+    public void established(Link link) {
+        long last;
+        synchronized (lock) {
+            last = outbox.append(List.of(new HubEvent.Established(link.port().key)));
+        }
+        outbox.deliverThrough(last);
     }
 
-    /**
-     * The link's end goes out with the hub's ordered events: after those of the change that closed
-     * it (a force, a break, a kick), even while another thread is still delivering them.
-     */
-    void linkClosed(Link link, boolean wasEstablished) {
-        PortKey key = link.port.key;
-        synchronized (lock) {
-            link.port.removeLink(link);
-            if (wasEstablished) {
-                pendingEvents.add(() -> events.connectionTerminated(key.from(), key.to(), key.targetPort()));
-            }
-            // A port kept only for its last connection is forgotten with it.
-            for (String robot : List.of(link.port.key.from(), link.port.key.to())) {
-                if (!link.port.hasLinks() && !robots.containsKey(robot) && memory.expired(robot)) {
-                    forgetPortsOf(robot);
-                }
-            }
+    @Override
+    public void linkEnded(Link link, boolean wasEstablished) {
+        step(out -> core.linkEnded(link.port(), link, wasEstablished, clock.getAsLong(), out));
+    }
+
+    @Override
+    public void warn(Logger log, String category, InetAddress client, String message, Throwable cause) {
+        if (cause == null) {
+            warnings.warn(log, category, client, message);
+        } else {
+            warnings.warn(log, category, client, message, cause);
         }
-        deliverEvents();
     }
 
     // ---- RobotLinkModel: called by the model ----
@@ -515,85 +469,31 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
     @Override
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        List<Link> links = new ArrayList<>();
-        boolean changed;
-        synchronized (lock) {
-            PairStats pairStats = pairStats(pair); // first seen now: seen up until this break
-            changed = broken.add(pair);
-            if (changed) {
-                pairStats.modelChanged(true);
-                recordState(pair, true);
-            }
-            // Forced up: the break is only remembered, for the release.
-            for (WssPort port : forcedPairs.of(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
-                if (port.stopListening()) {
-                    changed = true;
-                    pendingEvents.add(listeningEvent(port));
-                }
-                links.addAll(port.links());
-            }
-        }
-        closeLinks(links, CloseReason.OUT_OF_RANGE);
-        deliverEvents();
-        return changed || !links.isEmpty();
+        boolean[] changed = new boolean[1];
+        step(out -> changed[0] = core.breakPair(pair, clock.getAsLong(), out));
+        return changed[0];
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        boolean changed;
-        synchronized (lock) {
-            PairStats pairStats = pairStats(pair);
-            changed = broken.remove(pair);
-            if (changed) {
-                pairStats.modelChanged(false);
-                recordState(pair, true);
-            }
-            for (WssPort port : ports.between(pair)) {
-                if (!port.listening() && shouldListen(port.key, true)) {
-                    changed |= listen(port);
-                }
-            }
-        }
-        deliverEvents();
-        return changed;
+        boolean[] changed = new boolean[1];
+        step(out -> changed[0] = core.resumePair(pair, clock.getAsLong(), out));
+        return changed[0];
     }
 
     @Override
     public void kickOutRobot(String name) {
-        RegisteredRobot robot;
-        List<Link> links = new ArrayList<>();
-        synchronized (lock) {
-            robot = robots.remove(name);
+        step(out -> {
+            core.kick(name, clock.getAsLong(), out);
             lock.notifyAll();
-            if (robot != null) {
-                pendingEvents.add(() -> events.robotDeregistered(name));
-            }
-            for (WssPort port : ports.of(name)) {
-                port.release();
-                links.addAll(port.links());
-                ports.remove(port);
-                pendingEvents.add(forgottenEvent(port));
-            }
-            stats.left(name, System.nanoTime());
-            broken.removeIf(pair -> pair.contains(name));
-            memory.clear(name);
-            if (memory.left(name)) { // its pairs' statistics are remembered as long as its ports would have been
-                forgetPortsOf(name);
-            }
-        }
-        closeLinks(links, CloseReason.KICKED);
-        if (robot != null) {
-            robot.session().close();
-            LOG.info("kicked out " + name);
-        }
-        deliverEvents();
+        });
     }
 
     @Override
     public List<String> getListOfRegisteredRobots() {
         synchronized (lock) {
-            return robots.keySet().stream().sorted().toList();
+            return core.robotNames();
         }
     }
 
@@ -601,78 +501,38 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /**
      * Forces the pair down or up: a forced state wins over the model's verdict until
-     * {@link #release} ({@link ForcedPairs}). Forced down stops the pair's ports and closes its
-     * connections as a break does, and the model's resume does not reopen them; forced up lets
-     * them listen (where both robots are registered) and forwards their connections whatever the
-     * model breaks or forbids. The names need not be registered: the state holds for the pair
-     * whenever its robots come, leave and come back.
+     * {@link #release}. Forced down stops the pair's ports and closes its connections as a break
+     * does, and the model's resume does not reopen them; forced up lets them listen (where both
+     * robots are registered) and forwards their connections whatever the model breaks or forbids.
+     * The names need not be registered: the state holds for the pair whenever its robots come,
+     * leave and come back.
      *
      * @throws IllegalArgumentException when the names are empty or the same
      */
+    @Override
     public void force(String robotA, String robotB, Force force) {
         RobotPair pair = pairOf(robotA, robotB);
         Objects.requireNonNull(force, "force");
-        List<Link> links = new ArrayList<>();
-        synchronized (lock) {
-            Force before = forcedPairs.force(pair, force);
-            if (before != force) {
-                pendingEvents.add(() -> events.pairForced(pair.first(), pair.second(), force == Force.UP));
-            }
-            for (WssPort port : ports.between(pair)) {
-                followVerdict(port, force == Force.UP, links);
-            }
-            recordState(pair, false);
-        }
-        closeLinks(links, CloseReason.FORCED);
-        deliverEvents();
+        step(out -> core.force(pair, force, clock.getAsLong(), out));
     }
 
     /**
      * Gives the pair back to the model: its verdict counts again at once. That verdict is the
      * model's last break or resume of the pair, and {@code connectionIsPossibleForPair} asked now
-     * for each direction: a direction it broke or forbids stops listening and its connections
-     * close; one it allows listens again (where both robots are registered).
+     * for each direction.
      */
+    @Override
     public void release(String robotA, String robotB) {
         RobotPair pair = pairOf(robotA, robotB);
         boolean firstToSecond = modelAllows(pair.first(), pair.second());
         boolean secondToFirst = modelAllows(pair.second(), pair.first());
-        List<Link> links = new ArrayList<>();
-        synchronized (lock) {
-            Force before = forcedPairs.release(pair);
-            if (before != null) {
-                pendingEvents.add(() -> events.pairReleased(pair.first(), pair.second()));
-            }
-            for (WssPort port : before == null ? List.<WssPort>of() : ports.between(pair)) {
-                boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
-                followVerdict(port, allowed && !broken.contains(pair), links);
-            }
-            recordState(pair, true);
-        }
-        closeLinks(links, CloseReason.OUT_OF_RANGE);
-        deliverEvents();
-    }
-
-    /**
-     * Under the lock: a port of a pair just forced or released follows the verdict at once. Not
-     * talking, it stops listening and its links go to {@code links}, to be closed after the lock;
-     * talking, it listens again where both robots are registered.
-     */
-    private void followVerdict(WssPort port, boolean talks, List<Link> links) {
-        if (!talks) {
-            if (port.stopListening()) {
-                pendingEvents.add(listeningEvent(port));
-            }
-            links.addAll(port.links());
-        } else if (!port.listening() && shouldListen(port.key, true)) {
-            listen(port);
-        }
+        step(out -> core.release(pair, firstToSecond, secondToFirst, clock.getAsLong(), out));
     }
 
     /** The pair's forced state, or null when the model decides it (for the tests; the window and the log read it in the pairs' states). */
     Force forced(RobotPair pair) {
         synchronized (lock) {
-            return forcedPairs.of(pair);
+            return core.forced(pair);
         }
     }
 
@@ -683,6 +543,15 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         return RobotPair.of(robotA, robotB);
     }
 
+    // ---- port memory ----
+
+    /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
+    private void forgetIfGone(String name) {
+        step(out -> core.forgetIfGone(name, clock.getAsLong(), out));
+    }
+
+    // ---- the snapshot ----
+
     /** The robots, the WSS ports and the established links, all at one instant. */
     public HubSnapshot snapshot() {
         List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
@@ -690,14 +559,14 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
         List<PairStats> pairStats;
         synchronized (lock) {
-            pairStats = stats.all();
-            for (RegisteredRobot robot : robots.values()) {
+            pairStats = core.pairStats();
+            for (RegisteredRobot robot : core.robots()) {
                 robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
             }
-            for (WssPort port : ports.all()) {
-                PortKey key = port.key;
+            for (WssPort port : core.ports()) {
+                var key = port.key;
                 portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
-                for (Link link : port.links()) {
+                for (Connection link : port.links()) {
                     if (link.isEstablished() && !link.isClosed()) {
                         linkEntries.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number,
                                 link.outgoingPort()));
@@ -715,7 +584,7 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
 
     /** The pairs' statistics, sorted by pair; the model is asked for strengths and positions here, without the lock. */
     private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats) {
-        long now = System.nanoTime();
+        long now = clock.getAsLong();
         List<HubSnapshot.PairEntry> entries = new ArrayList<>();
         for (PairStats pair : pairStats) {
             String first = pair.pair.first();
@@ -749,170 +618,38 @@ public final class Hub implements RobotLinkModel, AutoCloseable {
         }
     }
 
-    // ---- port memory ----
-
-    /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
-    private void forgetIfGone(String name) {
-        synchronized (lock) {
-            if (!closed && !robots.containsKey(name) && memory.expired(name)) {
-                forgetPortsOf(name);
-            }
-        }
-        deliverEvents();
-    }
-
-    /**
-     * Under the lock: gives back the numbers of a gone robot's WSS ports, as source and as target,
-     * but those with open connections, which are forgotten when their last connection closes. The
-     * ports' events go to {@link #pendingEvents}.
-     */
-    private void forgetPortsOf(String name) {
-        int forgotten = 0;
-        boolean kept = false;
-        for (WssPort port : ports.of(name)) {
-            if (!port.hasLinks()) {
-                port.release();
-                ports.remove(port);
-                pendingEvents.add(forgottenEvent(port));
-                forgotten++;
-            } else {
-                kept = true;
-            }
-        }
-        if (forgotten > 0) {
-            String forgot = "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name + ", gone for "
-                    + memory.goneSeconds(name) + " s";
-            pendingEvents.add(() -> LOG.info(forgot));
-        }
-        if (!kept) {
-            memory.clear(name);
-        }
-        stats.forget(name, pair -> ports.between(pair).isEmpty());
-    }
-
-    // ---- events ----
-
-    /**
-     * Delivers the pending events in order, never under the lock. One thread delivers at a time;
-     * a thread that finds another delivering leaves its events to it, and the deliverer looks
-     * again after letting go, so none is left behind. A listener that changes the hub from its
-     * event (the delivering thread itself) leaves its events to the loop it is called from, which
-     * delivers them after the rest of the batch it is in: the lock is reentrant, and delivering
-     * them at once would put them before events that came first.
-     */
-    private void deliverEvents() {
-        if (delivering.isHeldByCurrentThread()) {
-            return;
-        }
-        while (delivering.tryLock()) {
-            try {
-                List<Runnable> batch;
-                while (!(batch = takePendingEvents()).isEmpty()) {
-                    batch.forEach(Runnable::run);
-                }
-            } finally {
-                delivering.unlock();
-            }
-            synchronized (lock) {
-                if (pendingEvents.isEmpty()) {
-                    return;
-                }
-            }
-        }
-    }
-
-    private List<Runnable> takePendingEvents() {
-        synchronized (lock) {
-            List<Runnable> batch = List.copyOf(pendingEvents);
-            pendingEvents.clear();
-            return batch;
-        }
-    }
-
-    // ---- rules ----
-
-    /** The pair's state now: an operator's force wins over the model's verdict. Under the lock. */
-    private PairState stateOf(RobotPair pair) {
-        Force force = forcedPairs.of(pair);
-        if (force != null) {
-            return force == Force.DOWN ? PairState.FORCED_DOWN : PairState.FORCED_UP;
-        }
-        return broken.contains(pair) ? PairState.BROKEN : PairState.UP;
-    }
-
-    /** The pair's statistics, from now on when it was not seen yet. Under the lock. */
-    private PairStats pairStats(RobotPair pair) {
-        return stats.of(pair, stateOf(pair), bothPresent(pair));
-    }
-
-    /**
-     * Under the lock: records the state now of a pair seen (after a break, a resume, a force or a
-     * release); with {@code say}, a change is logged, one line, delivered after the lock with the
-     * events (a force says itself: the event's line "forced A - B down").
-     */
-    private void recordState(RobotPair pair, boolean say) {
-        PairStats pairStats = stats.get(pair);
-        PairState now = stateOf(pair);
-        if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), System.nanoTime()) && say) {
-            pendingEvents.add(() -> LOG.info("pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
-        }
-    }
-
-    /** Whether both robots of the pair are registered. Under the lock. */
-    private boolean bothPresent(RobotPair pair) {
-        return robots.containsKey(pair.first()) && robots.containsKey(pair.second());
-    }
-
-    /** Closes the links after the lock, saying why (the last close their pairs' statistics show). */
-    private static void closeLinks(List<Link> links, CloseReason reason) {
-        links.forEach(link -> link.close(reason));
-    }
-
-    /**
-     * A WSS port listens while both robots are registered, the target still accepts on the
-     * target port, and the model neither broke nor forbids the pair, unless an operator forced
-     * it ({@link ForcedPairs#allows}). Under the lock.
-     */
-    private boolean shouldListen(PortKey key, boolean modelAllows) {
-        RegisteredRobot target = robots.get(key.to());
-        return robots.containsKey(key.from()) && target != null && target.ports().contains(key.targetPort())
-                && forcedPairs.allows(key.pair(), modelAllows && !broken.contains(key.pair()));
-    }
-
-    /** Under the lock; the port's event goes to {@link #pendingEvents}. @return true when it listens now */
-    private boolean listen(WssPort port) {
-        try {
-            port.listen();
-            pendingEvents.add(listeningEvent(port));
-            return true;
-        } catch (IOException e) {
-            String why = port + ": could not listen again: " + e.getMessage();
-            pendingEvents.add(() -> LOG.warning(why));
-            return false;
-        }
-    }
-
-    /** The event saying the port's number was given back, to be fired after the lock is released. Under the lock. */
-    private Runnable forgottenEvent(WssPort port) {
-        PortKey key = port.key;
-        int number = port.number;
-        return () -> events.portForgotten(key.from(), key.to(), key.targetPort(), number);
-    }
-
-    /** The event saying whether the port listens now, to be fired after the lock is released. Under the lock. */
-    private Runnable listeningEvent(WssPort port) {
-        PortKey key = port.key;
-        int number = port.number;
-        boolean listening = port.listening();
-        return () -> events.portListening(key.from(), key.to(), key.targetPort(), number, listening);
-    }
-
     private boolean modelAllows(String from, String to) {
         try {
             return model.connectionIsPossibleForPair(from, to);
         } catch (RuntimeException e) {
             LOG.log(Level.WARNING, model.name() + " failed to say whether " + from + " -> " + to + " may connect: " + e, e);
             return false;
+        }
+    }
+
+    /** The model's own events join the hub's, in order with them. */
+    private final class ModelEvents implements WssEventListener {
+
+        private void append(HubEvent event) {
+            synchronized (lock) {
+                outbox.append(List.of(event));
+            }
+            outbox.deliver();
+        }
+
+        @Override
+        public void robotOutOfBattery(String robot) {
+            append(new HubEvent.OutOfBattery(robot));
+        }
+
+        @Override
+        public void connectionOutOfRange(String from, String to, double strength, double distance) {
+            append(new HubEvent.OutOfRange(from, to, strength, distance));
+        }
+
+        @Override
+        public void connectionInRange(String from, String to) {
+            append(new HubEvent.InRange(from, to));
         }
     }
 }

@@ -6,6 +6,7 @@ import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Set;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.model.RobotPair;
 
 /**

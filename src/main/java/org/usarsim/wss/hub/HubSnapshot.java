@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.util.List;
+import org.usarsim.wss.hub.core.PairState;
 
 /**
  * The hub's state at one instant, taken under its lock: what a window that starts observing late,

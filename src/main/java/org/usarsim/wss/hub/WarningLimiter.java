@@ -69,8 +69,8 @@ final class WarningLimiter implements AutoCloseable {
     }
 
     /** The server's: {@link #FIRST} a minute, the summaries written by a {@link #daemonTimer()}. */
-    static WarningLimiter standard() {
-        return new WarningLimiter(FIRST, INTERVAL_NS, System::nanoTime, daemonTimer());
+    static WarningLimiter standard(LongSupplier clock) {
+        return new WarningLimiter(FIRST, INTERVAL_NS, clock, daemonTimer());
     }
 
     /** A timer whose one daemon thread, {@code wss-warnings}, lives only while a task waits (and a second more). */

@@ -1,7 +1,7 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 /** Why a forwarded connection closed: what the statistics of its pair show as the last close. */
-enum CloseReason {
+public enum CloseReason {
     /** The model broke the pair (out of range, say). */
     OUT_OF_RANGE("out of range"),
     /** The model kicked one of the robots out. */

@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.nio.channels.SocketChannel;
@@ -14,7 +14,7 @@ import java.util.logging.Logger;
  * wmem_max, and a capped size does worse than leaving the OS to size the buffers itself, so
  * such a request is not applied at all.
  */
-final class SocketBuffers {
+public final class SocketBuffers {
 
     private static final Logger LOG = Logger.getLogger(SocketBuffers.class.getName());
 
@@ -25,7 +25,7 @@ final class SocketBuffers {
     }
 
     /** @param requested bytes; 0 leaves the buffers to the OS */
-    static SocketBuffers of(int requested) {
+    public static SocketBuffers of(int requested) {
         if (requested == 0) {
             return new SocketBuffers(0);
         }

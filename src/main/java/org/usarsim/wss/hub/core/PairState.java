@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.util.Locale;
 

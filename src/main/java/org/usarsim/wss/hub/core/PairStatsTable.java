@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -10,41 +10,41 @@ import org.usarsim.wss.model.RobotPair;
 /**
  * The statistics of every pair the hub has seen (a DNS between them, or the model's verdict on
  * them), kept until the hub forgets the pair's ports: {@link #forget} runs when a robot's ports
- * are forgotten (wss.portMemory after it left, or was kicked). The map is guarded by the hub's lock.
+ * are forgotten (wss.portMemory after it left, or was kicked). Part of the core: single-threaded.
  */
-final class LinkStats {
+final class PairStatsTable {
 
     private final Map<RobotPair, PairStats> pairs = new HashMap<>();
 
-    /** The pair's statistics, from now on when it was not seen yet. Under the hub's lock. */
-    PairStats of(RobotPair pair, PairState state, boolean bothPresent) {
-        return pairs.computeIfAbsent(pair, p -> new PairStats(p, state, bothPresent, System.nanoTime()));
+    /** The pair's statistics, from now on when it was not seen yet. */
+    PairStats of(RobotPair pair, PairState state, boolean bothPresent, long nowNs) {
+        return pairs.computeIfAbsent(pair, p -> new PairStats(p, state, bothPresent, nowNs));
     }
 
-    /** Under the hub's lock. */
+    /** */
     PairStats get(RobotPair pair) {
         return pairs.get(pair);
     }
 
-    /** Forgets the pairs of the robot that {@code gone} says are gone. Under the hub's lock. */
+    /** Forgets the pairs of the robot that {@code gone} says are gone. */
     void forget(String robot, Predicate<RobotPair> gone) {
         pairs.keySet().removeIf(pair -> pair.contains(robot) && gone.test(pair));
     }
 
     /**
      * The robot left (or was kicked out): its pairs' time up stops counting until it is back, the
-     * states they show unchanged. Under the hub's lock.
+     * states they show unchanged.
      */
     void left(String robot, long nowNs) {
         pairs.values().stream().filter(stats -> stats.pair.contains(robot)).forEach(stats -> stats.absent(nowNs));
     }
 
-    /** The pairs seen of the robot. Under the hub's lock. */
+    /** The pairs seen of the robot. */
     List<RobotPair> pairsOf(String robot) {
         return pairs.keySet().stream().filter(pair -> pair.contains(robot)).toList();
     }
 
-    /** Under the hub's lock. */
+    /** */
     List<PairStats> all() {
         return new ArrayList<>(pairs.values());
     }

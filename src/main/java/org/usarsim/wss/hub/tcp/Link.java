@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -16,6 +16,11 @@ import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.CloseReason;
+import org.usarsim.wss.hub.core.Connection;
+import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.core.PortKey;
+import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -25,7 +30,7 @@ import org.usarsim.wss.model.WssEventListener;
  * or a reset on either side stops reading and ends both streams once what was read is written
  * (see {@link #finish}); a side that cannot be written to any more closes both at once.
  */
-final class Link implements Runnable {
+public final class Link implements Runnable, Connection {
 
     private static final Logger LOG = Logger.getLogger(Link.class.getName());
     private static final int CONNECT_TIMEOUT_MS = 5000;
@@ -34,7 +39,7 @@ final class Link implements Runnable {
     /** How many chunks one direction moves before the other gets a turn. */
     private static final int CHUNKS_PER_TURN = 16;
 
-    final WssPort port;
+    private final WssPort port;
     private final PortKey key;
     private final SocketChannel source;
     private final SocketChannel target;
@@ -43,7 +48,7 @@ final class Link implements Runnable {
     private final int chunkSize;
     private final SocketBuffers buffers;
     private final WssEventListener events;
-    private final Hub hub;
+    private final Switchboard switchboard;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
     /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
@@ -54,9 +59,9 @@ final class Link implements Runnable {
     private volatile boolean established;
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
-    Link(Hub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
+    public Link(Switchboard switchboard, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
             SocketBuffers buffers, WssEventListener events, PairStats stats) throws IOException {
-        this.hub = hub;
+        this.switchboard = switchboard;
         this.stats = stats;
         this.port = port;
         this.key = port.key;
@@ -79,24 +84,33 @@ final class Link implements Runnable {
         this.outgoingPort = ((InetSocketAddress) outgoing.getLocalAddress()).getPort();
     }
 
-    boolean isEstablished() {
+    /** The port the link was accepted on. */
+    public WssPort port() {
+        return port;
+    }
+
+    @Override
+    public boolean isEstablished() {
         return established;
     }
 
-    List<SocketChannel> channels() {
+    /** Both legs' sockets (for the tests of their options). */
+    public List<SocketChannel> channels() {
         return List.of(source, target);
     }
 
-    boolean isClosed() {
+    @Override
+    public boolean isClosed() {
         return closed.get();
     }
 
     /** The local port of the WSS's socket to the target: what the target sees as its peer's port. */
-    int outgoingPort() {
+    @Override
+    public int outgoingPort() {
         return outgoingPort;
     }
 
-    void start() {
+    public void start() {
         Thread thread = new Thread(this, "link " + key);
         thread.setDaemon(true);
         thread.start();
@@ -108,7 +122,8 @@ final class Link implements Runnable {
     }
 
     /** As {@link #close()}, saying why (the pair's last close, unless another reason came first). */
-    void close(CloseReason reason) {
+    @Override
+    public void close(CloseReason reason) {
         closeReason.compareAndSet(null, reason);
         if (closed.compareAndSet(false, true)) {
             Closing.quietly(source);
@@ -118,7 +133,7 @@ final class Link implements Runnable {
     }
 
     /** For a link whose thread never started: closes everything it holds. */
-    void discard() {
+    public void discard() {
         close();
         Closing.quietly(selector);
     }
@@ -134,7 +149,7 @@ final class Link implements Runnable {
             established = true;
             this.established = true;
             stats.opened();
-            hub.linkEstablished(this);
+            switchboard.established(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
             // A reset or an error on a socket, or a close from another thread: the link is over.
@@ -147,7 +162,7 @@ final class Link implements Runnable {
             close();
             stats.closed(closeReason.get());
             Closing.quietly(selector);
-            hub.linkClosed(this, established);
+            switchboard.linkEnded(this, established);
         }
     }
 
@@ -156,9 +171,9 @@ final class Link implements Runnable {
             target.socket().connect(targetAddress, CONNECT_TIMEOUT_MS);
         } catch (IOException e) {
             if (!closed.get()) {
-                hub.warnings.warn(LOG, "unreachable targets", source.socket().getInetAddress(), this + ": the target at "
+                switchboard.warn(LOG, "unreachable targets", source.socket().getInetAddress(), this + ": the target at "
                         + targetAddress.getAddress().getHostAddress() + ":" + targetAddress.getPort() + " did not accept ("
-                        + e.getMessage() + "); closing the source's connection");
+                        + e.getMessage() + "); closing the source's connection", null);
             }
             return false;
         }
@@ -170,7 +185,7 @@ final class Link implements Runnable {
             buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
-            hub.keepAlive().apply(channel);
+            switchboard.keepAlive().apply(channel);
             channel.configureBlocking(false);
         }
         Direction up = new Direction(source, target, key.from(), key.to());
@@ -304,7 +319,6 @@ final class Link implements Runnable {
                 coalesce(full);
                 buffer.flip();
                 pending = true;
-                events.dataSent(fromRobot, toRobot, read);
                 flush();
                 if (!full) {
                     return;
@@ -361,7 +375,9 @@ final class Link implements Runnable {
             }
             int written = out.write(buffer);
             if (written > 0) {
+                // The one count of bytes sent: what reached the target's socket, for the statistics and the event log alike.
                 forwarded.add(written);
+                events.dataSent(fromRobot, toRobot, written);
             }
             if (!buffer.hasRemaining()) {
                 buffer.clear();

@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 

@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.LongAdder;
@@ -7,20 +7,20 @@ import org.usarsim.wss.model.RobotPair;
 /**
  * The counters of one pair of robots since it was first seen. Bytes and connections are added by
  * the link threads without a lock (a {@link LongAdder} each, one add per chunk); the state, its
- * times, the breaks and resumes are changed by the hub under its lock and read under this
+ * times, the breaks and resumes are changed by the core (under the hub's lock) and read under this
  * object's monitor; the throughput is computed by whoever samples the counters
  * ({@link #rates}), not per chunk.
  */
-final class PairStats {
+public final class PairStats {
 
     /**
      * The shortest span a throughput is computed over: half a second, so that readers once a
      * second (the window, wss.statsInterval = 1) whose timer fires a little early still get a new
      * figure at every reading, not every other one.
      */
-    static final long RATE_SPAN_NS = TimeUnit.MILLISECONDS.toNanos(500);
+    public static final long RATE_SPAN_NS = TimeUnit.MILLISECONDS.toNanos(500);
 
-    final RobotPair pair;
+    public final RobotPair pair;
     private final LongAdder bytesFirstToSecond = new LongAdder();
     private final LongAdder bytesSecondToFirst = new LongAdder();
     private final LongAdder connections = new LongAdder();
@@ -50,16 +50,16 @@ final class PairStats {
     }
 
     /** The counter of bytes forwarded from {@code robot} to the other robot of the pair. */
-    LongAdder bytesFrom(String robot) {
+    public LongAdder bytesFrom(String robot) {
         return robot.equals(pair.first()) ? bytesFirstToSecond : bytesSecondToFirst;
     }
 
     /** A connection was established (the WSS reached the target). */
-    void opened() {
+    public void opened() {
         connections.increment();
     }
 
-    void closed(CloseReason reason) {
+    public void closed(CloseReason reason) {
         lastClose = reason;
     }
 
@@ -101,7 +101,7 @@ final class PairStats {
         return state.isUp() && present;
     }
 
-    synchronized PairState state() {
+    public synchronized PairState state() {
         return state;
     }
 
@@ -109,33 +109,33 @@ final class PairStats {
      * The share of time since first seen that the pair was up with both robots registered, 0..1
      * (whether it is so now, at the first instant when no time has passed).
      */
-    synchronized double upShare(long nowNs) {
+    public synchronized double upShare(long nowNs) {
         long up = upNs + (talking() ? nowNs - stateSinceNs : 0);
         long seen = nowNs - firstSeenNs;
         return seen <= 0 ? (talking() ? 1 : 0) : Math.min(1, (double) up / seen);
     }
 
-    synchronized long breaks() {
+    public synchronized long breaks() {
         return breaks;
     }
 
-    synchronized long resumes() {
+    public synchronized long resumes() {
         return resumes;
     }
 
-    long connections() {
+    public long connections() {
         return connections.sum();
     }
 
-    long bytesFirstToSecond() {
+    public long bytesFirstToSecond() {
         return bytesFirstToSecond.sum();
     }
 
-    long bytesSecondToFirst() {
+    public long bytesSecondToFirst() {
         return bytesSecondToFirst.sum();
     }
 
-    CloseReason lastClose() {
+    public CloseReason lastClose() {
         return lastClose;
     }
 
@@ -144,7 +144,7 @@ final class PairStats {
      * the previous sample that was at least {@link #RATE_SPAN_NS} ago, or since the pair was first
      * seen (so bytes moved before the first sample count too); 0 until a span has passed.
      */
-    synchronized double[] rates(long nowNs) {
+    public synchronized double[] rates(long nowNs) {
         long toSecond = bytesFirstToSecond.sum();
         long toFirst = bytesSecondToFirst.sum();
         if (nowNs - sampledNs >= RATE_SPAN_NS) {

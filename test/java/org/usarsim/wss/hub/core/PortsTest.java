@@ -1,31 +1,22 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
-import java.io.IOException;
-import java.net.InetAddress;
-import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.model.RobotPair;
 
-/** The hub's ports by key and their indexes by pair and by robot; ports that do not listen, on 127.0.0.1. */
+/** The core's ports by key and their indexes by pair and by robot: no sockets. */
 class PortsTest {
 
     private final Ports ports = new Ports();
-    private final List<WssPort> allocated = new ArrayList<>();
-
-    @AfterEach
-    void release() {
-        allocated.forEach(WssPort::release);
-    }
+    private int nextNumber = 40000;
 
     @Test
-    void indexesFollowAddAndRemove() throws IOException {
+    void indexesFollowAddAndRemove() {
         WssPort ab = add("A", "B", 5000);
         WssPort ba = add("B", "A", 5000);
         WssPort ac = add("A", "C", 5000);
@@ -57,19 +48,16 @@ class PortsTest {
     }
 
     @Test
-    void aSecondPortForOneKeyIsRefused() throws IOException {
+    void aSecondPortForOneKeyIsRefused() {
         WssPort first = add("A", "B", 5000);
-        WssPort second = WssPort.allocate(null, new PortKey("A", "B", 5000), InetAddress.getLoopbackAddress(), false);
-        allocated.add(second);
+        WssPort second = new WssPort(new PortKey("A", "B", 5000), nextNumber++);
         assertThrows(IllegalStateException.class, () -> ports.add(second));
         assertSame(first, ports.get(new PortKey("A", "B", 5000)));
         assertEquals(List.of(first), ports.of("B"));
     }
 
-    /** A port that holds its number without listening (no hub needed for that). */
-    private WssPort add(String from, String to, int targetPort) throws IOException {
-        WssPort port = WssPort.allocate(null, new PortKey(from, to, targetPort), InetAddress.getLoopbackAddress(), false);
-        allocated.add(port);
+    private WssPort add(String from, String to, int targetPort) {
+        WssPort port = new WssPort(new PortKey(from, to, targetPort), nextNumber++);
         ports.add(port);
         return port;
     }

@@ -1,15 +1,15 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.Closeable;
 import java.io.IOException;
 
 /** Closing what may already be closed, where a failure to close changes nothing. */
-final class Closing {
+public final class Closing {
 
     private Closing() {
     }
 
-    static void quietly(Closeable closeable) {
+    public static void quietly(Closeable closeable) {
         if (closeable == null) {
             return;
         }

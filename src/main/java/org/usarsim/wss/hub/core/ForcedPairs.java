@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.util.HashMap;
 import java.util.Map;
@@ -8,7 +8,7 @@ import org.usarsim.wss.model.RobotPair;
  * The pairs an operator forced down or up, and the rule that a forced state wins over the model's
  * verdict. A pair is forced by name, registered or not, and stays forced until released, through
  * robots leaving, coming back or being kicked out: an operator who forced "A:B down" meant it for
- * the run (docs/protocol.md section 7). Guarded by the hub's lock.
+ * the run (docs/protocol.md section 7). Part of the core: single-threaded.
  */
 final class ForcedPairs {
 

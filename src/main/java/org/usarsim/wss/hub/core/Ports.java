@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.util.ArrayList;
 import java.util.Collection;
@@ -14,7 +14,7 @@ import org.usarsim.wss.model.RobotPair;
 /**
  * The hub's WSS ports: by key, and indexed by robot pair and by robot, so that a break, a resume
  * or a robot's departure touches only the ports it concerns. The indexes are derived here and
- * nowhere else; every collection keeps the order the ports were added in. Guarded by the hub's lock.
+ * nowhere else; every collection keeps the order the ports were added in. Single-threaded, as the whole core.
  */
 final class Ports {
 

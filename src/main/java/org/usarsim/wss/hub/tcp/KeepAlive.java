@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.net.StandardSocketOptions;
@@ -15,7 +15,7 @@ import jdk.net.ExtendedSocketOptions;
  * the setting. The OS's defaults (two hours on Linux) are left where the setting is 0 or the
  * platform has no per-socket options.
  */
-final class KeepAlive {
+public final class KeepAlive {
 
     private static final Logger LOG = Logger.getLogger(KeepAlive.class.getName());
     /** Probes before the peer counts as dead (Linux allows up to 127). */
@@ -34,7 +34,7 @@ final class KeepAlive {
     }
 
     /** @param seconds within how long a dead peer is found (1 acts as 2, the least possible); 0 leaves the timing to the OS */
-    static KeepAlive within(int seconds) {
+    public static KeepAlive within(int seconds) {
         if (seconds == 0) {
             return new KeepAlive(0, 0, 0);
         }

@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -10,6 +10,9 @@ import java.util.List;
 import java.util.Locale;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
 import org.usarsim.wss.protocol.CommandParser;
@@ -22,11 +25,11 @@ import org.usarsim.wss.protocol.Replies;
  * reply written in one write, in order. Never sends anything unasked and never closes the
  * connection over a bad command. When the connection closes, the robot is deregistered.
  */
-final class ControlSession implements Runnable, LineSplitter.Sink {
+public final class ControlSession implements Runnable, LineSplitter.Sink, RobotSession {
 
     private static final Logger LOG = Logger.getLogger(ControlSession.class.getName());
 
-    private final Hub hub;
+    private final Switchboard hub;
     private final ControlListener listener;
     private final SocketChannel channel;
     private final InetAddress address;
@@ -35,7 +38,7 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
     /** The name this connection registered, once INIT succeeded. Only the session's thread touches it. */
     private String robot;
 
-    ControlSession(Hub hub, ControlListener listener, SocketChannel channel) {
+    ControlSession(Switchboard hub, ControlListener listener, SocketChannel channel) {
         this.hub = hub;
         this.listener = listener;
         this.channel = channel;
@@ -53,7 +56,8 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         return channel;
     }
 
-    void close() {
+    @Override
+    public void close() {
         Closing.quietly(channel);
     }
 
@@ -101,7 +105,7 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
         } catch (ProtocolException e) {
             reply = e.reply();
         } catch (RuntimeException e) {
-            hub.warnings.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
+            hub.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
             reply = Replies.error(Replies.INTERNAL_ERROR);
         }
         String answered = reply;
@@ -111,8 +115,8 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
 
     @Override
     public void lineTooLong() {
-        hub.warnings.warn(LOG, "over-long lines", address,
-                peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error");
+        hub.warn(LOG, "over-long lines", address,
+                peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error", null);
         send(Replies.error(Replies.LINE_TOO_LONG));
     }
 
@@ -161,7 +165,7 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
     private String dns(Command command) throws ProtocolException {
         String other = Arguments.robot(command);
         int targetPort = Arguments.targetPort(command);
-        Hub.DnsResult result = hub.dns(robot, other, targetPort);
+        HubCore.DnsResult result = hub.dns(robot, other, targetPort);
         switch (result.outcome()) {
             case OK:
                 return Replies.dns(other, result.port());
@@ -186,8 +190,8 @@ final class ControlSession implements Runnable, LineSplitter.Sink {
      */
     private String force(Command command) throws ProtocolException {
         if (!hub.isOperator(address)) {
-            hub.warnings.warn(LOG, "operator commands refused", address,
-                    peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators");
+            hub.warn(LOG, "operator commands refused", address,
+                    peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators", null);
             return Replies.error(Replies.NOT_AN_OPERATOR);
         }
         String first = Arguments.robot(command);

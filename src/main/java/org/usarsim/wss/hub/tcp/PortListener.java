@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -9,6 +9,7 @@ import java.nio.channels.SocketChannel;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.net.AcceptLoop;
 
 /**
@@ -19,14 +20,16 @@ import org.usarsim.wss.net.AcceptLoop;
  * its policy for failures are {@link AcceptLoop}'s; what is a WSS port's own (the close that waits
  * for accept() to return, the drain) is here.
  */
-final class PortListener extends AcceptLoop {
+public final class PortListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(PortListener.class.getName());
     private static final int BACKLOG = 128;
     private static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(1);
 
-    private final Hub hub;
+    private final Switchboard switchboard;
     private final WssPort port;
+    /** Which listening of the port this is (the core's epoch): a connection it accepts after the port stopped is refused. */
+    private final int epoch;
     /** The thread is inside accept(), where it holds the socket open. */
     private boolean inAccept;
     /** The hub's own connection that marks the end of what is drained (see {@link #beginDrain}). */
@@ -35,10 +38,11 @@ final class PortListener extends AcceptLoop {
     /** The thread has stopped: it will hand the hub no more connections. */
     private boolean ended;
 
-    PortListener(Hub hub, WssPort port, ServerSocketChannel channel) {
+    PortListener(Switchboard switchboard, WssPort port, int epoch, ServerSocketChannel channel) {
         super(channel, LOG, port.toString(), "a connection on " + port + " from");
-        this.hub = hub;
+        this.switchboard = switchboard;
         this.port = port;
+        this.epoch = epoch;
     }
 
     /** A blocking server socket bound to the address (port 0: the OS chooses). */
@@ -113,7 +117,7 @@ final class PortListener extends AcceptLoop {
     }
 
     /** Waits until the thread has stopped, or until the deadline (System.nanoTime()). */
-    void awaitEnd(long deadline) {
+    public void awaitEnd(long deadline) {
         if (!await(() -> ended, deadline)) {
             LOG.fine(() -> port + ": did not drain in time");
         }
@@ -177,18 +181,17 @@ final class PortListener extends AcceptLoop {
             Closing.quietly(server);
             return;
         }
-        hub.accepted(port, this, socket);
+        switchboard.accepted(port, epoch, socket);
     }
 
     @Override
     protected void acceptFailed(IOException e) {
         // Out of descriptors, say: the port still listens, so try again in a moment.
-        hub.warnings.warn(LOG, "failed accepts", server.socket().getInetAddress(),
-                port + ": accept failed, trying again: " + e);
+        switchboard.warn(LOG, "failed accepts", server.socket().getInetAddress(), port + ": accept failed, trying again: " + e, null);
     }
 
     @Override
     protected void warnDropped(InetAddress peer, String message, Throwable e) {
-        hub.warnings.warn(LOG, "connections not served", peer, message, e);
+        switchboard.warn(LOG, "connections not served", peer, message, e);
     }
 }

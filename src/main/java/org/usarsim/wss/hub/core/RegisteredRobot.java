@@ -1,12 +1,15 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.core;
 
 import java.net.InetAddress;
 import java.util.List;
 
-/** A registered robot: its name, the address its control connection came from, the ports it accepts on. */
-record RegisteredRobot(String name, InetAddress address, List<Integer> ports, ControlSession session) {
+/**
+ * A registered robot: its name, the address its control connection came from, the ports it
+ * accepts on, and that connection (to tell whose a departure is, and to close it on a kick).
+ */
+public record RegisteredRobot(String name, InetAddress address, List<Integer> ports, RobotSession session) {
 
-    RegisteredRobot {
+    public RegisteredRobot {
         ports = List.copyOf(ports);
     }
 

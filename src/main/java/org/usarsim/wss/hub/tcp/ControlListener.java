@@ -1,4 +1,4 @@
-package org.usarsim.wss.hub;
+package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
 import java.net.InetAddress;
@@ -12,7 +12,7 @@ import java.util.logging.Logger;
 import org.usarsim.wss.net.AcceptLoop;
 
 /** Accepts control connections and runs a {@link ControlSession} thread for each. */
-final class ControlListener extends AcceptLoop {
+public final class ControlListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
     /**
@@ -22,23 +22,23 @@ final class ControlListener extends AcceptLoop {
      */
     static final int BACKLOG = 1024;
 
-    private final Hub hub;
+    private final Switchboard switchboard;
     private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
     private final Thread thread;
 
     /** Binds at once, so that a port in use is known before anything else starts. */
-    ControlListener(Hub hub, InetSocketAddress address) throws IOException {
+    public ControlListener(Switchboard switchboard, InetSocketAddress address) throws IOException {
         super(AcceptLoop.bind(address, BACKLOG), LOG, "the control port", "the control connection from");
-        this.hub = hub;
+        this.switchboard = switchboard;
         this.thread = new Thread(this, "wss-control-listener");
         thread.setDaemon(true);
     }
 
-    int port() {
+    public int port() {
         return server.socket().getLocalPort();
     }
 
-    void start() {
+    public void start() {
         thread.start();
     }
 
@@ -47,7 +47,7 @@ final class ControlListener extends AcceptLoop {
      * socket listening until it returns: close waits for it (at most a second), so that the port
      * is free when close returns.
      */
-    void close() {
+    public void close() {
         Closing.quietly(server);
         sessions.forEach(ControlSession::close);
         if (thread.isAlive() && thread != Thread.currentThread()) {
@@ -59,7 +59,7 @@ final class ControlListener extends AcceptLoop {
         }
     }
 
-    List<SocketChannel> channels() {
+    public List<SocketChannel> channels() {
         return sessions.stream().map(ControlSession::channel).toList();
     }
 
@@ -69,7 +69,7 @@ final class ControlListener extends AcceptLoop {
 
     @Override
     protected void serve(SocketChannel channel) {
-        ControlSession session = new ControlSession(hub, this, channel);
+        ControlSession session = new ControlSession(switchboard, this, channel);
         sessions.add(session);
         if (!server.isOpen()) {
             session.close();
@@ -91,6 +91,6 @@ final class ControlListener extends AcceptLoop {
 
     @Override
     protected void warnDropped(InetAddress peer, String message, Throwable e) {
-        hub.warnings.warn(LOG, "connections not served", peer, message, e);
+        switchboard.warn(LOG, "connections not served", peer, message, e);
     }
 }

@@ -1,0 +1,103 @@
+package org.usarsim.wss.hub.core;
+
+import java.net.InetAddress;
+import java.util.List;
+import java.util.logging.Level;
+
+/**
+ * What happened in the hub, as data: the core appends these to {@link Changes} in the order the
+ * changes happened, and the hub delivers them in that order after its lock ({@link #deliverTo}).
+ */
+public sealed interface HubEvent {
+
+    void deliverTo(EventSink sink);
+
+    record Registered(String robot, String address, List<Integer> ports) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.robotRegistered(robot, address, ports);
+        }
+    }
+
+    record Deregistered(String robot) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.robotDeregistered(robot);
+        }
+    }
+
+    record PortAllocated(PortKey key, int number, boolean listening) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.portAllocated(key.from(), key.to(), key.targetPort(), number, listening);
+        }
+    }
+
+    record PortListening(PortKey key, int number, boolean listening) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.portListening(key.from(), key.to(), key.targetPort(), number, listening);
+        }
+    }
+
+    record PortForgotten(PortKey key, int number) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.portForgotten(key.from(), key.to(), key.targetPort(), number);
+        }
+    }
+
+    record PairForced(String first, String second, boolean up) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.pairForced(first, second, up);
+        }
+    }
+
+    record PairReleased(String first, String second) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.pairReleased(first, second);
+        }
+    }
+
+    record Established(PortKey key) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.connectionEstablished(key.from(), key.to(), key.targetPort());
+        }
+    }
+
+    record Terminated(PortKey key) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.connectionTerminated(key.from(), key.to(), key.targetPort());
+        }
+    }
+
+    /** The model's: a pair out of range. */
+    record OutOfRange(String from, String to, double strength, double distance) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.connectionOutOfRange(from, to, strength, distance);
+        }
+    }
+
+    /** The model's: a pair in range again. */
+    record InRange(String from, String to) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.connectionInRange(from, to);
+        }
+    }
+
+    /** The model's: a robot out of battery. */
+    record OutOfBattery(String robot) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.robotOutOfBattery(robot);
+        }
+    }
+
+    /** A line of the hub's log about its own changes. */
+    record Said(Level level, String line) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.say(level, line);
+        }
+    }
+
+    /** A WARNING a client caused. */
+    record Warned(String category, InetAddress client, String message) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.warn(category, client, message);
+        }
+    }
+}

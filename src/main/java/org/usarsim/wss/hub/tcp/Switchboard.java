@@ -1,0 +1,60 @@
+package org.usarsim.wss.hub.tcp;
+
+import java.net.InetAddress;
+import java.nio.channels.SocketChannel;
+import java.util.List;
+import java.util.OptionalDouble;
+import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.WssPort;
+
+/**
+ * What the socket classes ask of the hub, and all they know of it: the control sessions' commands,
+ * a connection accepted on a WSS port, a link's start and end, and the limited WARNINGs.
+ */
+public interface Switchboard {
+
+    // ---- control connections ----
+
+    /** INIT: false when the name stays taken. */
+    boolean register(String name, InetAddress address, List<Integer> ports, ControlSession session);
+
+    /** The control connection closed: the robot leaves. */
+    void deregister(String name, ControlSession session);
+
+    /** Whether a control connection from this address may use the operator command (wss.operators). */
+    boolean isOperator(InetAddress address);
+
+    /** GETSS: the model's strength; empty when {@code to} is not registered. */
+    OptionalDouble signalStrength(String from, String to);
+
+    /** DNS. */
+    HubCore.DnsResult dns(String from, String to, int targetPort);
+
+    /** REVERSEDNS: the source robot of the link whose outgoing port leads to {@code asker}, or null. */
+    String reverseDns(String asker, int port);
+
+    /** FORCE ... {State Down|Up}. */
+    void force(String robotA, String robotB, Force force);
+
+    /** FORCE ... {State Model}. */
+    void release(String robotA, String robotB);
+
+    // ---- WSS ports and links ----
+
+    /** A listener of the port's {@code epoch} accepted a connection: forward it, or close it and say why. */
+    void accepted(WssPort port, int epoch, SocketChannel socket);
+
+    /** The link reached its target; returns once that is delivered to the listeners, so its data follows it. */
+    void established(Link link);
+
+    /** The link's thread is ending. */
+    void linkEnded(Link link, boolean wasEstablished);
+
+    /** How control connections and links find a peer that vanished. */
+    KeepAlive keepAlive();
+
+    /** A WARNING a client caused, written to {@code log} within the limit per client (docs/reliability.md); {@code cause} may be null. */
+    void warn(Logger log, String category, InetAddress client, String message, Throwable cause);
+}

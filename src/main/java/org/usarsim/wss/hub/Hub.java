@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.Comparator;
@@ -336,7 +337,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
 
     /**
      * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
-     * first). A new port's number is bound first, without the lock, then allocated under it.
+     * first). A new port's number and its listening socket are bound first, without the lock,
+     * then allocated under it: a port that cannot listen is not allocated (Could.Not.Allocate.Port).
      * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
      */
     @Override
@@ -345,25 +347,30 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
         }
         boolean allowed = modelAllows(from, to);
-        HubCore.DnsResult result = dns(from, to, targetPort, allowed, null);
+        HubCore.DnsResult result = dns(from, to, targetPort, allowed, null, null);
         if (result.outcome() != HubCore.DnsOutcome.NEEDS_NUMBER) {
             return result;
         }
-        SocketChannel placeholder;
+        SocketChannel placeholder = null;
+        ServerSocketChannel listening;
         try {
             placeholder = PortSockets.hold(config.bindAddress());
+            listening = PortSockets.bindListening(config.bindAddress(), PortSockets.numberOf(placeholder));
         } catch (IOException e) {
+            Closing.quietly(placeholder);
             step(out -> core.couldNotAllocate(result.key(), e.getMessage(), out));
             return new HubCore.DnsResult(HubCore.DnsOutcome.NO_PORT, -1, result.key(), false);
         }
-        HubCore.DnsResult allocated = dns(from, to, targetPort, allowed, placeholder);
+        HubCore.DnsResult allocated = dns(from, to, targetPort, allowed, placeholder, listening);
         if (!allocated.numberUsed()) {
-            Closing.quietly(placeholder); // another DNS allocated the port meanwhile, or the robots left
+            Closing.quietly(listening); // another DNS allocated the port meanwhile, or the robots left
+            Closing.quietly(placeholder);
         }
         return allocated;
     }
 
-    private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, SocketChannel placeholder) {
+    private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, SocketChannel placeholder,
+            ServerSocketChannel listening) {
         Changes out = new Changes();
         HubCore.DnsResult result;
         Applying applying;
@@ -372,7 +379,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             result = core.dns(from, to, targetPort, allowed, number, clock.getAsLong(), out);
             if (result.numberUsed()) {
                 WssPort port = core.port(result.key());
-                sockets.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder));
+                sockets.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder, listening));
             }
             applying = taken(out);
         }

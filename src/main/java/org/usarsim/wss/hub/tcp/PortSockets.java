@@ -31,11 +31,14 @@ public final class PortSockets {
     private final SocketChannel placeholder;
     /** The listener now, or null. Read by a departure's drain too. */
     private volatile PortListener listener;
+    /** A listening socket bound with the number, for the first {@link #listen}; null once used or when there is none. */
+    private ServerSocketChannel bound;
 
-    private PortSockets(WssPort port, InetAddress bindAddress, SocketChannel placeholder) {
+    private PortSockets(WssPort port, InetAddress bindAddress, SocketChannel placeholder, ServerSocketChannel bound) {
         this.port = port;
         this.bindAddress = bindAddress;
         this.placeholder = placeholder;
+        this.bound = bound;
     }
 
     /** Binds a new OS-chosen number and holds it; {@link #adopt} then gives it its core port. */
@@ -56,9 +59,25 @@ public final class PortSockets {
         return placeholder.socket().getLocalPort();
     }
 
-    /** The sockets of a port the core allocated with the placeholder's number. */
-    public static PortSockets adopt(WssPort port, InetAddress bindAddress, SocketChannel placeholder) {
-        return new PortSockets(port, bindAddress, placeholder);
+    /**
+     * A listening socket on a held number, bound beside its placeholder: a DNS binds it with the
+     * number, so that a port that cannot listen (out of descriptors, say) is never allocated.
+     */
+    public static ServerSocketChannel bindListening(InetAddress bindAddress, int number) throws IOException {
+        return PortListener.bind(new InetSocketAddress(bindAddress, number));
+    }
+
+    /**
+     * The sockets of a port the core allocated with the placeholder's number, and the listening
+     * socket bound with it, which the port's first {@link #listen} uses (closed at once when the
+     * port does not listen).
+     */
+    public static PortSockets adopt(WssPort port, InetAddress bindAddress, SocketChannel placeholder, ServerSocketChannel bound) {
+        if (!port.listening()) {
+            Closing.quietly(bound);
+            bound = null;
+        }
+        return new PortSockets(port, bindAddress, placeholder, bound);
     }
 
     /**
@@ -67,7 +86,8 @@ public final class PortSockets {
      */
     public void listen(Switchboard switchboard, int epoch) throws IOException {
         stopListening();
-        ServerSocketChannel channel = PortListener.bind(new InetSocketAddress(bindAddress, port.number));
+        ServerSocketChannel channel = bound != null ? bound : bindListening(bindAddress, port.number);
+        bound = null;
         PortListener started = new PortListener(switchboard, port, epoch, channel);
         listener = started;
         started.start();
@@ -85,6 +105,7 @@ public final class PortSockets {
     /** Stops listening and gives the number back to the OS. */
     public void release() {
         stopListening();
+        Closing.quietly(bound);
         Closing.quietly(placeholder);
     }
 

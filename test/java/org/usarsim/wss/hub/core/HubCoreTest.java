@@ -1,0 +1,224 @@
+package org.usarsim.wss.hub.core;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.InetAddress;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.model.RobotPair;
+
+/** The hub's rules without sockets, threads or waiting: each step's changes read as data, the time moved by hand. */
+class HubCoreTest {
+
+    private static final long SECOND = TimeUnit.SECONDS.toNanos(1);
+    private static final InetAddress LOOPBACK = InetAddress.getLoopbackAddress();
+    private static final RobotPair AB = RobotPair.of("A", "B");
+
+    private final HubCore core = new HubCore("TestModel", true, 600, 1000);
+    private long now = 1_000 * SECOND;
+
+    private final RobotSession sessionA = () -> { };
+    private final RobotSession sessionB = () -> { };
+
+    @Test
+    void aDnsAllocatesAListeningPortWithTheNumberTheHubBound() {
+        registerBoth();
+        Changes out = new Changes();
+        HubCore.DnsResult asked = core.dns("A", "B", 0, true, -1, now, out);
+        assertEquals(HubCore.DnsOutcome.NEEDS_NUMBER, asked.outcome());
+        assertEquals(new PortKey("A", "B", 6000), asked.key());
+        assertTrue(out.events().isEmpty() && out.portActions().isEmpty(), "nothing happens before the number is bound");
+
+        HubCore.DnsResult allocated = core.dns("A", "B", 0, true, 40001, now, out);
+        assertEquals(HubCore.DnsOutcome.OK, allocated.outcome());
+        assertEquals(40001, allocated.port());
+        assertTrue(allocated.numberUsed());
+        assertEquals(List.of(Changes.PortWork.LISTEN), works(out));
+        assertTrue(out.events().contains(new HubEvent.PortAllocated(asked.key(), 40001, true)), out.events().toString());
+
+        Changes again = new Changes();
+        HubCore.DnsResult second = core.dns("A", "B", 6000, true, 40002, now, again);
+        assertEquals(40001, second.port(), "the same DNS, the same port");
+        assertFalse(second.numberUsed(), "the hub gives the second number back");
+        assertTrue(again.portActions().isEmpty());
+    }
+
+    @Test
+    void aBreakStopsThePortAndClosesItsConnectionsAndAnOldListenerIsRefusedAfterTheResume() {
+        WssPort port = registeredPort();
+        int firstEpoch = port.epoch();
+        FakeConnection link = new FakeConnection(50001);
+        assertNull(core.commit(port, firstEpoch, LOOPBACK, true, link));
+
+        Changes broke = new Changes();
+        assertTrue(core.breakPair(AB, now, broke));
+        assertEquals(List.of(Changes.PortWork.STOP), works(broke));
+        assertEquals(List.of(new Changes.Close(link, CloseReason.OUT_OF_RANGE)), broke.closes());
+        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now).refusal());
+
+        Changes resumed = new Changes();
+        assertTrue(core.resumePair(AB, now, resumed));
+        assertEquals(List.of(Changes.PortWork.LISTEN), works(resumed));
+        assertEquals(firstEpoch + 1, resumed.portActions().get(0).epoch(), "a new listener, of a new epoch");
+        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now).refusal(),
+                "a connection the stopped listener accepted late is refused");
+        assertNull(core.admit(port, port.epoch(), LOOPBACK, true, now).refusal());
+        assertEquals("TestModel does not allow A -> B now",
+                core.admit(port, port.epoch(), LOOPBACK, false, now).refusal(), "the model's answer counts");
+    }
+
+    @Test
+    void aForceWinsOverTheModelAndItsReleaseGivesThePairBack() {
+        WssPort port = registeredPort();
+        Changes broke = new Changes();
+        core.breakPair(AB, now, broke);
+
+        Changes up = new Changes();
+        core.force(AB, Force.UP, now, up);
+        assertEquals(new HubEvent.PairForced("A", "B", true), up.events().get(0), "the force comes before what it does");
+        assertEquals(List.of(Changes.PortWork.LISTEN), works(up));
+        assertNull(core.admit(port, port.epoch(), LOOPBACK, false, now).refusal(), "forced up: whatever the model says");
+
+        Changes released = new Changes();
+        core.release(AB, true, true, now, released);
+        assertEquals(new HubEvent.PairReleased("A", "B"), released.events().get(0));
+        assertEquals(List.of(Changes.PortWork.STOP), works(released), "the model's last break counts again");
+        assertNull(core.forced(AB));
+    }
+
+    @Test
+    void thePortsOfARobotThatLeftAreForgottenOnlyOnceThePortMemoryHasPassed() {
+        WssPort port = registeredPort();
+        List<WssPort> draining = core.beginLeaving("A", sessionA);
+        assertEquals(List.of(port), draining, "its listening ports drain first");
+        Changes left = new Changes();
+        core.left("A", sessionA, now, left);
+        assertTrue(left.events().contains(new HubEvent.Deregistered("A")));
+        assertEquals(List.of(Changes.PortWork.STOP), works(left), "the port stops listening, its number kept");
+        assertEquals(List.of(new Changes.ForgetLater("A", 600 * SECOND)), left.forgetLater());
+
+        Changes early = new Changes();
+        core.forgetIfGone("A", now + 599 * SECOND, early);
+        assertTrue(early.portActions().isEmpty(), "not yet");
+
+        Changes late = new Changes();
+        core.forgetIfGone("A", now + 600 * SECOND, late);
+        assertEquals(List.of(Changes.PortWork.RELEASE), works(late));
+        assertTrue(late.events().contains(new HubEvent.PortForgotten(port.key, port.number)));
+        assertTrue(late.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "forgot 1 WSS port of A, gone for 600 s")),
+                late.events().toString());
+        assertNull(core.port(port.key));
+    }
+
+    @Test
+    void aRobotBackBeforeThePortMemoryPassedKeepsItsPortAndListensAgain() {
+        WssPort port = registeredPort();
+        core.beginLeaving("A", sessionA);
+        core.left("A", sessionA, now, new Changes());
+        Changes back = new Changes();
+        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now + 10 * SECOND, back));
+        assertEquals(List.of(Changes.PortWork.LISTEN), works(back));
+        Changes later = new Changes();
+        core.forgetIfGone("A", now + 600 * SECOND, later);
+        assertTrue(later.portActions().isEmpty(), "back: nothing is forgotten");
+        assertEquals(port, core.port(port.key));
+    }
+
+    @Test
+    void aTakenNameSaysWhetherItsHolderIsLeaving() {
+        registerBoth();
+        RobotSession other = () -> { };
+        assertEquals(HubCore.NameCheck.TAKEN, core.register(robot("A", other, 5000), now, new Changes()));
+        core.beginLeaving("A", sessionA);
+        assertEquals(HubCore.NameCheck.TAKEN_BY_LEAVING, core.register(robot("A", other, 5000), now, new Changes()));
+    }
+
+    @Test
+    void theTimeUpOfAPairFollowsTheMovedClock() {
+        registeredPort();
+        core.breakPair(AB, now + 30 * SECOND, new Changes());
+        PairStats stats = core.pairStats().get(0);
+        assertEquals(PairState.BROKEN, stats.state());
+        assertEquals(0.5, stats.upShare(now + 60 * SECOND), 1e-9, "up 30 s of the 60 s since first seen");
+    }
+
+    @Test
+    void aKickGivesThePortsBackClosesTheLinksAndTheControlConnection() {
+        WssPort port = registeredPort();
+        FakeConnection link = new FakeConnection(50002);
+        core.commit(port, port.epoch(), LOOPBACK, true, link);
+        Changes kicked = new Changes();
+        core.kick("B", now, kicked);
+        assertEquals(List.of(Changes.PortWork.RELEASE), works(kicked));
+        assertEquals(List.of(new Changes.Close(link, CloseReason.KICKED)), kicked.closes());
+        assertEquals(List.of(sessionB), kicked.sessionsToClose());
+        assertFalse(core.isRegistered("B"));
+    }
+
+    @Test
+    void reverseDnsFindsTheSourceByTheOutgoingPort() {
+        WssPort port = registeredPort();
+        core.commit(port, port.epoch(), LOOPBACK, true, new FakeConnection(50003));
+        assertEquals("A", core.reverseDns("B", 50003));
+        assertNull(core.reverseDns("B", 50004));
+    }
+
+    private void registerBoth() {
+        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now, new Changes()));
+        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("B", sessionB, 6000), now, new Changes()));
+    }
+
+    private WssPort registeredPort() {
+        registerBoth();
+        HubCore.DnsResult result = core.dns("A", "B", 0, true, 40001, now, new Changes());
+        WssPort port = core.port(result.key());
+        assertNotNull(port);
+        assertTrue(port.listening());
+        return port;
+    }
+
+    private static RegisteredRobot robot(String name, RobotSession session, int port) {
+        return new RegisteredRobot(name, LOOPBACK, List.of(port), session);
+    }
+
+    private static List<Changes.PortWork> works(Changes changes) {
+        List<Changes.PortWork> works = new ArrayList<>();
+        changes.portActions().forEach(action -> works.add(action.work()));
+        return works;
+    }
+
+    private static final class FakeConnection implements Connection {
+        private final int outgoingPort;
+        private boolean closed;
+
+        FakeConnection(int outgoingPort) {
+            this.outgoingPort = outgoingPort;
+        }
+
+        @Override
+        public int outgoingPort() {
+            return outgoingPort;
+        }
+
+        @Override
+        public boolean isEstablished() {
+            return true;
+        }
+
+        @Override
+        public boolean isClosed() {
+            return closed;
+        }
+
+        @Override
+        public void close(CloseReason reason) {
+            closed = true;
+        }
+    }
+}

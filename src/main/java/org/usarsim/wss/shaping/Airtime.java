@@ -1,0 +1,250 @@
+package org.usarsim.wss.shaping;
+
+import java.util.ArrayDeque;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The radios' ledger: when each robot's radio is on the air. Every robot has one radio with one
+ * second of airtime per second, shared by all its links, sending and receiving alike: n bytes
+ * on a link at rate R keep the sender's radio and the receiver's radio busy for n x 8 / R
+ * seconds (half duplex), starting when both are free. A relay that receives and sends again pays
+ * twice.
+ *
+ * <p>A link direction asks for its bytes' airtime through its {@link Hop}, one {@link Grant} at
+ * a time, each of at most {@link #QUANTUM_NS} of airtime. Reservations on a radio queue up one
+ * after the other, so when every busy direction keeps at most one grant waiting (as
+ * {@link ShapedFlow} does), the directions sharing a radio take turns in equal slices of TIME,
+ * not of bytes: a slow far link and a fast near one each get their share, and neither starves.
+ * A radio that has been idle starts the next grant at once; idle time is not saved up.
+ *
+ * <p>{@link #unshared()} is the ledger without a shared medium: each hop has its own radio, so
+ * each direction is limited only by its own rate.
+ *
+ * <p>Thread-safe (one lock for the whole ledger, held for a few arithmetic steps per grant) and
+ * pure in time: it never reads a clock; every method is given the time, {@code nowNs} as
+ * {@link System#nanoTime()} says it (any long, negative ones included).
+ */
+public final class Airtime {
+
+    /**
+     * The most airtime one grant takes, 2 ms: a few kilobytes at 802.11g rates (13,500 bytes at
+     * 54 Mbit/s, 1,500 at 6 Mbit/s). Short enough that directions sharing a radio interleave
+     * finely, long enough that a link thread wakes at most about 500 times a second per direction.
+     */
+    public static final long QUANTUM_NS = 2_000_000;
+
+    /** The window over which {@link #inUse} measures: the last second. */
+    public static final long WINDOW_NS = 1_000_000_000;
+
+    /** The ledger's resolution: the window is kept as 100 slices of 10 ms. */
+    private static final long SLICE_NS = 10_000_000;
+    private static final int SLICES = (int) (WINDOW_NS / SLICE_NS);
+
+    /**
+     * Airtime granted to one direction: {@code bytes} (at least 1) are on the air from
+     * {@code startNs} (never before the time asked) to {@code endNs}; they may reach the target
+     * at {@code endNs} plus the link's delay.
+     */
+    public record Grant(int bytes, long startNs, long endNs) {
+    }
+
+    private final boolean shared;
+    private final Map<String, Radio> radios = new HashMap<>();
+
+    private Airtime(boolean shared) {
+        this.shared = shared;
+    }
+
+    /** A ledger where each robot's radio is shared by all its links ({@code wss.shaping.airtime=true}). */
+    public static Airtime shared() {
+        return new Airtime(true);
+    }
+
+    /** A ledger where each direction only has its own rate ({@code wss.shaping.airtime=false}). */
+    public static Airtime unshared() {
+        return new Airtime(false);
+    }
+
+    /** Whether robots' radios are shared by their links. */
+    public boolean isShared() {
+        return shared;
+    }
+
+    /**
+     * The way over the air for one direction of one link, from robot {@code from} to robot
+     * {@code to}; {@link Hop#close()} it when the link ends.
+     */
+    public synchronized Hop open(String from, String to, long nowNs) {
+        if (!shared) {
+            Radio own = new Radio(nowNs, false);
+            return new Hop(own, own);
+        }
+        radios.values().removeIf(radio -> radio.hops == 0 && nowNs - radio.busyUntil >= WINDOW_NS);
+        Radio sender = radios.computeIfAbsent(from, name -> new Radio(nowNs, true));
+        Radio receiver = radios.computeIfAbsent(to, name -> new Radio(nowNs, true));
+        sender.hops++;
+        if (receiver != sender) {
+            receiver.hops++;
+        }
+        return new Hop(sender, receiver);
+    }
+
+    /**
+     * The fraction (0 to 1) of the last second that {@code robot}'s radio was on the air, sending
+     * or receiving: 0 for a robot it does not know; NaN for an {@link #unshared()} ledger, where
+     * robots have no shared radio to measure.
+     */
+    public synchronized double inUse(String robot, long nowNs) {
+        if (!shared) {
+            return Double.NaN;
+        }
+        Radio radio = radios.get(robot);
+        return radio == null ? 0 : radio.inUse(nowNs);
+    }
+
+    /** One direction of one link: the radio it sends from and the one it sends to. */
+    public final class Hop {
+        private final Radio sender;
+        private final Radio receiver;
+        private boolean closed;
+
+        private Hop(Radio sender, Radio receiver) {
+            this.sender = sender;
+            this.receiver = receiver;
+        }
+
+        /**
+         * Airtime for up to {@code wantedBytes} (at least 1) at {@code bitsPerSecond}: as many as
+         * fit in {@link #QUANTUM_NS} (at least 1 byte), starting when both radios are free and not
+         * before {@code nowNs}. Both radios are then busy until the grant's end.
+         *
+         * @throws IllegalStateException once the hop is closed
+         */
+        public Grant grant(long bitsPerSecond, long wantedBytes, long nowNs) {
+            if (wantedBytes < 1) {
+                throw new IllegalArgumentException("a grant is for 1 byte or more, not " + wantedBytes);
+            }
+            if (bitsPerSecond < 1 || bitsPerSecond > Bitrate.MAX) {
+                throw new IllegalArgumentException("a rate from 1 to " + Bitrate.MAX + " bit/s, not " + bitsPerSecond);
+            }
+            synchronized (Airtime.this) {
+                if (closed) {
+                    throw new IllegalStateException("this hop is closed");
+                }
+                long most = Math.max(1, Bitrate.bytesIn(QUANTUM_NS, bitsPerSecond));
+                int bytes = (int) Math.min(Math.min(wantedBytes, most), Integer.MAX_VALUE);
+                long start = latest(nowNs, latest(sender.busyUntil, receiver.busyUntil));
+                long end = start + Bitrate.nanos(bytes, bitsPerSecond);
+                sender.reserve(start, end, nowNs);
+                if (receiver != sender) {
+                    receiver.reserve(start, end, nowNs);
+                }
+                return new Grant(bytes, start, end);
+            }
+        }
+
+        /** Ends the hop: its robots' radios are forgotten once no hop uses them and their last second was idle. */
+        public void close() {
+            synchronized (Airtime.this) {
+                if (!closed) {
+                    closed = true;
+                    sender.hops--;
+                    if (receiver != sender) {
+                        receiver.hops--;
+                    }
+                }
+            }
+        }
+    }
+
+    private static long latest(long a, long b) {
+        return a - b >= 0 ? a : b;
+    }
+
+    /**
+     * One radio: when it is free again, and (for a shared radio) how much of the last second it
+     * was busy. Reserved airtime not yet past is kept as intervals (adjacent ones merged, so a busy
+     * radio has one or two); what is past is added up in 10 ms slices of the last second.
+     */
+    private static final class Radio {
+        long busyUntil;
+        int hops;
+        private final boolean measured;
+        private final ArrayDeque<long[]> ahead = new ArrayDeque<>();
+        private long settledNs;
+        private final long[] sliceIndex = new long[SLICES];
+        private final long[] sliceBusy = new long[SLICES];
+
+        Radio(long nowNs, boolean measured) {
+            this.busyUntil = nowNs;
+            this.settledNs = nowNs;
+            this.measured = measured;
+            Arrays.fill(sliceIndex, Long.MIN_VALUE);
+        }
+
+        void reserve(long start, long end, long nowNs) {
+            busyUntil = end;
+            if (!measured) {
+                return;
+            }
+            settle(nowNs);
+            long[] last = ahead.peekLast();
+            if (last != null && last[1] == start) {
+                last[1] = end;
+            } else {
+                ahead.addLast(new long[] {start, end});
+            }
+        }
+
+        double inUse(long nowNs) {
+            settle(nowNs);
+            long newest = Math.floorDiv(nowNs, SLICE_NS);
+            long oldest = newest - SLICES + 1;
+            long busy = 0;
+            for (long index = oldest; index <= newest; index++) {
+                int slot = (int) Math.floorMod(index, SLICES);
+                if (sliceIndex[slot] == index) {
+                    busy += sliceBusy[slot];
+                }
+            }
+            double span = nowNs - oldest * SLICE_NS;
+            return Math.min(1, busy / span);
+        }
+
+        /** Moves the reserved airtime before {@code nowNs} into the slices. */
+        private void settle(long nowNs) {
+            if (nowNs - settledNs <= 0) {
+                return;
+            }
+            while (!ahead.isEmpty()) {
+                long[] interval = ahead.peekFirst();
+                long from = latest(interval[0], settledNs);
+                long to = interval[1] - nowNs <= 0 ? interval[1] : nowNs;
+                if (to - from > 0) {
+                    count(from, to);
+                }
+                if (interval[1] - nowNs > 0) {
+                    break;
+                }
+                ahead.pollFirst();
+            }
+            settledNs = nowNs;
+        }
+
+        private void count(long from, long to) {
+            long start = latest(from, to - WINDOW_NS - SLICE_NS);
+            for (long index = Math.floorDiv(start, SLICE_NS); index * SLICE_NS - to < 0; index++) {
+                long sliceStart = index * SLICE_NS;
+                long overlap = Math.min(to, sliceStart + SLICE_NS) - Math.max(start, sliceStart);
+                int slot = (int) Math.floorMod(index, SLICES);
+                if (sliceIndex[slot] != index) {
+                    sliceIndex[slot] = index;
+                    sliceBusy[slot] = 0;
+                }
+                sliceBusy[slot] += overlap;
+            }
+        }
+    }
+}

@@ -1,0 +1,128 @@
+package org.usarsim.wss.shaping;
+
+import java.math.BigDecimal;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.stream.Collectors;
+
+/**
+ * Which rate a pair's link runs at for its signal strength: steps {@code dBm:rate} from the
+ * strongest signal to the weakest, as {@code wss.shaping.rates} writes them
+ * ({@code -72:54M,-73:48M,...,-87:6M}). A strength at or above a step's dBm gets that step's rate
+ * (the first such step); a strength below the last step keeps the last step's rate, until the
+ * model breaks the pair. A strength the model cannot say (NaN) gets the lowest rate of the table.
+ * Immutable.
+ */
+public final class RateTable {
+
+    /** One step: a strength at or above {@code dBm} runs at {@code bitsPerSecond}. */
+    private record Step(double dBm, long bitsPerSecond) {
+        @Override
+        public String toString() {
+            return BigDecimal.valueOf(dBm).stripTrailingZeros().toPlainString() + ":" + Bitrate.toText(bitsPerSecond);
+        }
+    }
+
+    /**
+     * The 802.11g receive sensitivities of a Cisco Aironet 1240AG access point's data sheet: the
+     * weakest signal at which each OFDM rate is received (docs/shaping.md says where they come from).
+     */
+    public static final RateTable DEFAULT = parse("-72:54M,-73:48M,-77:36M,-81:24M,-83:18M,-85:12M,-86:9M,-87:6M");
+
+    private final List<Step> steps;
+    private final long lowest;
+
+    private RateTable(List<Step> steps) {
+        this.steps = List.copyOf(steps);
+        this.lowest = steps.stream().mapToLong(Step::bitsPerSecond).min().orElseThrow();
+    }
+
+    /**
+     * The table {@code text} writes: comma-separated steps {@code dBm:rate}, whitespace around
+     * items and around the colon ignored, dBm strictly decreasing from step to step, each rate as
+     * {@link Bitrate#parse} reads it.
+     *
+     * @throws IllegalArgumentException {@code "<text>": <what is wrong>}, for the caller to prefix with its key
+     */
+    public static RateTable parse(String text) {
+        String whole = text == null ? "" : text;
+        if (whole.isBlank()) {
+            throw refused(whole, "no steps; give dBm:rate steps from the strongest signal to the weakest, e.g. -72:54M,-87:6M");
+        }
+        String[] items = whole.split(",", -1);
+        List<Step> steps = new ArrayList<>();
+        for (int i = 0; i < items.length; i++) {
+            String item = items[i].strip();
+            String which = "step " + (i + 1);
+            if (item.isEmpty()) {
+                throw refused(whole, which + " is empty");
+            }
+            String[] parts = item.split(":", -1);
+            if (parts.length != 2) {
+                throw refused(whole, which + " (" + item + ") is not dBm:rate");
+            }
+            String dBm = parts[0].strip();
+            String rate = parts[1].strip();
+            if (!dBm.matches("[+-]?\\d+(\\.\\d+)?")) {
+                throw refused(whole, which + " (" + item + "): " + (dBm.isEmpty() ? "the dBm is missing" : dBm + " is not a number of dBm"));
+            }
+            String rateProblem = Bitrate.problem(rate);
+            if (rateProblem != null) {
+                throw refused(whole, which + " (" + item + "): " + (rate.isEmpty() ? "the rate is missing" : rate + " " + rateProblem));
+            }
+            Step step = new Step(Double.parseDouble(dBm), Bitrate.parse(rate));
+            if (!steps.isEmpty() && step.dBm() >= steps.get(steps.size() - 1).dBm()) {
+                throw refused(whole, "steps must go from the strongest to the weakest signal");
+            }
+            steps.add(step);
+        }
+        return new RateTable(steps);
+    }
+
+    private static IllegalArgumentException refused(String text, String problem) {
+        return new IllegalArgumentException("\"" + text + "\": " + problem);
+    }
+
+    /**
+     * The rate in bit/s for a signal of {@code dBm}: the first step whose dBm it reaches, else the
+     * last step's rate; the lowest rate for NaN (a model that cannot say). +Infinity (two robots in
+     * the same place) reaches the first step, and so does the Noop model's 0 dBm in the default table.
+     */
+    public long rateFor(double dBm) {
+        if (Double.isNaN(dBm)) {
+            return lowest;
+        }
+        for (Step step : steps) {
+            if (dBm >= step.dBm()) {
+                return step.bitsPerSecond();
+            }
+        }
+        return steps.get(steps.size() - 1).bitsPerSecond();
+    }
+
+    /** The lowest rate of the table, in bit/s: what a NaN strength gets. */
+    public long lowestRate() {
+        return lowest;
+    }
+
+    /** The first step's rate, in bit/s: what a strong signal gets. */
+    public long topRate() {
+        return steps.get(0).bitsPerSecond();
+    }
+
+    /** The table as {@link #parse} reads it, canonical: {@code -72:54M,-73:48M,...}. */
+    @Override
+    public String toString() {
+        return steps.stream().map(Step::toString).collect(Collectors.joining(","));
+    }
+
+    @Override
+    public boolean equals(Object other) {
+        return other instanceof RateTable table && table.steps.equals(steps);
+    }
+
+    @Override
+    public int hashCode() {
+        return steps.hashCode();
+    }
+}

@@ -1,0 +1,199 @@
+package org.usarsim.wss.shaping;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.WritableByteChannel;
+import java.util.ArrayDeque;
+
+/**
+ * One direction of one shaped link: the bytes read from one robot and not yet written to the
+ * other, and when each may be written. The link's thread drives it, telling it the time at every
+ * step: it {@link #accept}s what it read (at most {@link #room()}), {@link #writeTo}s the target
+ * what is due, and waits at most {@link #nanosUntilNext} before asking again.
+ *
+ * <p>Bytes go on the air in order, lazily: whenever the direction's last grant has started, the
+ * bytes not yet on the air ask its {@link Airtime.Hop} for the next grant, at the rate the link
+ * has at that moment, so a rate change reaches every byte not yet on the air at the next step
+ * (a grant already reserved, at most {@link Airtime#QUANTUM_NS} of airtime, keeps its rate). So
+ * a busy direction holds one grant on the air and at most one more waiting, and directions
+ * sharing a radio take turns. Bytes may be written at their grant's end plus the delay: a chunk
+ * read at t over an idle radio is due at t + delay + its bytes x 8 / rate.
+ *
+ * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
+ * memory is bounded by {@link #capacity()}: about rate x delay, plus two grants' worth (the one on
+ * the air and the one waiting), plus one chunk; a direction that holds that much reads no more,
+ * and TCP's back-pressure reaches the sender.
+ *
+ * <p>Used by one thread; it never reads a clock nor blocks.
+ */
+public final class ShapedFlow {
+
+    private final Airtime.Hop hop;
+    private final int chunkSize;
+    private long bitsPerSecond;
+    private int delayMs;
+    private long capacity;
+    /** Read and not yet written, in order; each buffer's position is what was written of it. */
+    private final ArrayDeque<ByteBuffer> chunks = new ArrayDeque<>();
+    /** Grants whose bytes are not yet due: {end of their bytes in the stream, time they are due}, in order. */
+    private final ArrayDeque<long[]> releases = new ArrayDeque<>();
+    // Offsets in the stream of bytes this direction carries, received >= granted >= released >= written.
+    private long received;
+    private long granted;
+    private long released;
+    private long written;
+    private long lastStartNs;
+    private boolean anyGrant;
+
+    /**
+     * A direction that sends through {@code hop} at {@code bitsPerSecond} with {@code delayMs}
+     * of delay, read {@code chunkSize} bytes at a time at most; it owns the hop and closes it.
+     */
+    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int chunkSize) {
+        if (chunkSize < 1) {
+            throw new IllegalArgumentException("a chunk of 1 byte or more, not " + chunkSize);
+        }
+        this.hop = hop;
+        this.chunkSize = chunkSize;
+        setConditions(bitsPerSecond, delayMs);
+    }
+
+    /**
+     * The bytes a direction may hold: rate x (delay + 2 x {@link Airtime#QUANTUM_NS}) / 8 + one
+     * chunk. Enough to keep the radio busy at that rate (bytes wait out the delay and their grants
+     * while more are read), and no more.
+     */
+    public static long capacity(long bitsPerSecond, int delayMs, int chunkSize) {
+        return Bitrate.bytesIn(delayMs * 1_000_000L + 2 * Airtime.QUANTUM_NS, bitsPerSecond) + chunkSize;
+    }
+
+    /**
+     * The link's rate and delay from now on (the pair's strength changed, or an operator forced
+     * them): bytes not yet on the air go at the new rate and wait the new delay; the capacity follows.
+     */
+    public void setConditions(long bitsPerSecond, int delayMs) {
+        if (bitsPerSecond < 1 || bitsPerSecond > Bitrate.MAX) {
+            throw new IllegalArgumentException("a rate from 1 to " + Bitrate.MAX + " bit/s, not " + bitsPerSecond);
+        }
+        if (delayMs < ShapingConfig.MIN_DELAY_MS || delayMs > ShapingConfig.MAX_DELAY_MS) {
+            throw new IllegalArgumentException("a delay from " + ShapingConfig.MIN_DELAY_MS + " to "
+                    + ShapingConfig.MAX_DELAY_MS + " ms, not " + delayMs);
+        }
+        this.bitsPerSecond = bitsPerSecond;
+        this.delayMs = delayMs;
+        this.capacity = capacity(bitsPerSecond, delayMs, chunkSize);
+    }
+
+    /** The rate in bit/s. */
+    public long rate() {
+        return bitsPerSecond;
+    }
+
+    /** The delay in milliseconds. */
+    public int delayMs() {
+        return delayMs;
+    }
+
+    /** The most bytes this direction holds at its present rate and delay. */
+    public long capacity() {
+        return capacity;
+    }
+
+    /** The bytes read and not yet written. */
+    public long held() {
+        return received - written;
+    }
+
+    /** How many bytes may be read now: the capacity less what is held; 0 means read nothing. */
+    public int room() {
+        return (int) Math.max(0, Math.min(Integer.MAX_VALUE, capacity - held()));
+    }
+
+    /**
+     * Takes the bytes read at {@code nowNs} (all of {@code bytes}' remaining ones, which it
+     * copies; the buffer's position moves to its limit) and asks for their airtime.
+     *
+     * @throws IllegalStateException if they are more than {@link #room()}
+     */
+    public void accept(ByteBuffer bytes, long nowNs) {
+        int count = bytes.remaining();
+        if (count > room()) {
+            throw new IllegalStateException(count + " bytes read with room for " + room());
+        }
+        if (count > 0) {
+            byte[] copy = new byte[count];
+            bytes.get(copy);
+            chunks.addLast(ByteBuffer.wrap(copy));
+            received += count;
+        }
+        pump(nowNs);
+    }
+
+    /** How many bytes may be written at {@code nowNs}. */
+    public long due(long nowNs) {
+        pump(nowNs);
+        return released - written;
+    }
+
+    /**
+     * Writes what is due at {@code nowNs} to {@code out}, in order, until all of it is written or
+     * {@code out} takes no more (a non-blocking channel that is full).
+     *
+     * @return the bytes written
+     */
+    public int writeTo(WritableByteChannel out, long nowNs) throws IOException {
+        pump(nowNs);
+        int total = 0;
+        while (written < released) {
+            ByteBuffer head = chunks.peekFirst();
+            head.limit((int) Math.min(head.capacity(), head.position() + (released - written)));
+            int count = out.write(head);
+            written += count;
+            total += count;
+            if (head.hasRemaining()) {
+                break;
+            }
+            if (head.position() == head.capacity()) {
+                chunks.pollFirst();
+            }
+        }
+        return total;
+    }
+
+    /**
+     * How long from {@code nowNs} until this direction has something new to do: bytes falling
+     * due, or its turn to ask for more airtime; 0 if that is now, {@link Long#MAX_VALUE} if
+     * nothing is scheduled (it holds nothing, or only bytes already due: those wait for the
+     * target to take them, not for time).
+     */
+    public long nanosUntilNext(long nowNs) {
+        pump(nowNs);
+        long next = Long.MAX_VALUE;
+        if (!releases.isEmpty()) {
+            next = Math.max(0, releases.peekFirst()[1] - nowNs);
+        }
+        if (granted < received) {
+            next = Math.min(next, Math.max(0, lastStartNs - nowNs));
+        }
+        return next;
+    }
+
+    /** Ends the direction's hop; what it still holds is dropped with it. */
+    public void close() {
+        hop.close();
+    }
+
+    /** Takes grants while it is this direction's turn, then marks what has fallen due. */
+    private void pump(long nowNs) {
+        while (granted < received && (!anyGrant || lastStartNs - nowNs <= 0)) {
+            Airtime.Grant grant = hop.grant(bitsPerSecond, received - granted, nowNs);
+            granted += grant.bytes();
+            lastStartNs = grant.startNs();
+            anyGrant = true;
+            releases.addLast(new long[] {granted, grant.endNs() + delayMs * 1_000_000L});
+        }
+        while (!releases.isEmpty() && releases.peekFirst()[1] - nowNs <= 0) {
+            released = releases.pollFirst()[0];
+        }
+    }
+}

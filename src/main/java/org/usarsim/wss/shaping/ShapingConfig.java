@@ -1,0 +1,126 @@
+package org.usarsim.wss.shaping;
+
+import java.util.Map;
+import java.util.Objects;
+
+/**
+ * The shaping settings of one run, checked once and then fixed: whether links are shaped at all
+ * ({@code wss.shaping}), the rate for each signal strength ({@code wss.shaping.rates}), the delay
+ * every byte waits besides its time on the air ({@code wss.shaping.delayMs}), and whether the
+ * robots' radios share their airtime between their links ({@code wss.shaping.airtime}).
+ * docs/shaping.md describes each.
+ *
+ * @param on whether links are shaped; off, every other value is checked but unused
+ * @param rates the rate of a pair for its strength
+ * @param delayMs the delay, from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}
+ * @param airtime whether links sharing a robot share its radio's airtime
+ */
+public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+
+    public static final String SHAPING = "wss.shaping";
+    public static final String RATES = "wss.shaping.rates";
+    public static final String DELAY_MS = "wss.shaping.delayMs";
+    public static final String AIRTIME = "wss.shaping.airtime";
+
+    public static final int DEFAULT_DELAY_MS = 2;
+    public static final int MIN_DELAY_MS = 0;
+    public static final int MAX_DELAY_MS = 10_000;
+
+    /** No shaping: links forward as fast as the robots and the machine allow. The default. */
+    public static final ShapingConfig OFF = new ShapingConfig(false, RateTable.DEFAULT, DEFAULT_DELAY_MS, true);
+
+    public ShapingConfig {
+        Objects.requireNonNull(rates, "rates");
+        String problem = delayProblem(delayMs);
+        if (problem != null) {
+            throw new IllegalArgumentException(DELAY_MS + ": " + delayMs + " " + problem);
+        }
+    }
+
+    /**
+     * The settings {@code values} give by key ({@link #SHAPING}, {@link #RATES}, {@link #DELAY_MS},
+     * {@link #AIRTIME}; a key not there takes its default; other keys are ignored), each checked,
+     * even with shaping off, so that a mistake is found before the day it is switched on.
+     *
+     * @throws IllegalArgumentException for the first bad value, naming its key and the value:
+     *     {@code wss.shaping.delayMs: -1 is below 0}
+     */
+    public static ShapingConfig from(Map<String, String> values) {
+        String shaping = value(values, SHAPING, "off");
+        boolean on;
+        if (shaping.equalsIgnoreCase("on")) {
+            on = true;
+        } else if (shaping.equalsIgnoreCase("off")) {
+            on = false;
+        } else {
+            throw refused(SHAPING, shaping, "is not on or off");
+        }
+        String ratesText = value(values, RATES, RateTable.DEFAULT.toString());
+        RateTable rates;
+        try {
+            rates = RateTable.parse(ratesText);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(RATES + ": " + e.getMessage(), e);
+        }
+        String delayText = value(values, DELAY_MS, String.valueOf(DEFAULT_DELAY_MS));
+        int delayMs;
+        try {
+            delayMs = parseDelayMs(delayText);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(DELAY_MS + ": " + e.getMessage(), e);
+        }
+        String airtimeText = value(values, AIRTIME, "true");
+        if (!airtimeText.equalsIgnoreCase("true") && !airtimeText.equalsIgnoreCase("false")) {
+            throw refused(AIRTIME, airtimeText, "is not true or false");
+        }
+        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()));
+    }
+
+    /**
+     * A delay in whole milliseconds from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}, as
+     * {@code wss.shaping.delayMs} and an operator's {@code FORCE ... {Delay 50}} write it;
+     * whitespace around it is ignored.
+     *
+     * @throws IllegalArgumentException "-1 is below 0", "abc is not a whole number of milliseconds"
+     */
+    public static int parseDelayMs(String text) {
+        String value = text == null ? "" : text.strip();
+        if (!value.matches("[+-]?\\d+")) {
+            throw new IllegalArgumentException(shown(value) + " is not a whole number of milliseconds");
+        }
+        long delay;
+        try {
+            delay = Long.parseLong(value);
+        } catch (NumberFormatException e) {
+            delay = value.startsWith("-") ? Long.MIN_VALUE : Long.MAX_VALUE;
+        }
+        String problem = delayProblem(delay);
+        if (problem != null) {
+            throw new IllegalArgumentException(value + " " + problem);
+        }
+        return (int) delay;
+    }
+
+    private static String delayProblem(long delayMs) {
+        if (delayMs < MIN_DELAY_MS) {
+            return "is below " + MIN_DELAY_MS;
+        }
+        if (delayMs > MAX_DELAY_MS) {
+            return "is above " + MAX_DELAY_MS;
+        }
+        return null;
+    }
+
+    private static String value(Map<String, String> values, String key, String defaultValue) {
+        String value = values.get(key);
+        return value == null ? defaultValue : value.strip();
+    }
+
+    private static IllegalArgumentException refused(String key, String value, String problem) {
+        return new IllegalArgumentException(key + ": " + shown(value) + " " + problem);
+    }
+
+    private static String shown(String value) {
+        return value.isEmpty() ? "an empty value" : value;
+    }
+}

@@ -1,0 +1,197 @@
+package org.usarsim.wss.shaping;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.channels.Channels;
+import java.nio.channels.WritableByteChannel;
+import java.util.Random;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.shaping.SimulatedLinks.Lane;
+
+/** One shaped direction, and several sharing radios, on a clock the test moves: no sleeps, no threads. */
+class ShapedFlowTest {
+
+    private static final long MS = 1_000_000;
+    private static final long SECOND = 1_000_000_000;
+    private static final int CHUNK = 4096;
+
+    @Test
+    void eachRateIsKeptWithinOnePercentOverTenSeconds() {
+        for (long rate : new long[] {512_000, 1_000_000, 6_000_000, 11_000_000, 24_000_000, 54_000_000}) {
+            SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+            Lane lane = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
+            links.runFor(10 * SECOND);
+            double expected = rate * 10 / 8.0;
+            assertEquals(expected, lane.delivered, expected / 100, Bitrate.format(rate));
+            assertTrue(lane.delivered <= expected, Bitrate.format(rate) + ": never faster than the rate");
+        }
+    }
+
+    @Test
+    void aChunkIsDueAfterTheDelayAndItsTimeOnTheAir() throws IOException {
+        long start = -1_000_000_000_000L; // nanoTime may be negative
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", start), 1_000_000, 50, CHUNK);
+        flow.accept(ByteBuffer.wrap(new byte[64]), start);
+        long due = start + 50 * MS + 512_000; // 64 x 8 / 1 Mbit/s = 512 us
+        assertEquals(0, flow.due(start));
+        assertEquals(due - start, flow.nanosUntilNext(start));
+        assertEquals(0, flow.due(due - 1));
+        assertEquals(1, flow.nanosUntilNext(due - 1));
+        ByteArrayOutputStream target = new ByteArrayOutputStream();
+        assertEquals(0, flow.writeTo(Channels.newChannel(target), due - 1));
+        assertEquals(64, flow.due(due));
+        assertEquals(64, flow.writeTo(Channels.newChannel(target), due));
+        assertEquals(64, target.size());
+        assertEquals(0, flow.held());
+        assertEquals(Long.MAX_VALUE, flow.nanosUntilNext(due), "nothing held, nothing scheduled");
+    }
+
+    @Test
+    void twoPeersShareTheSendersAirtimeByTimeNotByBytes() {
+        long fast = 24_000_000;
+        long slow = fast / 4;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        Lane near = links.add("A", "B", fast, 2, CHUNK, SimulatedLinks.endless());
+        Lane far = links.add("A", "C", slow, 2, CHUNK, SimulatedLinks.endless());
+        links.runFor(10 * SECOND);
+        double nearShare = near.delivered * 8.0 / fast / 10;
+        double farShare = far.delivered * 8.0 / slow / 10;
+        assertEquals(0.5, nearShare, 0.05, "the near link's airtime");
+        assertEquals(0.5, farShare, 0.05, "the far link's airtime");
+        assertEquals(1, nearShare + farShare, 0.03, "together, all of A's airtime");
+        assertEquals(1, links.airtime.inUse("A", links.now), 0.03, "A's airtime in use");
+        assertEquals(0.25, far.delivered / (double) near.delivered, 0.0125, "the far link moves a quarter of the near one's bytes");
+    }
+
+    @Test
+    void aRelayThatReceivesAndSendsAgainHalvesTheGoodput() {
+        long rate = 11_000_000;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
+        Lane in = links.add("A", "R", rate, 2, CHUNK, SimulatedLinks.endless());
+        Lane out = links.add("R", "B", rate, 2, CHUNK, links.relayOf(in));
+        links.runFor(10 * SECOND);
+        double half = rate * 10 / 8.0 / 2;
+        assertTrue(out.delivered <= half * 1.01, "A to B through R: " + out.delivered + " bytes, more than half the rate");
+        assertTrue(out.delivered >= half * 0.9, "A to B through R: " + out.delivered + " bytes, well under half the rate");
+        assertEquals(1, links.airtime.inUse("R", links.now), 0.03, "the relay's radio is always busy");
+    }
+
+    @Test
+    void withoutSharedAirtimeEachDirectionHasItsOwnRate() {
+        long rate = 6_000_000;
+        SimulatedLinks links = new SimulatedLinks(Airtime.unshared(), 0, false);
+        Lane toB = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
+        Lane toC = links.add("A", "C", rate, 2, CHUNK, SimulatedLinks.endless());
+        Lane back = links.add("B", "A", rate, 2, CHUNK, SimulatedLinks.endless());
+        links.runFor(2 * SECOND);
+        double expected = rate * 2 / 8.0;
+        for (Lane lane : new Lane[] {toB, toC, back}) {
+            assertEquals(expected, lane.delivered, expected / 100);
+        }
+    }
+
+    @Test
+    void aRateChangeReachesTheBytesStillWaiting() {
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
+        long capacity = ShapedFlow.capacity(1_000_000, 0, CHUNK);
+        assertEquals(4596, capacity, "1 Mbit/s x 4 ms / 8 + a chunk");
+        Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
+        links.runFor(MS);
+        assertEquals(capacity, lane.read, "all read at once");
+        lane.flow.setConditions(8_000_000, 0);
+        // Two grants of 250 bytes were taken at 1 Mbit/s (0-2 ms on the air, 2-4 ms reserved);
+        // the 4096 bytes still waiting go at 8 Mbit/s: 4.096 ms more. At 1 Mbit/s they would take 32.8.
+        links.runUntil(8_096_000 - 1);
+        assertTrue(lane.delivered < capacity);
+        links.runUntil(8_096_000);
+        assertEquals(capacity, lane.delivered);
+        assertEquals(lane.sent.getValue(), lane.got.getValue());
+    }
+
+    @Test
+    void aDirectionNeverHoldsMoreThanItsCapacity() {
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
+        assertEquals(6_000_000 * 104 / 1000 / 8 + CHUNK, lane.flow.capacity(), "rate x (delay + 2 quanta) / 8 + a chunk");
+        links.runFor(2 * SECOND);
+        assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
+        assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
+
+        lane.flow.setConditions(1_000_000, 100);
+        assertEquals(1_000_000 * 104 / 1000 / 8 + CHUNK, lane.flow.capacity());
+        assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
+        assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
+        lane.mostHeld = 0;
+        links.runFor(2 * SECOND);
+        assertTrue(lane.flow.held() <= lane.flow.capacity());
+    }
+
+    @Test
+    void aTargetThatTakesNothingStopsTheReadingAndLosesNothing() {
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
+        Lane lane = links.add("A", "B", 11_000_000, 2, CHUNK, SimulatedLinks.endless());
+        lane.takes = () -> 0;
+        links.runFor(SECOND);
+        assertEquals(0, lane.delivered);
+        assertEquals(lane.flow.capacity(), lane.read, "read up to the capacity, then no more");
+        assertEquals(lane.flow.capacity(), lane.flow.due(links.now), "all of it due, waiting for the target");
+        lane.takes = null;
+        links.runFor(SECOND);
+        assertTrue(lane.delivered > lane.flow.capacity());
+    }
+
+    @Test
+    void nothingIsLostReorderedOrDuplicated() throws IOException {
+        Random random = new Random(1616);
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 123_456_789, true);
+        long total = 1_500_000;
+        Lane ab = links.add("A", "B", 6_000_000, 2, 3000, SimulatedLinks.finite(total), new Random(1));
+        Lane ba = links.add("B", "A", 1_000_000, 20, 1500, SimulatedLinks.finite(total), new Random(2));
+        Lane ac = links.add("A", "C", 54_000_000, 0, 9000, SimulatedLinks.finite(total), new Random(3));
+        Lane cb = links.add("C", "B", 512_000, 300, 700, SimulatedLinks.finite(total / 8), new Random(4));
+        long[] rates = {512_000, 1_000_000, 6_000_000, 11_000_000, 24_000_000, 54_000_000};
+        int[] delays = {0, 2, 50, 300};
+        for (Lane lane : links.lanes) {
+            lane.takes = () -> random.nextInt(4) == 0 ? random.nextInt(2000) : Long.MAX_VALUE;
+        }
+        for (int round = 0; round < 200; round++) {
+            links.runFor((1 + random.nextInt(40)) * MS);
+            Lane lane = links.lanes.get(random.nextInt(links.lanes.size()));
+            lane.flow.setConditions(rates[random.nextInt(rates.length)], delays[random.nextInt(delays.length)]);
+        }
+        for (Lane lane : links.lanes) {
+            lane.flow.setConditions(54_000_000, 2);
+        }
+        links.runFor(10 * SECOND);
+        for (Lane lane : new Lane[] {ab, ba, ac}) {
+            assertEquals(total, lane.delivered);
+            assertEquals(lane.sent.getValue(), lane.got.getValue(), "the checksums");
+            assertEquals(0, lane.flow.held());
+        }
+        assertEquals(total / 8, cb.delivered);
+        assertEquals(cb.sent.getValue(), cb.got.getValue());
+        assertEquals(0, ab.flow.writeTo(new Refusing(), links.now), "nothing left to write");
+    }
+
+    /** A target that must not be written to. */
+    private static final class Refusing implements WritableByteChannel {
+        @Override
+        public int write(ByteBuffer bytes) {
+            throw new AssertionError("written to");
+        }
+
+        @Override
+        public boolean isOpen() {
+            return true;
+        }
+
+        @Override
+        public void close() {
+        }
+    }
+}

@@ -20,6 +20,8 @@ public final class ScriptedModel implements PropagationModel {
     private volatile WssEventListener events;
     private volatile boolean active;
     private volatile String startFailure;
+    /** How many times a strength was asked (GETSS, the snapshot, the shaping's sampler). */
+    private final java.util.concurrent.atomic.AtomicLong strengthsAsked = new java.util.concurrent.atomic.AtomicLong();
 
     private static String key(String from, String to) {
         return from + "\u0000" + to;
@@ -38,6 +40,10 @@ public final class ScriptedModel implements PropagationModel {
 
     void strength(String from, String to, double dbm) {
         strengths.put(key(from, to), dbm);
+    }
+
+    long strengthsAsked() {
+        return strengthsAsked.get();
     }
 
     /** The hub, as the server gave it to the model. */
@@ -85,6 +91,7 @@ public final class ScriptedModel implements PropagationModel {
 
     @Override
     public double getSignalStrengthForPair(String from, String to) {
+        strengthsAsked.incrementAndGet();
         return strengths.getOrDefault(key(from, to), 0.0);
     }
 

@@ -173,4 +173,9 @@ final class NetworkView implements WssEventListener {
     public void portForgotten(String from, String to, int targetPort, int wssPort) {
         changed();
     }
+
+    @Override
+    public void rateChanged(String from, String to, long bitsPerSecond) {
+        changed();
+    }
 }

@@ -218,6 +218,12 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         event("RELEASED", first, second);
     }
 
+    /** With links shaped: a pair's rate one way was set or changed (never per chunk). */
+    @Override
+    public void rateChanged(String from, String to, long bitsPerSecond) {
+        event("RATE", from, to, bitsPerSecond);
+    }
+
     /**
      * Stops taking events, waits (at most 10 s, for a disk that hangs) until the writer has
      * written everything queued before, with the count of any dropped, and closed the file.

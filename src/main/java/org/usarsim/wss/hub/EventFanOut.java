@@ -106,6 +106,11 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
+    public void rateChanged(String from, String to, long bitsPerSecond) {
+        each(l -> l.rateChanged(from, to, bitsPerSecond));
+    }
+
+    @Override
     public void pairForced(String first, String second, boolean up) {
         each(l -> l.pairForced(first, second, up));
     }

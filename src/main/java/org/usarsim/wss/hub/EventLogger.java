@@ -5,6 +5,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
+import org.usarsim.wss.shaping.Bitrate;
 
 /** Writes each event to the log as one line (data sent only at FINEST: it happens per chunk; in and out of range at FINE). */
 final class EventLogger implements WssEventListener {
@@ -52,6 +53,11 @@ final class EventLogger implements WssEventListener {
     @Override
     public void pairForced(String first, String second, boolean up) {
         LOG.info(() -> "forced " + first + " - " + second + (up ? " up" : " down"));
+    }
+
+    @Override
+    public void rateChanged(String from, String to, long bitsPerSecond) {
+        LOG.info(() -> "rate " + from + " -> " + to + ": " + Bitrate.format(bitsPerSecond));
     }
 
     @Override

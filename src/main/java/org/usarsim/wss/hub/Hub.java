@@ -24,7 +24,11 @@ import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
+import org.usarsim.wss.hub.core.Measurement;
+import org.usarsim.wss.hub.core.OrderedPair;
+import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.core.WssPort;
@@ -35,6 +39,7 @@ import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
 import org.usarsim.wss.hub.tcp.PortListener;
 import org.usarsim.wss.hub.tcp.PortSockets;
+import org.usarsim.wss.hub.tcp.Shaping;
 import org.usarsim.wss.hub.tcp.SocketBuffers;
 import org.usarsim.wss.hub.tcp.Switchboard;
 import org.usarsim.wss.model.ModelStartException;
@@ -42,6 +47,7 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.Airtime;
 
 /**
  * The server: runs the {@link HubCore} (the rules and the state) under one lock, and applies what
@@ -77,6 +83,10 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     private final SocketTurns turns = new SocketTurns();
     private final ForgetTimer forgetTimer = new ForgetTimer(this::forgetIfGone);
     private final KeepAlive keepAlive;
+    /** The robots' radios, when links are shaped (docs/shaping.md). */
+    private final Airtime airtime;
+    /** Asks the model a few times a second what the shaped pairs' rates are now; null when links are not shaped. */
+    private final Sampler sampler;
     private volatile ControlListener controlListener;
 
     public Hub(HubConfig config, PropagationModel model) {
@@ -92,7 +102,10 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.events = new EventFanOut(LOG, warnings);
         this.outbox = new Outbox(events);
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
-        this.core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot());
+        this.core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot(),
+                config.shaping());
+        this.airtime = config.shaping().airtime() ? Airtime.shared() : Airtime.unshared();
+        this.sampler = config.shaping().on() ? new Sampler(this::measure) : null;
         this.keepAlive = KeepAlive.within(config.deadPeerSeconds());
         events.add(new EventLogger());
     }
@@ -131,7 +144,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             }
         }
         // Before the first robot can come; a start that failed forced nothing.
-        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force));
+        config.forced().forEach((pair, force) -> force(pair.first(), pair.second(), force,
+                config.pins().getOrDefault(pair, RatePin.NONE)));
+        if (sampler != null) {
+            sampler.start();
+        }
         controlListener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());
@@ -154,6 +171,9 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             LOG.log(Level.WARNING, "the model failed to shut down: " + e, e);
         }
         forgetTimer.close();
+        if (sampler != null) {
+            sampler.close();
+        }
         step(core::close);
         warnings.close();
         LOG.info("WSS stopped");
@@ -347,6 +367,10 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
         }
         boolean allowed = modelAllows(from, to);
+        if (sampler != null && bothRegistered(from, to)) { // a new pair starts at its own rate, not the lowest
+            Map<OrderedPair, Measurement> measurements = measure(List.of(RobotPair.of(from, to)));
+            step(out -> core.measured(measurements, out));
+        }
         HubCore.DnsResult result = dns(from, to, targetPort, allowed, null, null);
         if (result.outcome() != HubCore.DnsOutcome.NEEDS_NUMBER) {
             return result;
@@ -367,6 +391,12 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             Closing.quietly(placeholder);
         }
         return allocated;
+    }
+
+    private boolean bothRegistered(String a, String b) {
+        synchronized (lock) {
+            return core.isRegistered(a) && core.isRegistered(b);
+        }
     }
 
     private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, SocketChannel placeholder,
@@ -407,16 +437,22 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         InetAddress peer = socket.socket().getInetAddress();
         boolean allowed = modelAllows(port.key.from(), port.key.to());
         HubCore.Admission admission;
+        Changes out = new Changes();
+        Applying applying;
         synchronized (lock) {
-            admission = core.admit(port, epoch, peer, allowed, clock.getAsLong());
+            admission = core.admit(port, epoch, peer, allowed, clock.getAsLong(), out);
+            applying = taken(out);
         }
+        apply(applying);
         if (admission.refusal() != null) {
             refuse(port, socket, peer, admission.refusal());
             return;
         }
         Link link;
         try {
-            link = new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats());
+            Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock) : null;
+            link = new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(),
+                    shaping);
         } catch (IOException e) {
             warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
@@ -518,9 +554,16 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
      */
     @Override
     public void force(String robotA, String robotB, Force force) {
+        force(robotA, robotB, force, RatePin.NONE);
+    }
+
+    /** As {@link #force(String, String, Force)}, up with the pair's rate and delay pinned (docs/shaping.md). */
+    @Override
+    public void force(String robotA, String robotB, Force force, RatePin pin) {
         RobotPair pair = pairOf(robotA, robotB);
         Objects.requireNonNull(force, "force");
-        step(out -> core.force(pair, force, clock.getAsLong(), out));
+        Objects.requireNonNull(pin, "pin");
+        step(out -> core.force(pair, force, pin, clock.getAsLong(), out));
     }
 
     /**
@@ -557,6 +600,38 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         step(out -> core.forgetIfGone(name, clock.getAsLong(), out));
     }
 
+    // ---- shaping ----
+
+    /** The sampler's call: what the model says of each shaped pair now, both ways, asked without the lock. */
+    private void measure() {
+        List<RobotPair> pairs;
+        synchronized (lock) {
+            pairs = core.pairsToMeasure();
+        }
+        Map<OrderedPair, Measurement> measurements = measure(pairs);
+        step(out -> core.measured(measurements, out));
+    }
+
+    /** What the model says of the pairs, both ways; without the lock. */
+    private Map<OrderedPair, Measurement> measure(List<RobotPair> pairs) {
+        Map<OrderedPair, Measurement> measurements = new HashMap<>();
+        for (RobotPair pair : pairs) {
+            OrderedPair way = new OrderedPair(pair.first(), pair.second());
+            measurements.put(way, measurement(way));
+            measurements.put(way.reversed(), measurement(way.reversed()));
+        }
+        return measurements;
+    }
+
+    private Measurement measurement(OrderedPair way) {
+        try {
+            return new Measurement(model.getSignalStrengthForPair(way.from(), way.to()),
+                    model.linkQualityForPair(way.from(), way.to()));
+        } catch (RuntimeException e) {
+            return Measurement.NONE; // a robot the model does not know (gone, say): the lowest rate
+        }
+    }
+
     // ---- the snapshot ----
 
     /** The robots, the WSS ports and the established links, all at one instant. */
@@ -565,11 +640,15 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
         List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
         List<PairStats> pairStats;
+        Map<OrderedPair, PairCondition> conditions;
         synchronized (lock) {
             pairStats = core.pairStats();
+            long now = clock.getAsLong();
             for (RegisteredRobot robot : core.robots()) {
-                robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports()));
+                double inUse = config.shaping().on() ? airtime.inUse(robot.name(), now) : Double.NaN;
+                robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports(), inUse));
             }
+            conditions = core.conditions();
             for (WssPort port : core.ports()) {
                 var key = port.key;
                 portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
@@ -586,11 +665,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
                 .thenComparingInt(HubSnapshot.PortEntry::targetPort));
         linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
                 .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
-        return new HubSnapshot(robotEntries, portEntries, linkEntries, pairEntries(pairStats));
+        return new HubSnapshot(robotEntries, portEntries, linkEntries, pairEntries(pairStats, conditions));
     }
 
     /** The pairs' statistics, sorted by pair; the model is asked for strengths and positions here, without the lock. */
-    private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats) {
+    private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats, Map<OrderedPair, PairCondition> conditions) {
         long now = clock.getAsLong();
         List<HubSnapshot.PairEntry> entries = new ArrayList<>();
         for (PairStats pair : pairStats) {
@@ -600,10 +679,16 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             CloseReason lastClose = pair.lastClose();
             entries.add(new HubSnapshot.PairEntry(first, second, pair.state(), strength(first, second), distance(first, second),
                     pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1], pair.connections(),
-                    pair.breaks(), pair.resumes(), pair.upShare(now), lastClose == null ? null : lastClose.toString()));
+                    pair.breaks(), pair.resumes(), pair.upShare(now), lastClose == null ? null : lastClose.toString(),
+                    rateOf(conditions, first, second), rateOf(conditions, second, first)));
         }
         entries.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));
         return entries;
+    }
+
+    private static long rateOf(Map<OrderedPair, PairCondition> conditions, String from, String to) {
+        PairCondition condition = conditions.get(new OrderedPair(from, to));
+        return condition == null ? 0 : condition.bitsPerSecond();
     }
 
     private double strength(String first, String second) {

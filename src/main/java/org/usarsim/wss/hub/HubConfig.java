@@ -5,9 +5,12 @@ import java.net.UnknownHostException;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * How the hub runs.
@@ -25,10 +28,12 @@ import org.usarsim.wss.model.RobotPair;
  *                           on control connections and links; 0 leaves keepalive to the OS
  * @param operators          the addresses whose control connections may use the operator command (FORCE)
  * @param forced             the pairs forced down or up from the start (wss.force.down, wss.force.up)
+ * @param pins               the rates and delays pinned with the pairs forced up from the start
+ * @param shaping            how links are shaped (wss.shaping and its keys, docs/shaping.md)
  */
 public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
         boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
-        Set<InetAddress> operators, Map<RobotPair, Force> forced) {
+        Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
 
     /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
     private static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
@@ -44,6 +49,16 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
     public HubConfig {
         operators = Set.copyOf(operators);
         forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
+        pins = Map.copyOf(pins);
+        Objects.requireNonNull(shaping, "shaping");
+    }
+
+    /** Links not shaped, no rate pinned. */
+    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
+            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
+            Set<InetAddress> operators, Map<RobotPair, Force> forced) {
+        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, deadPeerSeconds, operators, forced, Map.of(), ShapingConfig.OFF);
     }
 
     /** The operator at 127.0.0.1 only, and no pair forced. */
@@ -56,6 +71,12 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */
     public HubConfig withControlPort(int port) {
         return new HubConfig(bindAddress, port, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, operators, forced);
+                maxPortsPerRobot, deadPeerSeconds, operators, forced, pins, shaping);
+    }
+
+    /** The same, with links shaped so (and these rates pinned from the start). */
+    public HubConfig withShaping(ShapingConfig shaping, Map<RobotPair, RatePin> pins) {
+        return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, deadPeerSeconds, operators, forced, pins, shaping);
     }
 }

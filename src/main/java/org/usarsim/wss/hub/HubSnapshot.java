@@ -18,10 +18,19 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
         pairs = List.copyOf(pairs);
     }
 
-    /** A registered robot: its name, the address its control connection came from, its accepting ports. */
-    public record RobotEntry(String name, String address, List<Integer> ports) {
+    /**
+     * A registered robot: its name, the address its control connection came from, its accepting
+     * ports, and with links shaped the share of its radio's airtime in use over the last second
+     * (0..1; NaN when links are not shaped or do not share airtime).
+     */
+    public record RobotEntry(String name, String address, List<Integer> ports, double airtime) {
         public RobotEntry {
             ports = List.copyOf(ports);
+        }
+
+        /** Airtime not known (links not shaped). */
+        public RobotEntry(String name, String address, List<Integer> ports) {
+            this(name, address, ports, Double.NaN);
         }
     }
 
@@ -38,11 +47,21 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
      * {@code second}) since it was first seen: its state, the model's strength first -> second
      * (dBm, NaN unknown) and distance (m, NaN unknown), bytes forwarded and current throughput
      * (bytes/s) each way, connections opened, breaks and resumes, the share of time up (0..1) and
-     * why its last connection closed (null before any closed).
+     * why its last connection closed (null before any closed); with links shaped, the link's rate
+     * each way in bit/s (0: not shaped).
      */
     public record PairEntry(String first, String second, PairState state, double strength, double distance,
                             long bytesFirstToSecond, long bytesSecondToFirst,
                             double rateFirstToSecond, double rateSecondToFirst,
-                            long connections, long breaks, long resumes, double upShare, String lastClose) {
+                            long connections, long breaks, long resumes, double upShare, String lastClose,
+                            long linkRateFirstToSecond, long linkRateSecondToFirst) {
+
+        /** Links not shaped. */
+        public PairEntry(String first, String second, PairState state, double strength, double distance,
+                long bytesFirstToSecond, long bytesSecondToFirst, double rateFirstToSecond, double rateSecondToFirst,
+                long connections, long breaks, long resumes, double upShare, String lastClose) {
+            this(first, second, state, strength, distance, bytesFirstToSecond, bytesSecondToFirst, rateFirstToSecond,
+                    rateSecondToFirst, connections, breaks, resumes, upShare, lastClose, 0, 0);
+        }
     }
 }

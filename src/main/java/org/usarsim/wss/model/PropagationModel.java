@@ -79,6 +79,16 @@ public interface PropagationModel {
     boolean connectionIsPossibleForPair(String from, String to);
 
     /**
+     * The link's rate and delay from {@code from} to {@code to}, when links are shaped
+     * ({@code wss.shaping = on}, docs/shaping.md); empty (the default) leaves them to the
+     * server's rate table (from the strength) and delay. Asked without the server's locks, a few
+     * times a second per pair with a WSS port; existing plugins need not know it.
+     */
+    default Optional<LinkQuality> linkQualityForPair(String from, String to) {
+        return Optional.empty();
+    }
+
+    /**
      * Where the robot is, as the model last learned it (the map and the per-link statistics show
      * it). Empty when the model does not know positions (Noop) or the robot is not in the simulator.
      */

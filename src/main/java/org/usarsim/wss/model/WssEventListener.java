@@ -44,6 +44,10 @@ public interface WssEventListener {
     default void portForgotten(String from, String to, int targetPort, int wssPort) {
     }
 
+    /** With links shaped: the rate from one robot to another is now this many bit/s (first set, or changed). */
+    default void rateChanged(String from, String to, long bitsPerSecond) {
+    }
+
     /**
      * An operator forced the pair (names in ascending order) up or down: its state no longer
      * follows the model until {@link #pairReleased}.

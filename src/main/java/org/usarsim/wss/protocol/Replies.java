@@ -37,6 +37,10 @@ public final class Replies {
     public static final String PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE = "Peer.Name.Must.Not.Contain.Whitespace";
     public static final String PEER_MUST_NOT_BE_THE_ROBOT = "Peer.Must.Not.Be.The.Robot";
     public static final String STATE_MUST_BE_DOWN_UP_OR_MODEL = "State.Must.Be.Down.Up.Or.Model";
+    /** FORCE's {@code Rate}, with links shaped (docs/shaping.md): a bit rate such as 512k, 1M or 54M, more than 0. */
+    public static final String RATE_MUST_BE_A_BIT_RATE = "Rate.Must.Be.A.Bit.Rate";
+    public static final String DELAY_MUST_BE_0_TO_10000_MS = "Delay.Must.Be.0.To.10000.Ms";
+    public static final String RATE_AND_DELAY_NEED_STATE_UP = "Rate.And.Delay.Need.State.Up";
 
     private Replies() {
     }

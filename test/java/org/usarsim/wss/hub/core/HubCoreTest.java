@@ -60,17 +60,17 @@ class HubCoreTest {
         assertTrue(core.breakPair(AB, now, broke));
         assertEquals(List.of(Changes.PortWork.STOP), works(broke));
         assertEquals(List.of(new Changes.Close(link, CloseReason.OUT_OF_RANGE)), broke.closes());
-        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now).refusal());
+        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now, new Changes()).refusal());
 
         Changes resumed = new Changes();
         assertTrue(core.resumePair(AB, now, resumed));
         assertEquals(List.of(Changes.PortWork.LISTEN), works(resumed));
         assertEquals(firstEpoch + 1, resumed.portActions().get(0).epoch(), "a new listener, of a new epoch");
-        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now).refusal(),
+        assertEquals("the port no longer listens", core.admit(port, firstEpoch, LOOPBACK, true, now, new Changes()).refusal(),
                 "a connection the stopped listener accepted late is refused");
-        assertNull(core.admit(port, port.epoch(), LOOPBACK, true, now).refusal());
+        assertNull(core.admit(port, port.epoch(), LOOPBACK, true, now, new Changes()).refusal());
         assertEquals("TestModel does not allow A -> B now",
-                core.admit(port, port.epoch(), LOOPBACK, false, now).refusal(), "the model's answer counts");
+                core.admit(port, port.epoch(), LOOPBACK, false, now, new Changes()).refusal(), "the model's answer counts");
     }
 
     @Test
@@ -83,7 +83,7 @@ class HubCoreTest {
         core.force(AB, Force.UP, now, up);
         assertEquals(new HubEvent.PairForced("A", "B", true), up.events().get(0), "the force comes before what it does");
         assertEquals(List.of(Changes.PortWork.LISTEN), works(up));
-        assertNull(core.admit(port, port.epoch(), LOOPBACK, false, now).refusal(), "forced up: whatever the model says");
+        assertNull(core.admit(port, port.epoch(), LOOPBACK, false, now, new Changes()).refusal(), "forced up: whatever the model says");
 
         Changes released = new Changes();
         core.release(AB, true, true, now, released);

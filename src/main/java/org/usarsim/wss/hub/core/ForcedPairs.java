@@ -13,6 +13,8 @@ import org.usarsim.wss.model.RobotPair;
 final class ForcedPairs {
 
     private final Map<RobotPair, Force> forced = new HashMap<>();
+    /** The rates and delays pinned with a force up. */
+    private final Map<RobotPair, RatePin> pins = new HashMap<>();
 
     /** The pair's forced state, or null when the model decides it. */
     Force of(RobotPair pair) {
@@ -24,9 +26,21 @@ final class ForcedPairs {
         return forced.put(pair, force);
     }
 
-    /** Gives the pair back to the model; returns its forced state before (null: it was not forced). */
+    /** Gives the pair back to the model, its rate and delay too; returns its forced state before (null: it was not forced). */
     Force release(RobotPair pair) {
+        pins.remove(pair);
         return forced.remove(pair);
+    }
+
+    /** Pins the pair's rate and delay (or unpins them, {@link RatePin#NONE}). @return whether that changed them */
+    boolean pin(RobotPair pair, RatePin pin) {
+        RatePin before = pin.equals(RatePin.NONE) ? pins.remove(pair) : pins.put(pair, pin);
+        return !pin.equals(before == null ? RatePin.NONE : before);
+    }
+
+    /** The pair's pinned rate and delay, {@link RatePin#NONE} when none. */
+    RatePin pinOf(RobotPair pair) {
+        return pins.getOrDefault(pair, RatePin.NONE);
     }
 
     /**

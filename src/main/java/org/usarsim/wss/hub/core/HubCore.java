@@ -8,8 +8,11 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
+import org.usarsim.wss.model.LinkQuality;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The hub's rules and state, without sockets or threads: the registered robots, the WSS ports and
@@ -41,8 +44,12 @@ public final class HubCore {
     /** Whether a name is free for a registration. */
     public enum NameCheck { REGISTERED, TAKEN, TAKEN_BY_LEAVING, CLOSED }
 
-    /** Whether a connection accepted on a WSS port may be forwarded: null refusal, where to, and the pair's counters. */
-    public record Admission(String refusal, InetSocketAddress target, PairStats stats) {
+    /**
+     * Whether a connection accepted on a WSS port may be forwarded: null refusal, where to, the
+     * pair's counters, and its live conditions each way (from the port's source to its target: {@code up}).
+     */
+    public record Admission(String refusal, InetSocketAddress target, PairStats stats,
+            AtomicReference<PairCondition> up, AtomicReference<PairCondition> down) {
     }
 
     private final String modelName;
@@ -59,6 +66,16 @@ public final class HubCore {
     /** The statistics of every pair seen, forgotten with the pair's ports. */
     private final PairStatsTable stats = new PairStatsTable();
     private final PortMemory memory;
+    private final ShapingConfig shaping;
+    /** What the model last said of each pair one way (with shaping on). */
+    private final Map<OrderedPair, Measurement> measured = new HashMap<>();
+    /**
+     * Each seen pair's condition one way, the one value the link threads read as they forward
+     * (a volatile cell each), the statistics and the snapshot too; recomputed by {@link #refresh}.
+     */
+    private final Map<OrderedPair, AtomicReference<PairCondition>> conditions = new HashMap<>();
+    /** The ways whose rate the event log has been told (a RATE line): each is said once, then at each change. */
+    private final Set<OrderedPair> said = new HashSet<>();
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
 
@@ -69,6 +86,13 @@ public final class HubCore {
      * @param maxPortsPerRobot   the most WSS ports one robot may hold as source
      */
     public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot) {
+        this(modelName, matchSourceAddress, portMemorySeconds, maxPortsPerRobot, ShapingConfig.OFF);
+    }
+
+    /** @param shaping how links are shaped (docs/shaping.md) */
+    public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot,
+            ShapingConfig shaping) {
+        this.shaping = shaping;
         this.modelName = modelName;
         this.matchSourceAddress = matchSourceAddress;
         this.maxPortsPerRobot = maxPortsPerRobot;
@@ -207,7 +231,7 @@ public final class HubCore {
             return DnsResult.of(DnsOutcome.NO_SUCH_TARGET_PORT);
         }
         PortKey key = new PortKey(from, to, resolved);
-        pairStats(key.pair(), nowNs);
+        seen(key.pair(), nowNs, out);
         WssPort port = ports.get(key);
         if (port != null) {
             if (!port.listening() && shouldListen(key, allowed)) {
@@ -262,14 +286,16 @@ public final class HubCore {
      *
      * @param allowed the model's {@code connectionIsPossibleForPair(from, to)}
      */
-    public Admission admit(WssPort port, int epoch, InetAddress peer, boolean allowed, long nowNs) {
+    public Admission admit(WssPort port, int epoch, InetAddress peer, boolean allowed, long nowNs, Changes out) {
         PortKey key = port.key;
         String refusal = refusal(port, epoch, peer, allowed);
         if (refusal != null) {
-            return new Admission(refusal, null, null);
+            return new Admission(refusal, null, null, null, null);
         }
         InetSocketAddress target = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
-        return new Admission(null, target, pairStats(key.pair(), nowNs));
+        PairStats pairStats = seen(key.pair(), nowNs, out);
+        OrderedPair up = new OrderedPair(key.from(), key.to());
+        return new Admission(null, target, pairStats, conditions.get(up), conditions.get(up.reversed()));
     }
 
     /** Asked again once the link's sockets are open: commits the link to the port, or says why not. */
@@ -343,7 +369,7 @@ public final class HubCore {
 
     /** The model broke the pair. @return whether anything changed (the pair, a port, a connection) */
     public boolean breakPair(RobotPair pair, long nowNs, Changes out) {
-        PairStats pairStats = pairStats(pair, nowNs); // first seen now: seen up until this break
+        PairStats pairStats = seen(pair, nowNs, out); // first seen now: seen up until this break
         boolean changed = broken.add(pair);
         if (changed) {
             pairStats.modelChanged(true);
@@ -360,7 +386,7 @@ public final class HubCore {
 
     /** The model resumed the pair. @return whether anything changed */
     public boolean resumePair(RobotPair pair, long nowNs, Changes out) {
-        PairStats pairStats = pairStats(pair, nowNs);
+        PairStats pairStats = seen(pair, nowNs, out);
         boolean changed = broken.remove(pair);
         if (changed) {
             pairStats.modelChanged(false);
@@ -379,6 +405,12 @@ public final class HubCore {
 
     /** Forces the pair down or up ({@link ForcedPairs}); the names need not be registered. */
     public void force(RobotPair pair, Force force, long nowNs, Changes out) {
+        force(pair, force, RatePin.NONE, nowNs, out);
+    }
+
+    /** Forces the pair, up with its rate and delay pinned (or not: {@link RatePin#NONE}). */
+    public void force(RobotPair pair, Force force, RatePin pin, long nowNs, Changes out) {
+        forcedPairs.pin(pair, force == Force.UP ? pin : RatePin.NONE);
         Force before = forcedPairs.force(pair, force);
         if (before != force) {
             out.add(new HubEvent.PairForced(pair.first(), pair.second(), force == Force.UP));
@@ -459,9 +491,84 @@ public final class HubCore {
         return broken.contains(pair) ? PairState.BROKEN : PairState.UP;
     }
 
-    /** The pair's statistics, from now on when it was not seen yet. */
-    private PairStats pairStats(RobotPair pair, long nowNs) {
+    /**
+     * The pair's statistics, from now on when it was not seen yet; its conditions both ways too
+     * (their rates said, with shaping on).
+     */
+    private PairStats seen(RobotPair pair, long nowNs, Changes out) {
+        for (OrderedPair way : ways(pair)) {
+            if (!conditions.containsKey(way)) {
+                PairCondition condition = conditionOf(way);
+                conditions.put(way, new AtomicReference<>(condition));
+                if (condition.shaped() && measured.containsKey(way)) { // otherwise said at the first measurement
+                    said.add(way);
+                    out.add(new HubEvent.RateChanged(way, condition.bitsPerSecond()));
+                }
+            }
+        }
         return stats.of(pair, stateOf(pair), bothPresent(pair), nowNs);
+    }
+
+    private static List<OrderedPair> ways(RobotPair pair) {
+        OrderedPair way = new OrderedPair(pair.first(), pair.second());
+        return List.of(way, way.reversed());
+    }
+
+    /**
+     * The one place a pair's condition one way is computed: its state (a force wins over the
+     * model's verdict), and with shaping on its rate and delay: an operator's pin wins, then what
+     * the model says of the link ({@code linkQualityForPair}), then the rate table for the
+     * model's strength and the delay setting.
+     */
+    private PairCondition conditionOf(OrderedPair way) {
+        RobotPair pair = RobotPair.of(way.from(), way.to());
+        PairState state = stateOf(pair);
+        if (!shaping.on()) {
+            return new PairCondition(state, 0, 0);
+        }
+        RatePin pin = forcedPairs.pinOf(pair);
+        Measurement measurement = measured.getOrDefault(way, Measurement.NONE);
+        long rate = pin.pinsRate() ? pin.bitsPerSecond()
+                : measurement.quality().map(LinkQuality::bitsPerSecond).orElseGet(() -> shaping.rates().rateFor(measurement.strength()));
+        int delay = pin.pinsDelay() ? pin.delayMs() : measurement.quality().map(LinkQuality::delayMs).orElse(shaping.delayMs());
+        return new PairCondition(state, rate, delay);
+    }
+
+    /** Recomputes the pair's conditions both ways (those kept); a rate that changed is said. */
+    private void refresh(RobotPair pair, Changes out) {
+        for (OrderedPair way : ways(pair)) {
+            AtomicReference<PairCondition> cell = conditions.get(way);
+            if (cell != null) {
+                PairCondition now = conditionOf(way);
+                PairCondition before = cell.getAndSet(now);
+                boolean firstSaid = measured.containsKey(way) && !said.contains(way);
+                if (now.shaped() && (now.bitsPerSecond() != before.bitsPerSecond() || firstSaid)) {
+                    said.add(way);
+                    out.add(new HubEvent.RateChanged(way, now.bitsPerSecond()));
+                }
+            }
+        }
+    }
+
+    /** With links shaped: the pairs whose strength the hub asks the model for, a few times a second. */
+    public List<RobotPair> pairsToMeasure() {
+        return conditions.keySet().stream().map(way -> RobotPair.of(way.from(), way.to())).distinct().toList();
+    }
+
+    /**
+     * What the model said of these pairs, each way: their rates follow (the hub's sampler asks
+     * a few times a second, a DNS before it allocates, so a new pair starts at its own rate).
+     */
+    public void measured(Map<OrderedPair, Measurement> measurements, Changes out) {
+        measured.putAll(measurements);
+        measurements.keySet().stream().map(way -> RobotPair.of(way.from(), way.to())).distinct().forEach(pair -> refresh(pair, out));
+    }
+
+    /** Every seen pair's condition one way, now. */
+    public Map<OrderedPair, PairCondition> conditions() {
+        Map<OrderedPair, PairCondition> now = new HashMap<>();
+        conditions.forEach((way, cell) -> now.put(way, cell.get()));
+        return now;
     }
 
     /**
@@ -469,6 +576,7 @@ public final class HubCore {
      * {@code say}, a change is logged, one line (a force says itself: the event's line).
      */
     private void recordState(RobotPair pair, boolean say, long nowNs, Changes out) {
+        refresh(pair, out);
         PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
         if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), nowNs) && say) {
@@ -533,5 +641,9 @@ public final class HubCore {
             memory.clear(name);
         }
         stats.forget(name, pair -> ports.between(pair).isEmpty());
+        conditions.keySet().removeIf(way -> (way.from().equals(name) || way.to().equals(name))
+                && stats.get(RobotPair.of(way.from(), way.to())) == null);
+        measured.keySet().retainAll(conditions.keySet());
+        said.retainAll(conditions.keySet());
     }
 }

@@ -66,6 +66,13 @@ public sealed interface HubEvent {
         }
     }
 
+    /** With links shaped: a pair's rate one way was set or changed. */
+    record RateChanged(OrderedPair way, long bitsPerSecond) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.rateChanged(way.from(), way.to(), bitsPerSecond);
+        }
+    }
+
     /** The model's: a pair out of range. */
     record OutOfRange(String from, String to, double strength, double distance) implements HubEvent {
         public void deliverTo(EventSink sink) {

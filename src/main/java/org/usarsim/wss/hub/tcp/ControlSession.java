@@ -12,6 +12,7 @@ import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
@@ -19,6 +20,8 @@ import org.usarsim.wss.protocol.CommandParser;
 import org.usarsim.wss.protocol.LineSplitter;
 import org.usarsim.wss.protocol.ProtocolException;
 import org.usarsim.wss.protocol.Replies;
+import org.usarsim.wss.shaping.Bitrate;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * One robot's control connection, on its own thread: reads lines, answers each with exactly one
@@ -185,7 +188,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     }
 
     /**
-     * The operator command (docs/protocol.md section 7): {@code FORCE {Robot A} {Peer B} {State Down|Up|Model}}.
+     * The operator command (docs/protocol.md section 7): {@code FORCE {Robot A} {Peer B} {State Down|Up|Model}}, up with an optional {@code {Rate r} {Delay d}}.
      * Only from an address of wss.operators; the names need not be registered.
      */
     private String force(Command command) throws ProtocolException {
@@ -204,10 +207,33 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (!List.of("down", "up", "model").contains(wanted)) {
             return Replies.error(Replies.STATE_MUST_BE_DOWN_UP_OR_MODEL);
         }
-        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state); // who, before what it does
+        String rateText = command.value("Rate");
+        String delayText = command.value("Delay");
+        RatePin pin = RatePin.NONE;
+        if (rateText != null || delayText != null) {
+            if (!wanted.equals("up")) {
+                return Replies.error(Replies.RATE_AND_DELAY_NEED_STATE_UP);
+            }
+            long rate = 0;
+            int delay = -1;
+            try {
+                rate = rateText == null ? 0 : Bitrate.parse(rateText);
+            } catch (IllegalArgumentException e) {
+                return Replies.error(Replies.RATE_MUST_BE_A_BIT_RATE);
+            }
+            try {
+                delay = delayText == null ? -1 : ShapingConfig.parseDelayMs(delayText);
+            } catch (IllegalArgumentException e) {
+                return Replies.error(Replies.DELAY_MUST_BE_0_TO_10000_MS);
+            }
+            pin = new RatePin(rate, delay);
+        }
+        String shape = pin.equals(RatePin.NONE) ? "" : (pin.pinsRate() ? " rate " + Bitrate.format(pin.bitsPerSecond()) : "")
+                + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "");
+        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape); // who, before what it does
         switch (wanted) {
             case "down" -> hub.force(first, second, Force.DOWN);
-            case "up" -> hub.force(first, second, Force.UP);
+            case "up" -> hub.force(first, second, Force.UP, pin);
             default -> hub.release(first, second);
         }
         return Replies.forceOk();

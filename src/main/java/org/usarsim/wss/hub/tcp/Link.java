@@ -18,10 +18,13 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.CloseReason;
 import org.usarsim.wss.hub.core.Connection;
+import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.PortKey;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.Airtime;
+import org.usarsim.wss.shaping.ShapedFlow;
 
 /**
  * One forwarded connection: the socket a source robot opened on a WSS port, and the socket the
@@ -53,6 +56,8 @@ public final class Link implements Runnable, Connection {
     private final AtomicBoolean closed = new AtomicBoolean();
     /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
     private final PairStats stats;
+    /** With links shaped: how; null forwards as fast as the machine goes (wss.shaping = off). */
+    private final Shaping shaping;
     /** Why the link closes: the first reason given wins. */
     private final AtomicReference<CloseReason> closeReason = new AtomicReference<>();
     /** Set once the connection to the target is made (what the window lists as established). */
@@ -60,8 +65,9 @@ public final class Link implements Runnable, Connection {
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     public Link(Switchboard switchboard, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
-            SocketBuffers buffers, WssEventListener events, PairStats stats) throws IOException {
+            SocketBuffers buffers, WssEventListener events, PairStats stats, Shaping shaping) throws IOException {
         this.switchboard = switchboard;
+        this.shaping = shaping;
         this.stats = stats;
         this.port = port;
         this.key = port.key;
@@ -192,6 +198,10 @@ public final class Link implements Runnable, Connection {
         Direction down = new Direction(target, source, key.to(), key.from());
         SelectionKey sourceKey = source.register(selector, SelectionKey.OP_READ);
         SelectionKey targetKey = target.register(selector, SelectionKey.OP_READ);
+        if (shaping != null) {
+            forwardShaped(up, down, sourceKey, targetKey);
+            return;
+        }
         while (!closed.get()) {
             up.coalesce(false);
             down.coalesce(false);
@@ -225,6 +235,64 @@ public final class Link implements Runnable, Connection {
             sourceKey.interestOps(interest(ended, up, down));
             targetKey.interestOps(interest(ended, down, up));
         }
+    }
+
+    /**
+     * The shaped loop (wss.shaping = on): each direction reads only what its {@link ShapedFlow}
+     * has room for, and writes its bytes when they are due (their airtime's end plus the delay),
+     * waiting on the selector at most until the next is due. The pair's condition is read at every
+     * turn, so a rate change reaches the bytes still waiting within one poll of the hub's. As
+     * unshaped, a side's end stops the reading, and both streams end once what was read is written.
+     */
+    private void forwardShaped(Direction up, Direction down, SelectionKey sourceKey, SelectionKey targetKey) throws IOException {
+        long now = shaping.clock().getAsLong();
+        up.shape(shaping.airtime(), shaping.up(), now);
+        down.shape(shaping.airtime(), shaping.down(), now);
+        try {
+            while (!closed.get()) {
+                now = shaping.clock().getAsLong();
+                up.follow();
+                down.follow();
+                up.writeDue(now);
+                down.writeDue(now);
+                boolean ended = up.ended || down.ended;
+                if (ended && up.flow.held() == 0 && down.flow.held() == 0) {
+                    finish(up, down, sourceKey, targetKey);
+                    return;
+                }
+                sourceKey.interestOps(shapedInterest(ended, up, down, now));
+                targetKey.interestOps(shapedInterest(ended, down, up, now));
+                long wait = Math.min(up.flow.nanosUntilNext(now), down.flow.nanosUntilNext(now));
+                if (wait == 0) {
+                    selector.selectNow();
+                } else if (wait == Long.MAX_VALUE) {
+                    selector.select();
+                } else {
+                    selector.select(Math.max(1, TimeUnit.NANOSECONDS.toMillis(wait + 999_999)));
+                }
+                boolean sourceReadable = sourceKey.isValid() && selector.selectedKeys().contains(sourceKey) && sourceKey.isReadable();
+                boolean targetReadable = targetKey.isValid() && selector.selectedKeys().contains(targetKey) && targetKey.isReadable();
+                selector.selectedKeys().clear();
+                if (closed.get()) {
+                    return;
+                }
+                if (sourceReadable && !up.ended && !down.ended) {
+                    up.readShaped(shaping.clock().getAsLong());
+                }
+                if (targetReadable && !up.ended && !down.ended) {
+                    down.readShaped(shaping.clock().getAsLong());
+                }
+            }
+        } finally {
+            up.flow.close();
+            down.flow.close();
+        }
+    }
+
+    /** A channel is read while its direction has room, and written while bytes due for it wait. */
+    private static int shapedInterest(boolean ended, Direction from, Direction to, long now) {
+        int ops = !ended && from.flow.room() > 0 ? SelectionKey.OP_READ : 0;
+        return to.flow.due(now) > 0 ? ops | SelectionKey.OP_WRITE : ops;
     }
 
     /**
@@ -294,6 +362,63 @@ public final class Link implements Runnable, Connection {
             this.fromRobot = fromRobot;
             this.toRobot = toRobot;
             this.forwarded = stats.bytesFrom(fromRobot);
+        }
+
+        /** With shaping on: this direction's flow and its pair's live condition one way. */
+        private ShapedFlow flow;
+        private AtomicReference<PairCondition> condition;
+        private PairCondition followed;
+
+        void shape(Airtime airtime, AtomicReference<PairCondition> condition, long now) {
+            this.condition = condition;
+            this.followed = condition.get();
+            flow = new ShapedFlow(airtime.open(fromRobot, toRobot, now), followed.bitsPerSecond(), followed.delayMs(), chunkSize);
+        }
+
+        /** Takes the pair's condition now: a new rate or delay applies to the bytes not yet on the air. */
+        void follow() {
+            PairCondition now = condition.get();
+            if (now != followed) {
+                followed = now;
+                if (now.shaped()) {
+                    flow.setConditions(now.bitsPerSecond(), now.delayMs());
+                }
+            }
+        }
+
+        /** Reads what the flow has room for, a chunk at a time, while each read fills what it asked. */
+        void readShaped(long now) {
+            for (int i = 0; i < CHUNKS_PER_TURN; i++) {
+                int room = flow.room();
+                if (room == 0) {
+                    return;
+                }
+                buffer.clear();
+                buffer.limit(Math.min(room, buffer.capacity()));
+                int asked = buffer.limit();
+                int read = read();
+                if (read < 0) {
+                    ended = true;
+                    return;
+                }
+                if (read == 0) {
+                    return;
+                }
+                buffer.flip();
+                flow.accept(buffer, now);
+                if (read < asked) {
+                    return;
+                }
+            }
+        }
+
+        /** Writes what is due: the one count of bytes sent, as unshaped. */
+        void writeDue(long now) throws IOException {
+            int written = flow.writeTo(out, now);
+            if (written > 0) {
+                forwarded.add(written);
+                events.dataSent(fromRobot, toRobot, written);
+            }
         }
 
         boolean pending() {

@@ -7,6 +7,7 @@ import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.WssPort;
 
 /**
@@ -37,6 +38,9 @@ public interface Switchboard {
 
     /** FORCE ... {State Down|Up}. */
     void force(String robotA, String robotB, Force force);
+
+    /** FORCE ... {State Up} {Rate r} {Delay d}: up, with the pair's rate and delay pinned. */
+    void force(String robotA, String robotB, Force force, RatePin pin);
 
     /** FORCE ... {State Model}. */
     void release(String robotA, String robotB);

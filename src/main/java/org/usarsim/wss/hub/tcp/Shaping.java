@@ -1,0 +1,15 @@
+package org.usarsim.wss.hub.tcp;
+
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.LongSupplier;
+import org.usarsim.wss.hub.core.PairCondition;
+import org.usarsim.wss.shaping.Airtime;
+
+/**
+ * What a shaped link forwards by (docs/shaping.md): its pair's live condition each way (the
+ * core's one value per ordered pair, {@code up} from the port's source to its target), the
+ * robots' radios and the clock.
+ */
+public record Shaping(Airtime airtime, AtomicReference<PairCondition> up, AtomicReference<PairCondition> down,
+        LongSupplier clock) {
+}

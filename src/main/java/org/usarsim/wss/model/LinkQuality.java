@@ -1,0 +1,18 @@
+package org.usarsim.wss.model;
+
+/**
+ * What a model may say of a link one way besides its strength, when links are shaped
+ * (docs/shaping.md): its rate in bit/s (more than 0) and its delay in milliseconds (0 to 10,000).
+ * A model that says nothing leaves both to the server's shaping settings.
+ */
+public record LinkQuality(long bitsPerSecond, int delayMs) {
+
+    public LinkQuality {
+        if (bitsPerSecond <= 0) {
+            throw new IllegalArgumentException("a rate is more than 0 bit/s, not " + bitsPerSecond);
+        }
+        if (delayMs < 0 || delayMs > 10_000) {
+            throw new IllegalArgumentException("a delay is 0 to 10000 ms, not " + delayMs);
+        }
+    }
+}

@@ -24,7 +24,7 @@ class WindowServersForceTest {
         Properties file = new Properties();
         file.setProperty("wss.bindAddress", "127.0.0.1");
         file.setProperty("wss.force.down", "r1:r2");
-        WindowServers servers = new WindowServers(Settings.of(file, "test"));
+        WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
         Servers.Running running = servers.start("0", new NoopPropagationModel(), false, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");

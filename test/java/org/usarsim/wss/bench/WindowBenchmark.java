@@ -20,7 +20,7 @@ import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
@@ -113,7 +113,7 @@ public final class WindowBenchmark {
         CountDownLatch closed = new CountDownLatch(1);
         MainWindow[] window = new MainWindow[1];
         SwingUtilities.invokeAndWait(() -> window[0] = MainWindow.open(servers, List.of(new NoopPropagationModel()),
-                new WindowSettings(preferences), new ModelPreferences(preferences.node("models")), windowLog,
+                new WindowPreferences(preferences), new ModelPreferences(preferences.node("models")), windowLog,
                 new Launch("0", null, false, null, true), closed::countDown));
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (hubs.isEmpty() && System.nanoTime() < deadline) {

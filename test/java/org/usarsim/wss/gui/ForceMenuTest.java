@@ -64,7 +64,7 @@ class ForceMenuTest {
         CountDownLatch windowClosed = new CountDownLatch(1);
         closed = windowClosed;
         frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel()),
-                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, new Launch("0", "NoopPropagationModel", false, null, false), windowClosed::countDown).frame());
         menu = onEdt(() -> new ForceMenu(servers::running));
     }

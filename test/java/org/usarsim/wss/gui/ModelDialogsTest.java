@@ -32,12 +32,12 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.model.ModelCatalog;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PluginJars;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
@@ -55,7 +55,7 @@ class ModelDialogsTest {
         private final String name;
         private final boolean configurable;
         private final List<Setting> settings;
-        volatile ModelSettings configured;
+        volatile SettingValues configured;
         volatile Boolean dialogEditable;
 
         Recorder(String name, boolean configurable) {
@@ -79,7 +79,7 @@ class ModelDialogsTest {
         }
 
         @Override
-        public void configure(ModelSettings settings) {
+        public void configure(SettingValues settings) {
             configured = settings;
         }
 
@@ -271,7 +271,7 @@ class ModelDialogsTest {
     void theObstacleModelGetsTheObstaclesGroupAndCancelLeavesItAlone() throws Exception {
         int[] ports = closedPorts(2);
         ObstaclePropagationModel model = new ObstaclePropagationModel();
-        model.configure(new ModelSettings(Map.of("usarsim.port", String.valueOf(ports[0]))));
+        model.configure(new SettingValues(Map.of("usarsim.port", String.valueOf(ports[0]))));
         CompletableFuture<Boolean> shown = show(model, true);
         Window dialog = dialog("ObstaclePropagationModel Configuration");
         assertTrue(hasField(dialog, "obstacle.attenuation"));

@@ -15,21 +15,21 @@ import org.usarsim.wss.model.WssEventListener;
  */
 final class WindowServers implements Servers {
 
-    private final Settings settings;
+    private final ConfigFile configFile;
     private final AtomicReference<Server> current = new AtomicReference<>();
 
-    WindowServers(Settings settings) {
-        this.settings = settings;
+    WindowServers(ConfigFile configFile) {
+        this.configFile = configFile;
     }
 
     @Override
     public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Server.StartFailure {
-        String problem = Setting.find(Settings.SERVER, "wss.port").problem(port);
+        String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }
-        HubConfig config = settings.hubConfig().withControlPort(Integer.parseInt(port.strip()));
-        Server server = Server.create(config, model, eventLog ? settings.eventLogDir() : null);
+        HubConfig config = configFile.hubConfig().withControlPort(Integer.parseInt(port.strip()));
+        Server server = Server.create(config, model, eventLog ? configFile.eventLogDir() : null);
         server.hub().addListener(listener);
         current.set(server);
         try {

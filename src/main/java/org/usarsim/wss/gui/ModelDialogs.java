@@ -29,7 +29,7 @@ public final class ModelDialogs {
      * ({@code isConfigurable()}) shows its {@code showConfigurationDialog(editable)}; a
      * {@link SimulatorModel} (DistanceOnlyPropagationModel, ObstaclePropagationModel) gets
      * {@link DistanceModelDialog}, provided it declares the keys that dialog shows; any other
-     * model with declared settings gets the {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
+     * model with declared settings gets the {@link GeneratedModelDialog} built from them. The built-in dialogs' OK stores the values in
      * {@code preferences}, under the model's {@code name()}, and hands them to the model's
      * {@code configure}. The built-in dialogs show the stored values. Call on the Swing event thread.
      *
@@ -54,7 +54,7 @@ public final class ModelDialogs {
             dialog.setVisible(true);
             saved = dialog.saved();
         } else if (!model.settings().isEmpty()) {
-            SettingsDialog dialog = new SettingsDialog(owner, model, editable, preferences, values);
+            GeneratedModelDialog dialog = new GeneratedModelDialog(owner, model, editable, preferences, values);
             dialog.setVisible(true);
             saved = dialog.saved();
         } else {
@@ -72,6 +72,6 @@ public final class ModelDialogs {
      * last stored, in this session or an earlier one.
      */
     public static void configureFromPreferences(PropagationModel model, ModelPreferences preferences) {
-        model.configure(preferences.settings(model));
+        model.configure(preferences.settingValues(model));
     }
 }

@@ -7,9 +7,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.simulator.PollClock;
 import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorConnection;
@@ -57,7 +57,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected void started(ModelSettings settings) {
+    protected void started(SettingValues settings) {
         attenuation = settings.getDouble("obstacle.attenuation", 0);
         counts = new ObstacleCounts(settings.getDouble("obstacle.cacheDistance", 0));
         getobsUnanswered = false;

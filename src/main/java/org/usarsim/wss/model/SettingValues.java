@@ -4,15 +4,16 @@ import java.util.Map;
 import java.util.TreeMap;
 
 /**
- * The settings handed to a model: string values by key ({@code usarsim.host},
- * {@code distance.cutoff}, ...), one for each {@link Setting} the model declares. The server checked
- * every value with its setting's rule before; a model reads them with a fallback for any missing.
+ * The values of a model's declared settings, as {@code PropagationModel.configure} is handed them:
+ * strings by key ({@code usarsim.host}, {@code distance.cutoff}, ...), one for each {@link Setting}
+ * the model declares. The server checked every value with its setting's rule before; a model reads
+ * them with a fallback for any missing.
  */
-public final class ModelSettings {
+public final class SettingValues {
 
     private final Map<String, String> values;
 
-    public ModelSettings(Map<String, String> values) {
+    public SettingValues(Map<String, String> values) {
         this.values = Map.copyOf(values);
     }
 

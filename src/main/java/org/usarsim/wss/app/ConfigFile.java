@@ -23,21 +23,22 @@ import java.util.logging.Level;
 import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 
 /**
- * A headless run's configuration: the server's own {@code wss.*} settings, declared here with the
- * models' {@link Setting} type, and the settings every model of the catalog declares
- * ({@code PropagationModel.settings()}). Headless mode reads the defaults and one properties file,
+ * A run's configuration as a properties file (--config FILE) gives it, over the built-in defaults:
+ * the server's own {@code wss.*} settings, declared here with the models' {@link Setting} type,
+ * and the settings every model of the catalog declares ({@code PropagationModel.settings()}).
+ * The window takes its server settings from it too. Headless mode reads the defaults and one properties file,
  * nothing else, so a run is reproducible. A key is accepted when the server or a model of the
  * catalog declares it, its value when that declaration's rule accepts it; the chosen model
  * ({@code wss.model}) is handed the values of its own keys. docs/headless.md documents each key.
  */
-public final class Settings {
+public final class ConfigFile {
 
     /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
@@ -81,42 +82,42 @@ public final class Settings {
     private final ModelCatalog catalog;
     private final List<String> ignored;
 
-    private Settings(Map<String, String> values, ModelCatalog catalog, List<String> ignored) {
+    private ConfigFile(Map<String, String> values, ModelCatalog catalog, List<String> ignored) {
         this.values = values;
         this.catalog = catalog;
         this.ignored = ignored;
     }
 
     /** The built-in defaults, with the built-in models and those of the plugins folder beside the code. */
-    static Settings defaults() {
+    static ConfigFile defaults() {
         try {
             return of(new Properties(), "the defaults");
-        } catch (SettingsException e) {
+        } catch (ConfigFileException e) {
             throw new IllegalStateException("a default breaks its own rule: " + e.getMessage(), e);
         }
     }
 
     /** The defaults overridden by a properties file, with the catalog {@link #modelsFor} gives. */
-    static Settings load(Path file) throws SettingsException {
+    static ConfigFile load(Path file) throws ConfigFileException {
         return of(read(file), file.toString());
     }
 
     /** The properties of a file. */
-    static Properties read(Path file) throws SettingsException {
+    static Properties read(Path file) throws ConfigFileException {
         Properties properties = new Properties();
         try (InputStream in = Files.newInputStream(file); Reader reader = new InputStreamReader(in, StandardCharsets.UTF_8.newDecoder())) {
             properties.load(reader);
         } catch (CharacterCodingException e) {
-            throw new SettingsException("cannot read " + file + ": it is not UTF-8 text (write it in UTF-8, or use \\uXXXX escapes)");
+            throw new ConfigFileException("cannot read " + file + ": it is not UTF-8 text (write it in UTF-8, or use \\uXXXX escapes)");
         } catch (IOException | IllegalArgumentException e) {
-            throw new SettingsException("cannot read " + file + ": " + e.getMessage());
+            throw new ConfigFileException("cannot read " + file + ": " + e.getMessage());
         }
         return properties;
     }
 
     /** The defaults overridden by these properties, with the catalog {@link #modelsFor} gives. */
-    static Settings of(Properties properties, String source) throws SettingsException {
-        return of(properties, source, Settings::modelsFor);
+    static ConfigFile of(Properties properties, String source) throws ConfigFileException {
+        return of(properties, source, ConfigFile::modelsFor);
     }
 
     /**
@@ -126,8 +127,8 @@ public final class Settings {
      * with the rule of the model that declares it: the chosen model's own declaration first, then
      * the first model's of the catalog that declares the key.
      */
-    static Settings of(Properties properties, String source, Function<Settings, ModelCatalog> catalogFor)
-            throws SettingsException {
+    static ConfigFile of(Properties properties, String source, Function<ConfigFile, ModelCatalog> catalogFor)
+            throws ConfigFileException {
         List<String> keys = properties.stringPropertyNames().stream().sorted().toList();
         Map<String, Setting> rules = new LinkedHashMap<>();
         SERVER.forEach(setting -> rules.put(setting.key(), setting));
@@ -137,7 +138,7 @@ public final class Settings {
                 values.put(key, checked(rules.get(key), properties.getProperty(key), source));
             }
         }
-        Settings server = new Settings(values, null, List.of());
+        ConfigFile server = new ConfigFile(values, null, List.of());
         server.forcedPairs(source);
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
@@ -152,7 +153,7 @@ public final class Settings {
             String value = properties.getProperty(key).strip();
             Setting rule = rules.get(key);
             if (rule == null) {
-                throw new SettingsException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
+                throw new ConfigFileException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
                         + String.join(", ", rules.keySet()));
             }
             if (!key.startsWith("wss.")) {
@@ -162,14 +163,14 @@ public final class Settings {
                 }
             }
         }
-        return new Settings(values, catalog, List.copyOf(ignored));
+        return new ConfigFile(values, catalog, List.copyOf(ignored));
     }
 
-    private static String checked(Setting rule, String value, String source) throws SettingsException {
+    private static String checked(Setting rule, String value, String source) throws ConfigFileException {
         String stripped = value.strip();
         String problem = rule.problem(stripped);
         if (problem != null) {
-            throw new SettingsException(source + ": " + rule.key() + " = '" + stripped + "' is not " + problem);
+            throw new ConfigFileException(source + ": " + rule.key() + " = '" + stripped + "' is not " + problem);
         }
         return stripped;
     }
@@ -178,7 +179,7 @@ public final class Settings {
      * The models a headless run chooses from: the built-in ones, then the plugins of the folder
      * beside the code (plugins/ beside wss.jar), then those of wss.pluginDir.
      */
-    static ModelCatalog modelsFor(Settings server) {
+    static ModelCatalog modelsFor(ConfigFile server) {
         List<Path> pluginFolders = new ArrayList<>();
         PluginFolder.besideCodeOf(Main.class).ifPresent(pluginFolders::add);
         server.pluginDir().ifPresent(pluginFolders::add);
@@ -211,7 +212,7 @@ public final class Settings {
                 .append("      ").append(setting.expected()).append(setting.help().isEmpty() ? "" : ". " + setting.help()).append('\n');
     }
 
-    /** The models these settings were checked against. */
+    /** The models this configuration was checked against. */
     ModelCatalog catalog() {
         return catalog;
     }
@@ -262,32 +263,32 @@ public final class Settings {
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
                     Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
                     Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null));
-        } catch (UnknownHostException | SettingsException e) {
+        } catch (UnknownHostException | ConfigFileException e) {
             throw new IllegalStateException("wss.bindAddress, wss.operators and wss.force.* were checked", e);
         }
     }
 
     /**
-     * The model keys (not {@code wss.*}) that {@code file}, the properties these settings were read
-     * from, sets, with their checked values: what the window puts over the stored model settings.
+     * The model keys (not {@code wss.*}) that {@code file}, the properties this configuration was
+     * read from, sets, with their checked values: what the window puts over the stored model settings.
      */
-    ModelSettings modelKeysSetBy(Properties file) {
+    SettingValues modelKeysSetBy(Properties file) {
         Map<String, String> set = new LinkedHashMap<>();
         file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
-        return new ModelSettings(set);
+        return new SettingValues(set);
     }
 
     /**
      * The pairs of wss.force.down and wss.force.up, each checked by its rule before.
      *
-     * @throws SettingsException when a pair is in both (a bad configuration of {@code source})
+     * @throws ConfigFileException when a pair is in both (a bad configuration of {@code source})
      */
-    private Map<RobotPair, Force> forcedPairs(String source) throws SettingsException {
+    private Map<RobotPair, Force> forcedPairs(String source) throws ConfigFileException {
         Map<RobotPair, Force> forced = new LinkedHashMap<>();
         listed(get("wss.force.down"), RobotPair::listOf).forEach(pair -> forced.put(pair, Force.DOWN));
         for (RobotPair pair : listed(get("wss.force.up"), RobotPair::listOf)) {
             if (forced.put(pair, Force.UP) != null) {
-                throw new SettingsException(source + ": the pair " + pair.first() + ":" + pair.second()
+                throw new ConfigFileException(source + ": the pair " + pair.first() + ":" + pair.second()
                         + " is in both wss.force.down and wss.force.up; force it one way");
             }
         }
@@ -300,12 +301,12 @@ public final class Settings {
     }
 
     /** What the chosen model is handed: the value of each key it declares; none when there is no such model. */
-    ModelSettings modelSettings() {
+    SettingValues modelValues() {
         PropagationModel model = catalog.find(modelName());
         Map<String, String> own = new LinkedHashMap<>();
         if (model != null) {
             model.settings().forEach(setting -> own.put(setting.key(), values.get(setting.key())));
         }
-        return new ModelSettings(own);
+        return new SettingValues(own);
     }
 }

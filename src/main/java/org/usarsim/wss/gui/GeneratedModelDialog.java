@@ -26,7 +26,7 @@ import org.usarsim.wss.model.Setting;
  * {@link ModelPreferences}. Read-only (the server runs): every field disabled, Close only.
  * Modal; build and show it on the Swing event thread.
  */
-final class SettingsDialog extends JDialog {
+final class GeneratedModelDialog extends JDialog {
 
     private final PropagationModel model;
     private final List<Setting> declared;
@@ -43,7 +43,7 @@ final class SettingsDialog extends JDialog {
      * Shows {@code values} (a value for each key the model declares); OK stores the values in
      * {@code model.name()}'s preferences. It does not touch the model itself.
      */
-    SettingsDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
+    GeneratedModelDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
         super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
         this.model = model;
         this.declared = model.settings();

@@ -4,18 +4,18 @@ import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 
 /**
- * The settings a model's next start uses, which are also those its dialog shows: the model's
+ * The setting values a model's next start uses, which are also those its dialog shows: the model's
  * stored preferences, with the keys a --config file sets over them until the model's dialog stores
  * new values with OK (from then on, the stored values: what was entered). Event thread.
  */
-final class RunSettings {
+final class NextRunValues {
 
-    private static final Logger LOG = Logger.getLogger(RunSettings.class.getName());
+    private static final Logger LOG = Logger.getLogger(NextRunValues.class.getName());
 
     private final ModelPreferences preferences;
     /** The model keys the --config file sets, checked; empty without a file. */
@@ -23,7 +23,7 @@ final class RunSettings {
     /** The models whose dialog stored values in this session: the file's no longer go over them. */
     private final Set<String> entered = new HashSet<>();
 
-    RunSettings(ModelPreferences preferences, ModelSettings file) {
+    NextRunValues(ModelPreferences preferences, SettingValues file) {
         this.preferences = preferences;
         this.file = file == null ? Map.of() : file.asMap();
     }

@@ -10,18 +10,18 @@ import java.util.prefs.Preferences;
  * Logging" and the window's bounds, under {@code org/usarsim/wss/window} (tests pass a throw-away
  * node). The models' own settings are {@link ModelPreferences}'.
  */
-public final class WindowSettings {
+public final class WindowPreferences {
 
-    private static final Logger LOG = Logger.getLogger(WindowSettings.class.getName());
+    private static final Logger LOG = Logger.getLogger(WindowPreferences.class.getName());
 
     private final Preferences node;
 
     /** The user's: {@code Preferences.userRoot().node("org/usarsim/wss/window")}. */
-    public WindowSettings() {
+    public WindowPreferences() {
         this(Preferences.userRoot().node("org/usarsim/wss/window"));
     }
 
-    public WindowSettings(Preferences node) {
+    public WindowPreferences(Preferences node) {
         this.node = node;
     }
 

@@ -27,7 +27,7 @@ import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
-class SettingsTest {
+class ConfigFileTest {
 
     /** Every key and its documented default. */
     private static final Map<String, String> DEFAULTS = Map.ofEntries(
@@ -80,19 +80,19 @@ class SettingsTest {
 
     @Test
     void defaultsHaveEveryKey() {
-        Settings settings = Settings.defaults();
+        ConfigFile settings = ConfigFile.defaults();
         assertAll(DEFAULTS.entrySet().stream().map(e -> () -> assertEquals(e.getValue(), settings.get(e.getKey()), e.getKey())));
     }
 
     @Test
     void defaultsHaveNoOtherKey() throws Exception {
-        Settings settings = Settings.defaults();
+        ConfigFile settings = ConfigFile.defaults();
         assertEquals(null, settings.get("wss.nonsense"));
-        assertEquals(Map.of(), settings.modelSettings().asMap(), "NoopPropagationModel declares no setting");
+        assertEquals(Map.of(), settings.modelValues().asMap(), "NoopPropagationModel declares no setting");
         // the obstacle model declares every non-wss key: exactly the documented ones.
         Map<String, String> expected = new TreeMap<>(DEFAULTS);
         expected.keySet().removeIf(key -> key.startsWith("wss."));
-        assertEquals(expected, Settings.of(props("wss.model", "ObstaclePropagationModel"), "t").modelSettings().asMap());
+        assertEquals(expected, ConfigFile.of(props("wss.model", "ObstaclePropagationModel"), "t").modelValues().asMap());
     }
 
     @Test
@@ -101,12 +101,12 @@ class SettingsTest {
         file.setProperty("wss.port", "0");
         file.setProperty("distance.n", " 3 ");
         file.setProperty("usarsim.port", "7436");
-        assertEquals(Map.of("distance.n", "3", "usarsim.port", "7436"), Settings.of(file, "t").modelKeysSetBy(file).asMap());
+        assertEquals(Map.of("distance.n", "3", "usarsim.port", "7436"), ConfigFile.of(file, "t").modelKeysSetBy(file).asMap());
     }
 
     @Test
     void defaultTypedValues() {
-        Settings settings = Settings.defaults();
+        ConfigFile settings = ConfigFile.defaults();
         assertEquals("NoopPropagationModel", settings.modelName());
         assertFalse(settings.eventLog());
         assertEquals(Level.INFO, settings.logLevel());
@@ -115,7 +115,7 @@ class SettingsTest {
 
     @Test
     void defaultHubConfig() throws Exception {
-        HubConfig config = Settings.defaults().hubConfig();
+        HubConfig config = ConfigFile.defaults().hubConfig();
         assertEquals(InetAddress.getByName("0.0.0.0"), config.bindAddress());
         assertTrue(config.bindAddress().isAnyLocalAddress());
         assertEquals(50000, config.controlPort());
@@ -131,13 +131,13 @@ class SettingsTest {
 
     @Test
     void emptyPropertiesGiveTheDefaults() throws Exception {
-        Settings settings = Settings.of(new Properties(), "nothing");
+        ConfigFile settings = ConfigFile.of(new Properties(), "nothing");
         DEFAULTS.forEach((key, value) -> assertEquals(value, settings.get(key), key));
     }
 
     @Test
     void emptyFileGivesTheDefaults() throws Exception {
-        Settings settings = Settings.load(write("# nothing but a comment\n\n"));
+        ConfigFile settings = ConfigFile.load(write("# nothing but a comment\n\n"));
         DEFAULTS.forEach((key, value) -> assertEquals(value, settings.get(key), key));
     }
 
@@ -159,7 +159,7 @@ class SettingsTest {
                 "distance.n=2.5   ",
                 "obstacle.attenuation=0",
                 ""));
-        Settings settings = Settings.load(file);
+        ConfigFile settings = ConfigFile.load(file);
         assertEquals("0", settings.get("wss.port"));
         assertEquals("127.0.0.1", settings.get("wss.bindAddress"));
         assertTrue(settings.eventLog());
@@ -186,13 +186,13 @@ class SettingsTest {
 
     @Test
     void loadingDoesNotChangeTheDefaults() throws Exception {
-        Settings.of(props("wss.port", "1234"), "test");
-        assertEquals("50000", Settings.defaults().get("wss.port"));
+        ConfigFile.of(props("wss.port", "1234"), "test");
+        assertEquals("50000", ConfigFile.defaults().get("wss.port"));
     }
 
     @Test
     void modelNameMayBeAnyNonEmptyName() throws Exception {
-        assertEquals("org.example.SomeModel", Settings.of(props("wss.model", "org.example.SomeModel"), "t").modelName());
+        assertEquals("org.example.SomeModel", ConfigFile.of(props("wss.model", "org.example.SomeModel"), "t").modelName());
     }
 
     @ParameterizedTest
@@ -210,20 +210,20 @@ class SettingsTest {
         "wss.bindAddress, 127.0.0.1", "wss.bindAddress, ::1",
     })
     void acceptsBoundaryValues(String key, String value) throws Exception {
-        assertEquals(value, Settings.of(props(key, value), "t").get(key));
+        assertEquals(value, ConfigFile.of(props(key, value), "t").get(key));
     }
 
     @Test
     void pluginDirNamesAnExistingFolder() throws Exception {
         Path plugins = Files.createDirectories(dir.resolve("my plugins"));
-        Settings settings = Settings.of(props("wss.pluginDir", " " + plugins + " "), "t");
+        ConfigFile settings = ConfigFile.of(props("wss.pluginDir", " " + plugins + " "), "t");
         assertEquals(plugins, settings.pluginDir().orElseThrow());
-        assertTrue(Settings.of(props("wss.pluginDir", ""), "t").pluginDir().isEmpty(), "empty: none");
+        assertTrue(ConfigFile.of(props("wss.pluginDir", ""), "t").pluginDir().isEmpty(), "empty: none");
     }
 
     @Test
     void pluginDirThatIsNoFolder() throws Exception {
-        SettingsException absent = rejected("wss.pluginDir", dir.resolve("absent").toString());
+        ConfigFileException absent = rejected("wss.pluginDir", dir.resolve("absent").toString());
         assertTrue(absent.getMessage().contains("directory"), absent.getMessage());
         rejected("wss.pluginDir", write("wss.port=1\n").toString());
         rejected("wss.pluginDir", "nul\u0000char");
@@ -254,9 +254,9 @@ class SettingsTest {
             for (String value : new String[] {"", "0", "-1", "1", "99", "100", "70000", "abc", "1.5", "NaN"}) {
                 boolean accepted = problem(key, value) == null;
                 try {
-                    Settings.of(props(key, value), "t");
+                    ConfigFile.of(props(key, value), "t");
                     assertTrue(accepted, key + " = '" + value + "': the file accepts it, problem() does not");
-                } catch (SettingsException e) {
+                } catch (ConfigFileException e) {
                     assertFalse(accepted, key + " = '" + value + "': problem() accepts it, the file does not");
                     assertTrue(e.getMessage().endsWith(problem(key, value)), e.getMessage());
                 }
@@ -273,7 +273,7 @@ class SettingsTest {
 
     /** The rule of a key: the server's, or the built-in models' (the obstacle model declares every one). */
     private static Setting rule(String key) {
-        Setting server = Setting.find(Settings.SERVER, key);
+        Setting server = Setting.find(ConfigFile.SERVER, key);
         return server != null ? server : Setting.find(new ObstaclePropagationModel().settings(), key);
     }
 
@@ -286,7 +286,7 @@ class SettingsTest {
         return new TreeMap<>(Setting.defaults(new ObstaclePropagationModel().settings()));
     }
 
-    // ---- modelSettings() and hubConfig() ----
+    // ---- modelValues() and hubConfig() ----
 
     @Test
     void modelSettingsHoldTheModelKeysAndNoWssKey() throws Exception {
@@ -296,7 +296,7 @@ class SettingsTest {
         properties.setProperty("usarsim.host", "10.0.0.7");
         properties.setProperty("distance.d0", "3.5");
         properties.setProperty("obstacle.cacheDistance", "0.25");
-        Map<String, String> model = Settings.of(properties, "t").modelSettings().asMap();
+        Map<String, String> model = ConfigFile.of(properties, "t").modelValues().asMap();
 
         assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
         assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("usarsim.") || key.startsWith("distance.")
@@ -314,7 +314,7 @@ class SettingsTest {
                 Map.entry("distance.holdTime", "0"),
                 Map.entry("obstacle.attenuation", "6.325"),
                 Map.entry("obstacle.cacheDistance", "0.25")), model);
-        assertEquals(3.5, Settings.of(properties, "t").modelSettings().getDouble("distance.d0", -1), 0);
+        assertEquals(3.5, ConfigFile.of(properties, "t").modelValues().getDouble("distance.d0", -1), 0);
     }
 
     @Test
@@ -326,7 +326,7 @@ class SettingsTest {
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
         assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
-                Settings.of(properties, "t").hubConfig());
+                ConfigFile.of(properties, "t").hubConfig());
     }
 
     @Test
@@ -335,13 +335,13 @@ class SettingsTest {
         properties.setProperty("wss.operators", " 127.0.0.1 , 10.0.0.7,::1");
         properties.setProperty("wss.force.down", "R1:R2, Zed:Alpha");
         properties.setProperty("wss.force.up", " R2:R3 ,R3:R2");
-        HubConfig config = Settings.of(properties, "t").hubConfig();
+        HubConfig config = ConfigFile.of(properties, "t").hubConfig();
         assertEquals(Set.of(InetAddress.getByName("127.0.0.1"), InetAddress.getByName("10.0.0.7"), InetAddress.getByName("::1")),
                 config.operators());
         assertEquals(Map.of(RobotPair.of("R1", "R2"), Force.DOWN, RobotPair.of("Alpha", "Zed"), Force.DOWN,
                 RobotPair.of("R2", "R3"), Force.UP), config.forced());
         properties.setProperty("wss.operators", "");
-        assertEquals(Set.of(), Settings.of(properties, "t").hubConfig().operators(), "empty: nobody");
+        assertEquals(Set.of(), ConfigFile.of(properties, "t").hubConfig().operators(), "empty: nobody");
     }
 
     @Test
@@ -349,7 +349,7 @@ class SettingsTest {
         Properties properties = new Properties();
         properties.setProperty("wss.force.down", "A:B,C:D");
         properties.setProperty("wss.force.up", "D:C");
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.of(properties, "my.properties"));
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.of(properties, "my.properties"));
         assertEquals("my.properties: the pair C:D is in both wss.force.down and wss.force.up; force it one way", e.getMessage());
     }
 
@@ -361,8 +361,8 @@ class SettingsTest {
         properties.setProperty("wss.model", "DistanceOnlyPropagationModel");
         properties.setProperty("distance.n", "2");
         properties.setProperty("obstacle.attenuation", "3");
-        Settings settings = Settings.of(properties, "t");
-        Map<String, String> model = settings.modelSettings().asMap();
+        ConfigFile settings = ConfigFile.of(properties, "t");
+        Map<String, String> model = settings.modelValues().asMap();
         assertEquals("2", model.get("distance.n"));
         assertEquals(10, model.size(), "usarsim.* and distance.*: " + model);
         assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
@@ -376,16 +376,16 @@ class SettingsTest {
         Properties properties = new Properties();
         properties.setProperty("wss.model", "Nowhere");
         properties.setProperty("usarsim.port", "7000");
-        Settings settings = Settings.of(properties, "t");
-        assertEquals(Map.of(), settings.modelSettings().asMap());
+        ConfigFile settings = ConfigFile.of(properties, "t");
+        assertEquals(Map.of(), settings.modelValues().asMap());
         assertEquals(List.of("usarsim.port"), settings.ignoredKeys());
     }
 
     @Test
     void theUnknownKeyErrorListsTheServersAndEveryModelsKeys() {
-        SettingsException e = rejected("distance.nonsense", "1");
+        ConfigFileException e = rejected("distance.nonsense", "1");
         assertTrue(e.getMessage().endsWith("known keys: " + String.join(", ", DEFAULTS.keySet().stream()
-                .sorted(java.util.Comparator.comparingInt(SettingsTest::order)).toList())), e.getMessage());
+                .sorted(java.util.Comparator.comparingInt(ConfigFileTest::order)).toList())), e.getMessage());
     }
 
     /** The order the keys are declared in: the server's, then the models' in catalog order. */
@@ -395,7 +395,7 @@ class SettingsTest {
 
     @Test
     void helpListsEveryKeyWithItsDefaultAndRule() {
-        String help = Settings.help(Settings.defaults().catalog());
+        String help = ConfigFile.help(ConfigFile.defaults().catalog());
         for (Setting setting : allDeclared()) {
             assertTrue(help.contains("  " + setting.key() + " = " + setting.defaultValue() + "\n      " + setting.expected()),
                     setting.key() + " in:\n" + help);
@@ -417,7 +417,7 @@ class SettingsTest {
 
     /** The server's settings and every built-in model's. */
     private static List<Setting> allDeclared() {
-        List<Setting> all = new java.util.ArrayList<>(Settings.SERVER);
+        List<Setting> all = new java.util.ArrayList<>(ConfigFile.SERVER);
         all.addAll(new ObstaclePropagationModel().settings());
         return all;
     }
@@ -425,8 +425,8 @@ class SettingsTest {
     // ---- bad values ----
 
     /** The message names the key and the value. */
-    private static SettingsException rejected(String key, String value) {
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.of(props(key, value), "my.properties"),
+    private static ConfigFileException rejected(String key, String value) {
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.of(props(key, value), "my.properties"),
                 key + " = '" + value + "' should be rejected");
         String message = e.getMessage();
         assertTrue(message.contains(key), "names the key: " + message);
@@ -438,7 +438,7 @@ class SettingsTest {
 
     @Test
     void unknownKey() {
-        SettingsException e = rejected("wss.prot", "50001");
+        ConfigFileException e = rejected("wss.prot", "50001");
         assertTrue(e.getMessage().contains("unknown key"), e.getMessage());
         assertTrue(e.getMessage().contains("wss.port"), "lists the known keys: " + e.getMessage());
     }
@@ -506,15 +506,15 @@ class SettingsTest {
         properties.setProperty("wss.portMemory", "-1");
         properties.setProperty("wss.maxPortsPerRobot", "1");
         properties.setProperty("wss.deadPeerSeconds", "0");
-        HubConfig config = Settings.of(properties, "t").hubConfig();
+        HubConfig config = ConfigFile.of(properties, "t").hubConfig();
         assertEquals(List.of(-1, 1, 0), List.of(config.portMemorySeconds(), config.maxPortsPerRobot(), config.deadPeerSeconds()));
         properties.setProperty("wss.portMemory", "0");
         properties.setProperty("wss.deadPeerSeconds", "2");
-        config = Settings.of(properties, "t").hubConfig();
+        config = ConfigFile.of(properties, "t").hubConfig();
         assertEquals(List.of(0, 2), List.of(config.portMemorySeconds(), config.deadPeerSeconds()));
-        assertEquals(0, Settings.defaults().statsInterval(), "no statistics table unless asked for");
+        assertEquals(0, ConfigFile.defaults().statsInterval(), "no statistics table unless asked for");
         properties.setProperty("wss.statsInterval", "86400");
-        assertEquals(86400, Settings.of(properties, "t").statsInterval());
+        assertEquals(86400, ConfigFile.of(properties, "t").statsInterval());
     }
 
     @Test
@@ -535,7 +535,7 @@ class SettingsTest {
     @Test
     void badValueInAFile() throws Exception {
         Path file = write("wss.port=0\nwss.port=70000\n");
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.load(file));
         assertTrue(e.getMessage().contains("wss.port"), e.getMessage());
         assertTrue(e.getMessage().contains("70000"), e.getMessage());
         assertTrue(e.getMessage().contains(file.toString()), "names the file: " + e.getMessage());
@@ -544,21 +544,21 @@ class SettingsTest {
     @Test
     void distanceNZeroInAFile() throws Exception {
         Path file = write("distance.n=0\n");
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.load(file));
         assertTrue(e.getMessage().contains("distance.n = '0'"), e.getMessage());
     }
 
     @Test
     void missingFile() {
         Path file = dir.resolve("absent.properties");
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.load(file));
         assertTrue(e.getMessage().contains(file.toString()), e.getMessage());
     }
 
     @Test
     void malformedEscapeInAFile() throws Exception {
         Path file = write("usarsim.host=\\uZZZZ\n");
-        SettingsException e = assertThrows(SettingsException.class, () -> Settings.load(file));
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.load(file));
         assertTrue(e.getMessage().contains(file.toString()), e.getMessage());
     }
 }

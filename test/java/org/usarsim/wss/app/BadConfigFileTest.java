@@ -18,7 +18,7 @@ import org.junit.jupiter.params.provider.CsvSource;
  * A properties file with every kind of bad value: each gets one clear line naming the file, the key
  * and the value, and the server exits 2 before anything listens (docs/headless.md).
  */
-class BadSettingsTest {
+class BadConfigFileTest {
 
     @TempDir
     Path dir;
@@ -35,7 +35,7 @@ class BadSettingsTest {
 
     /** The one-line error for the file; it names the file. */
     private static String error(Path file) {
-        String message = assertThrows(SettingsException.class, () -> Settings.load(file)).getMessage();
+        String message = assertThrows(ConfigFileException.class, () -> ConfigFile.load(file)).getMessage();
         assertFalse(message.contains("\n"), "one line: " + message);
         assertTrue(message.contains(file.toString()), "names the file: " + message);
         return message;

@@ -35,7 +35,7 @@ import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldServer;
 
 /**
  * Takes the map screenshots of docs/images (docs/gui.md, "For developers"): serves the world file,

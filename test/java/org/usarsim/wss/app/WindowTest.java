@@ -58,7 +58,7 @@ import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldServer;
 
 /**
  * The main window, for real: opened under a display, driven through its components (buttons

@@ -21,8 +21,8 @@ import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.sim.WorldFileException;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldFileException;
+import org.usarsim.wss.world.WorldServer;
 import sun.misc.Signal;
 import sun.misc.SignalHandler;
 

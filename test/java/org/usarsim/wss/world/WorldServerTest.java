@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -207,7 +207,7 @@ class WorldServerTest {
 
     @Test
     void logsClientsComingAndGoingAndLinesWithNoAnswer() throws Exception {
-        try (LogCapture log = LogCapture.of("org.usarsim.wss.sim", Level.FINE)) {
+        try (LogCapture log = LogCapture.of("org.usarsim.wss.world", Level.FINE)) {
             List<LogRecord> records = log.records;
             Socket client = connect();
             String peer = "client 127.0.0.1:" + client.getLocalPort();
@@ -235,7 +235,7 @@ class WorldServerTest {
     @Test
     void aClientWhoseThreadCannotStartIsDroppedAndTheNextIsServed() throws IOException {
         AtomicBoolean failedOnce = new AtomicBoolean();
-        try (LogCapture log = LogCapture.of("org.usarsim.wss.sim", null);
+        try (LogCapture log = LogCapture.of("org.usarsim.wss.world", null);
                 WorldServer failing = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), () -> seconds,
                 client -> {
                     if (failedOnce.compareAndSet(false, true)) {

@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 /** A world file that cannot be read or is wrong; the message says where and what, in one line. */
 public final class WorldFileException extends Exception {

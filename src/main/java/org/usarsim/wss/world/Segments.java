@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 /**
  * Whether two 2-D segments meet. They do when they cross, when an end of one lies on the other,

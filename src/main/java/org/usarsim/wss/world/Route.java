@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 import java.util.ArrayList;
 import java.util.Arrays;

@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 /** A place in the world, in metres: x and y on the floor, z up. */
 record Point(double x, double y, double z) {

@@ -1,4 +1,4 @@
-package org.usarsim.wss.sim;
+package org.usarsim.wss.world;
 
 /** A wall seen from above: a segment from (x1, y1) to (x2, y2), in metres, of any height. */
 record Wall(double x1, double y1, double x2, double y2) {

@@ -17,10 +17,13 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.logging.Level;
+import java.util.prefs.Preferences;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.usarsim.wss.gui.TestPreferences;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
@@ -188,6 +191,21 @@ class ConfigFileTest {
     void loadingDoesNotChangeTheDefaults() throws Exception {
         ConfigFile.of(props("wss.port", "1234"), "test");
         assertEquals("50000", ConfigFile.defaults().get("wss.port"));
+    }
+
+    @Test
+    void theWindowsFirstRunHasTheDefaultsOfAPropertiesFile() throws Exception {
+        Preferences node = TestPreferences.create();
+        try {
+            WindowPreferences nothingStored = new WindowPreferences(node);
+            ConfigFile defaults = ConfigFile.defaults();
+            assertEquals(defaults.get("wss.port"), nothingStored.port());
+            assertEquals(defaults.modelName(), nothingStored.model());
+            assertEquals("50000", nothingStored.port(), "docs/protocol.md");
+            assertEquals("NoopPropagationModel", nothingStored.model(), "docs/headless.md");
+        } finally {
+            TestPreferences.remove(node);
+        }
     }
 
     @Test

@@ -28,6 +28,7 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.protocol.ControlPort;
 
 /**
  * A run's configuration as a properties file (--config FILE) gives it, over the built-in defaults:
@@ -42,11 +43,11 @@ public final class ConfigFile {
 
     /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
-            Setting.integer("wss.port", "Control port", Defaults.CONTROL_PORT).from(0).to(65535).noun("a port number").note("0: any free port")
+            Setting.integer("wss.port", "Control port", ControlPort.DEFAULT).from(0).to(65535).noun("a port number").note("0: any free port")
                     .help("The control port robots connect to; 0 lets the OS choose one, which the start line names"),
             Setting.address("wss.bindAddress", "Bind address", Defaults.ALL_INTERFACES).note(Defaults.ALL_INTERFACES + ": all")
                     .help("The address the control port and every WSS port listen on"),
-            Setting.text("wss.model", "Model", "NoopPropagationModel").noun("the name of a propagation model")
+            Setting.text("wss.model", "Model", ModelCatalog.DEFAULT_MODEL).noun("the name of a propagation model")
                     .help("The propagation model: its name, or its simple or fully qualified class name"),
             Setting.bool("wss.eventLog", "Event log", false).help("Write the CSV event log, a new file per run"),
             Setting.text("wss.eventLogDir", "Event log folder", ".").noun("a directory")

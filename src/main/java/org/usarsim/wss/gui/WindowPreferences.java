@@ -4,6 +4,8 @@ import java.awt.Rectangle;
 import java.util.prefs.BackingStoreException;
 import java.util.logging.Logger;
 import java.util.prefs.Preferences;
+import org.usarsim.wss.model.ModelCatalog;
+import org.usarsim.wss.protocol.ControlPort;
 
 /**
  * What the window remembers between runs, in {@code java.util.prefs}: the port, the model, "Enable
@@ -26,11 +28,11 @@ public final class WindowPreferences {
     }
 
     public String port() {
-        return node.get("port", "50000");
+        return node.get("port", String.valueOf(ControlPort.DEFAULT));
     }
 
     public String model() {
-        return node.get("model", "NoopPropagationModel");
+        return node.get("model", ModelCatalog.DEFAULT_MODEL);
     }
 
     public boolean eventLog() {

@@ -14,7 +14,7 @@ import java.util.logging.Logger;
 
 /**
  * The propagation models: the built-in ones, found with {@link ServiceLoader} on the application's
- * class path, NoopPropagationModel first; then those of the plugin jars in each given folder
+ * class path, the default model ({@link #DEFAULT_MODEL}) first; then those of the plugin jars in each given folder
  * ({@link PluginFolder}), folder by folder, jars in name order. A model that fails to load, whose
  * {@code settings()} declaration is broken ({@link Setting#declarationProblem}), or whose name is
  * taken by one loaded before it, is reported with a WARNING and skipped.
@@ -23,7 +23,8 @@ public final class ModelCatalog {
 
     private static final Logger LOG = Logger.getLogger(ModelCatalog.class.getName());
 
-    private static final String NOOP = "NoopPropagationModel";
+    /** The model a run uses unless told otherwise (wss.model, the window's first run): the one that changes nothing. */
+    public static final String DEFAULT_MODEL = "NoopPropagationModel";
 
     /** More failures than this from one source: its ServiceLoader is not getting anywhere. */
     private static final int MAX_FAILURES = 100;
@@ -48,7 +49,7 @@ public final class ModelCatalog {
         Map<String, PropagationModel> models = new LinkedHashMap<>();
         Map<String, String> sources = new LinkedHashMap<>();
         List<Named> builtIn = instantiate(ServiceLoader.load(PropagationModel.class, loader), "the class path");
-        builtIn.sort((a, b) -> Boolean.compare(!a.name().equals(NOOP), !b.name().equals(NOOP)));
+        builtIn.sort((a, b) -> Boolean.compare(!a.name().equals(DEFAULT_MODEL), !b.name().equals(DEFAULT_MODEL)));
         for (Named model : builtIn) {
             add(models, sources, model, "the class path");
         }

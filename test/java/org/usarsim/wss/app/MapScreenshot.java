@@ -30,6 +30,7 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.SettingValues;
@@ -79,8 +80,8 @@ public final class MapScreenshot {
         serverProperties.setProperty("wss.bindAddress", "127.0.0.1");
         WindowServers application = new WindowServers(ConfigFile.of(serverProperties, "screenshot"));
         AtomicReference<Servers.Running> running = new AtomicReference<>();
-        Servers servers = (port, runModel, eventLog, listener) -> {
-            Servers.Running run = application.start(port, runModel, eventLog, listener);
+        Servers servers = (port, runModel, values, eventLog, listener) -> {
+            Servers.Running run = application.start(port, runModel, values, eventLog, listener);
             running.set(run);
             return run;
         };
@@ -88,7 +89,7 @@ public final class MapScreenshot {
         java.util.logging.Logger.getLogger("").addHandler(windowLog);
         AtomicReference<JFrame> frame = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
-            JFrame window = MainWindow.open(servers, List.of(model), new WindowPreferences(preferences.node("window")),
+            JFrame window = MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                     new ModelPreferences(preferences.node("models")), windowLog,
                     new Launch("0", model.name(), false, new SettingValues(settings), true), () -> { }).frame();
             window.setBounds(0, 0, 1100, 780);

@@ -42,6 +42,7 @@ import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.PairState;
 import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
@@ -160,7 +161,7 @@ class MapWindowTest {
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", dir.toString());
         WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
-        return onEdt(() -> MainWindow.open(servers, List.of(model), new WindowPreferences(preferences.node("window")),
+        return onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                 new ModelPreferences(preferences.node("models")), windowLog,
                 new Launch("0", model.name(), false, settings, true), closed::countDown).frame());
     }

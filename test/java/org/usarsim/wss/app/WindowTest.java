@@ -52,6 +52,7 @@ import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.ScriptedModel;
 import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.SettingValues;
@@ -103,7 +104,8 @@ class WindowTest {
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", eventLogs.toString());
         WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
-        return onEdt(() -> MainWindow.open(servers, models,
+        List<ModelProvider> providers = models.stream().map(model -> ModelProvider.of(() -> model)).toList();
+        return onEdt(() -> MainWindow.open(servers, providers,
                 new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, launch, windowClosed::countDown).frame());
     }
@@ -444,7 +446,7 @@ class WindowTest {
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
-        frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel(), model),
+        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new), ModelProvider.of(() -> model)),
                 new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, new Launch(null, null, null, null, true), secondClosed::countDown).frame());
         until("the second window's server runs", () -> find(frame.getContentPane(), JButton.class, "start").getText().equals("Stop"));

@@ -19,6 +19,7 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.model.ModelCatalog;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.world.WorldFileException;
@@ -199,8 +200,8 @@ public final class Main {
         }
     }
 
-    private static PropagationModel knownModel(ModelCatalog catalog, String name) throws Failure {
-        PropagationModel model = catalog.find(name);
+    private static ModelProvider knownModel(ModelCatalog catalog, String name) throws Failure {
+        ModelProvider model = catalog.provider(name);
         if (model == null) {
             throw badInput("wss.model = '" + name + "' is not a known model; known: " + String.join(", ", catalog.names()));
         }
@@ -209,7 +210,7 @@ public final class Main {
 
     private static int runHeadless(ConfigFile configFile, Path config) throws Failure {
         ModelCatalog catalog = configFile.catalog();
-        PropagationModel model = knownModel(catalog, configFile.modelName());
+        ModelProvider model = knownModel(catalog, configFile.modelName());
         Logger log = Logger.getLogger(Main.class.getName());
         for (String key : configFile.ignoredKeys()) {
             log.warning(config + ": " + key + " is not a setting of " + model.name() + " (it is one of "
@@ -217,19 +218,17 @@ public final class Main {
         }
         Server server;
         try {
-            server = Server.create(configFile.hubConfig(), model, configFile.eventLog() ? configFile.eventLogDir() : null);
+            server = Server.create(configFile.hubConfig(), model, configFile.modelValues(),
+                    configFile.eventLog() ? configFile.eventLogDir() : null);
         } catch (Server.StartFailure e) {
             throw new Failure(CANNOT_START, e.getMessage());
         }
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
         try (StopSignal stop = new StopSignal()) {
             try {
-                model.configure(configFile.modelValues());
                 server.start();
             } catch (Server.StartFailure e) {
                 throw new Failure(CANNOT_START, e.getMessage());
-            } catch (RuntimeException e) {
-                throw new Failure(CANNOT_START, model.name() + " did not start: " + e.getMessage());
             }
             try (StatsLog stats = StatsLog.every(configFile.statsInterval(), server.hub())) {
                 stop.await();
@@ -252,10 +251,9 @@ public final class Main {
                 fromFile ? configFile.modelKeysSetBy(file) : null, start);
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
-        List<PropagationModel> models = catalog.names().stream().map(catalog::find).toList();
         WindowServers servers = new WindowServers(configFile);
         try (StopSignal stop = new StopSignal()) {
-            SwingUtilities.invokeLater(() -> MainWindow.open(servers, models, new WindowPreferences(), new ModelPreferences(),
+            SwingUtilities.invokeLater(() -> MainWindow.open(servers, catalog.providers(), new WindowPreferences(), new ModelPreferences(),
                     windowLog, launch, stop::stop));
             try {
                 stop.await();

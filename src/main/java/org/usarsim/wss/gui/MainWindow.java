@@ -22,6 +22,7 @@ import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.SettingValues;
 
@@ -50,7 +51,7 @@ public final class MainWindow {
     private final NetworkView view = new NetworkView();
     private final Timer timer;
     private final Servers servers;
-    private final Map<String, PropagationModel> models = new LinkedHashMap<>();
+    private final Map<String, ModelProvider> models = new LinkedHashMap<>();
     private final WindowPreferences windowPreferences;
     private final ModelPreferences modelPreferences;
     private final WindowLog windowLog;
@@ -63,7 +64,7 @@ public final class MainWindow {
     private String askedPort;
     private boolean closing;
 
-    private MainWindow(Servers servers, List<PropagationModel> modelList, WindowPreferences windowPreferences,
+    private MainWindow(Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
         this.servers = servers;
         modelList.forEach(model -> models.put(model.name(), model));
@@ -90,10 +91,11 @@ public final class MainWindow {
     }
 
     /**
-     * Builds and shows the window; presses Start when the launch asks. {@code onClosed} runs once the
-     * window is closed and the server stopped (the application exits there). Event thread.
+     * Builds and shows the window, offering {@code models} (each Start runs a new instance of the
+     * one selected); presses Start when the launch asks. {@code onClosed} runs once the window is
+     * closed and the server stopped (the application exits there). Event thread.
      */
-    public static MainWindow open(Servers servers, List<PropagationModel> models, WindowPreferences windowPreferences,
+    public static MainWindow open(Servers servers, List<ModelProvider> models, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
         MainWindow window = new MainWindow(servers, models, windowPreferences, modelPreferences, windowLog, launch, onClosed);
         window.frame.setVisible(true);
@@ -147,13 +149,13 @@ public final class MainWindow {
         }
     }
 
-    private PropagationModel selectedModel() {
+    private ModelProvider selectedModel() {
         return models.get((String) bar.model.getSelectedItem());
     }
 
     private void showState() {
-        PropagationModel model = selectedModel();
-        bar.show(state, model != null && ModelDialogs.isConfigurable(model));
+        ModelProvider model = selectedModel();
+        bar.show(state, model != null && ModelDialogs.isConfigurable(model.model()));
     }
 
     private void setState(ControlBar.State newState) {
@@ -186,19 +188,14 @@ public final class MainWindow {
 
     private void start() {
         String port = bar.port.getText().strip();
-        PropagationModel model = selectedModel();
+        ModelProvider model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
-        try {
-            model.configure(new SettingValues(nextRunValues.values(model)));
-        } catch (RuntimeException e) {
-            failed(model.name() + " did not accept its settings: " + e.getMessage());
-            return;
-        }
+        SettingValues values = new SettingValues(nextRunValues.values(model.model()));
         setState(ControlBar.State.STARTING);
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, eventLog, view);
+                return servers.start(port, model, values, eventLog, view);
             }
 
             @Override
@@ -220,7 +217,7 @@ public final class MainWindow {
                 windowPreferences.storeRun(port, model.name(), eventLog);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
-                view.attach(running, model);
+                view.attach(running, running.model());
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -259,7 +256,7 @@ public final class MainWindow {
     }
 
     private void configure() {
-        PropagationModel model = selectedModel();
+        PropagationModel model = selectedModel().model();
         if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences, nextRunValues.values(model))) {
             nextRunValues.entered(model);
         }

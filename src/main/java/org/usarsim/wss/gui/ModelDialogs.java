@@ -68,8 +68,8 @@ public final class ModelDialogs {
 
     /**
      * Hands the model its stored settings (those of its {@code name()}; defaults where none is
-     * stored). The window calls it before every start, so that the model runs with what the dialog
-     * last stored, in this session or an earlier one.
+     * stored). {@link #show} calls it after an OK, on the instance the dialog showed; a run gets an
+     * instance of its own, configured by the server with the values the window hands it.
      */
     public static void configureFromPreferences(PropagationModel model, ModelPreferences preferences) {
         model.configure(preferences.settingValues(model));

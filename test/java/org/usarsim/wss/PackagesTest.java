@@ -11,7 +11,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
-/** Which package may know which: app knows the others; the window never imports app; the model SPI neither; world never the hub. */
+/** Which package may know which: app knows the others; the window never imports app nor a concrete model; the model SPI neither; world never the hub. */
 class PackagesTest {
 
     private static final Path SOURCES = Path.of("src/main/java/org/usarsim/wss");
@@ -33,6 +33,11 @@ class PackagesTest {
     @Test
     void guiDoesNotImportApp() throws IOException {
         assertEquals(List.of(), importing("gui", "app"));
+    }
+
+    @Test
+    void theWindowAsksAModelWhichDialogItNeedsAndKnowsNoConcreteModel() throws IOException {
+        assertEquals(List.of(), importing("gui", "model.noop", "model.distance", "model.obstacle"));
     }
 
     @Test

@@ -42,7 +42,7 @@ public final class ModelProvider {
 
     /**
      * The instance made when the model was loaded: ask it what it declares ({@code settings()},
-     * {@code isConfigurable()}) and show it in the dialogs. A run never
+     * {@code dialogLayout()}, {@code isConfigurable()}) and show it in the dialogs. A run never
      * uses it (but see the class comment).
      */
     public PropagationModel model() {

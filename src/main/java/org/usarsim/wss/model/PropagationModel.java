@@ -70,6 +70,17 @@ public interface PropagationModel {
     }
 
     /**
+     * Which dialog the GUI builds from {@link #settings()} to configure the model: by default the
+     * one generated from the declaration, a row per setting; {@link DialogLayout#DISTANCE} or
+     * {@link DialogLayout#DISTANCE_AND_OBSTACLES} for the simulator models' layout, which the GUI
+     * uses when the model declares every key that layout shows. Not asked when
+     * {@link #isConfigurable()}.
+     */
+    default DialogLayout dialogLayout() {
+        return DialogLayout.GENERATED;
+    }
+
+    /**
      * The signal strength from {@code from} to {@code to} in dBm. NaN when unknown;
      * {@code +Infinity} when the robots are at the same place.
      */

@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
+import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.SettingValues;
@@ -46,6 +47,12 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     /** A model whose poller takes its time from {@code clock}. */
     public ObstaclePropagationModel(PollClock clock) {
         super(clock);
+    }
+
+    /** The DistanceOnly model's layout with the Obstacles group. */
+    @Override
+    public DialogLayout dialogLayout() {
+        return DialogLayout.DISTANCE_AND_OBSTACLES;
     }
 
     /** The simulator models' settings, then obstacle.attenuation and obstacle.cacheDistance. */

@@ -9,6 +9,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
@@ -95,6 +96,15 @@ public abstract class SimulatorModel implements PropagationModel {
     @Override
     public List<Setting> settings() {
         return SETTINGS;
+    }
+
+    /**
+     * The DistanceOnly model's layout, which shows every key of {@link #SETTINGS}; a subclass
+     * whose declaration lacks one of them gets the generated dialog.
+     */
+    @Override
+    public DialogLayout dialogLayout() {
+        return DialogLayout.DISTANCE;
     }
 
     /** Takes the values; they are checked, by their settings' rules, at the next start. */

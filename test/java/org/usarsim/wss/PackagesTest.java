@@ -11,7 +11,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
-/** Which package may know which: app knows the others; the window never imports app; the model SPI neither; sim never the hub. */
+/** Which package may know which: app knows the others; the window never imports app nor a concrete model; the model SPI neither; world never the hub. */
 class PackagesTest {
 
     private static final Path SOURCES = Path.of("src/main/java/org/usarsim/wss");
@@ -36,13 +36,18 @@ class PackagesTest {
     }
 
     @Test
+    void theWindowAsksAModelWhichDialogItNeedsAndKnowsNoConcreteModel() throws IOException {
+        assertEquals(List.of(), importing("gui", "model.noop", "model.distance", "model.obstacle"));
+    }
+
+    @Test
     void theModelsDoNotImportGuiOrApp() throws IOException {
         assertEquals(List.of(), importing("model", "gui", "app"));
     }
 
     @Test
     void theWorldServerKnowsNothingOfTheHubAndTheAcceptLoopNothingOfTheRest() throws IOException {
-        assertEquals(List.of(), importing("sim", "hub", "gui", "app"));
-        assertEquals(List.of(), importing("net", "hub", "sim", "model", "protocol", "gui", "app"));
+        assertEquals(List.of(), importing("world", "hub", "gui", "app"));
+        assertEquals(List.of(), importing("net", "hub", "world", "model", "protocol", "gui", "app"));
     }
 }

@@ -15,7 +15,7 @@ class ExampleConfigsTest {
         "docs/examples/building.properties, ObstaclePropagationModel",
     })
     void examplesLoad(String file, String model) throws Exception {
-        Settings settings = Settings.load(Path.of(file));
+        ConfigFile settings = ConfigFile.load(Path.of(file));
         assertEquals(model, settings.modelName());
         assertEquals("127.0.0.1", settings.get("usarsim.host"));
         assertEquals("7435", settings.get("usarsim.port"));

@@ -29,13 +29,14 @@ import org.usarsim.wss.gui.MapProbe;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.gui.WindowPreferences;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldServer;
 
 /**
  * Takes the map screenshots of docs/images (docs/gui.md, "For developers"): serves the world file,
@@ -77,10 +78,10 @@ public final class MapScreenshot {
         Preferences preferences = Preferences.userRoot().node("wss-map-screenshot-" + ProcessHandle.current().pid());
         Properties serverProperties = new Properties();
         serverProperties.setProperty("wss.bindAddress", "127.0.0.1");
-        WindowServers application = new WindowServers(Settings.of(serverProperties, "screenshot"));
+        WindowServers application = new WindowServers(ConfigFile.of(serverProperties, "screenshot"));
         AtomicReference<Servers.Running> running = new AtomicReference<>();
-        Servers servers = (port, runModel, eventLog, listener) -> {
-            Servers.Running run = application.start(port, runModel, eventLog, listener);
+        Servers servers = (port, runModel, values, eventLog, listener) -> {
+            Servers.Running run = application.start(port, runModel, values, eventLog, listener);
             running.set(run);
             return run;
         };
@@ -88,9 +89,9 @@ public final class MapScreenshot {
         java.util.logging.Logger.getLogger("").addHandler(windowLog);
         AtomicReference<JFrame> frame = new AtomicReference<>();
         SwingUtilities.invokeAndWait(() -> {
-            JFrame window = MainWindow.open(servers, List.of(model), new WindowSettings(preferences.node("window")),
+            JFrame window = MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                     new ModelPreferences(preferences.node("models")), windowLog,
-                    new Launch("0", model.name(), false, new ModelSettings(settings), true), () -> { }).frame();
+                    new Launch("0", model.name(), false, new SettingValues(settings), true), () -> { }).frame();
             window.setBounds(0, 0, 1100, 780);
             frame.set(window);
         });

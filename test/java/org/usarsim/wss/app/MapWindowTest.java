@@ -39,15 +39,16 @@ import org.usarsim.wss.gui.MapProbe;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.hub.TestRobot;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldServer;
 
 /**
  * The map tab for real: a world server serving a world file, the DistanceOnly model polling it, the
@@ -110,7 +111,7 @@ class MapWindowTest {
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.interval", "100");
         settings.put("distance.n", "3");
-        frame = open(model, new ModelSettings(settings));
+        frame = open(model, new SettingValues(settings));
         int port = controlPort();
 
         try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3");
@@ -152,15 +153,15 @@ class MapWindowTest {
         }
     }
 
-    private JFrame open(PropagationModel model, ModelSettings settings) throws Exception {
+    private JFrame open(PropagationModel model, SettingValues settings) throws Exception {
         preferences = TestPreferences.create();
         windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", dir.toString());
-        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
-        return onEdt(() -> MainWindow.open(servers, List.of(model), new WindowSettings(preferences.node("window")),
+        WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
+        return onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                 new ModelPreferences(preferences.node("models")), windowLog,
                 new Launch("0", model.name(), false, settings, true), closed::countDown).frame());
     }

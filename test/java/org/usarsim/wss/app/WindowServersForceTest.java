@@ -3,6 +3,7 @@ package org.usarsim.wss.app;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Properties;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.gui.Servers;
@@ -10,6 +11,8 @@ import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
+import org.usarsim.wss.model.ModelProvider;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
@@ -24,8 +27,8 @@ class WindowServersForceTest {
         Properties file = new Properties();
         file.setProperty("wss.bindAddress", "127.0.0.1");
         file.setProperty("wss.force.down", "r1:r2");
-        WindowServers servers = new WindowServers(Settings.of(file, "test"));
-        Servers.Running running = servers.start("0", new NoopPropagationModel(), false, new WssEventListener() { });
+        WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
+        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new SettingValues(Map.of()), false, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");
             r2.initAccepting("r2");

@@ -49,16 +49,17 @@ import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.ScriptedModel;
 import org.usarsim.wss.hub.TestRobot;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldServer;
 
 /**
  * The main window, for real: opened under a display, driven through its components (buttons
@@ -102,9 +103,10 @@ class WindowTest {
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", eventLogs.toString());
-        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
-        return onEdt(() -> MainWindow.open(servers, models,
-                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+        WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
+        List<ModelProvider> providers = models.stream().map(model -> ModelProvider.of(() -> model)).toList();
+        return onEdt(() -> MainWindow.open(servers, providers,
+                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, launch, windowClosed::countDown).frame());
     }
 
@@ -374,7 +376,7 @@ class WindowTest {
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.timeout", "500");
         // As --config gives them: the file's model settings for this session's starts.
-        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(settings), false),
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new SettingValues(settings), false),
                 List.of(new NoopPropagationModel(), distanceOnly));
         assertTrue(onEdt(() -> component(JButton.class, "configure").isEnabled()), "DistanceOnly has settings");
         run(() -> component(JButton.class, "start").doClick());
@@ -434,7 +436,7 @@ class WindowTest {
         run(() -> component(JTextField.class, "port").setText("0"));
         start();
         closeWindow();
-        WindowSettings stored = new WindowSettings(preferences.node("window"));
+        WindowPreferences stored = new WindowPreferences(preferences.node("window"));
         assertEquals("0", stored.port());
         assertEquals("ScriptedModel", stored.model());
         assertFalse(stored.eventLog());
@@ -443,9 +445,9 @@ class WindowTest {
         CountDownLatch secondClosed = new CountDownLatch(1);
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
-        WindowServers servers = new WindowServers(Settings.of(properties, "test"));
-        frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel(), model),
-                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+        WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
+        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new), ModelProvider.of(() -> model)),
+                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, new Launch(null, null, null, null, true), secondClosed::countDown).frame());
         until("the second window's server runs", () -> find(frame.getContentPane(), JButton.class, "start").getText().equals("Stop"));
         assertEquals("ScriptedModel", onEdt(() -> component(JComboBox.class, "model").getSelectedItem()));
@@ -465,7 +467,7 @@ class WindowTest {
         new Socket("127.0.0.1", port).close();
         stop();
         assertEquals("0", onEdt(() -> component(JTextField.class, "port").getText()), "after Stop, what was typed");
-        assertEquals("0", new WindowSettings(preferences.node("window")).port(), "the stored choice is still 0");
+        assertEquals("0", new WindowPreferences(preferences.node("window")).port(), "the stored choice is still 0");
     }
 
     @Test
@@ -478,7 +480,7 @@ class WindowTest {
         // As --config gives them: only the model keys the file sets.
         Map<String, String> file = Map.of("usarsim.host", "127.0.0.1", "usarsim.port", String.valueOf(simulatorPort),
                 "usarsim.interval", "150");
-        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(file), false),
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new SettingValues(file), false),
                 List.of(new NoopPropagationModel(), distanceOnly, new ObstaclePropagationModel()));
 
         String title = "DistanceOnlyPropagationModel Configuration";

@@ -20,11 +20,12 @@ import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /**
@@ -112,8 +113,8 @@ public final class WindowBenchmark {
         List<Hub> hubs = servers.hubs();
         CountDownLatch closed = new CountDownLatch(1);
         MainWindow[] window = new MainWindow[1];
-        SwingUtilities.invokeAndWait(() -> window[0] = MainWindow.open(servers, List.of(new NoopPropagationModel()),
-                new WindowSettings(preferences), new ModelPreferences(preferences.node("models")), windowLog,
+        SwingUtilities.invokeAndWait(() -> window[0] = MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new)),
+                new WindowPreferences(preferences), new ModelPreferences(preferences.node("models")), windowLog,
                 new Launch("0", null, false, null, true), closed::countDown));
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (hubs.isEmpty() && System.nanoTime() < deadline) {

@@ -75,7 +75,7 @@ public final class DialogScreenshot {
             ModelPreferences preferences = new ModelPreferences(root);
             SwingUtilities.invokeAndWait(() -> dialog[0] = shown instanceof SimulatorModel simulatorModel
                     ? new DistanceModelDialog(null, simulatorModel, finalEditable, preferences, preferences.load(shown))
-                    : new SettingsDialog(null, shown, finalEditable, preferences, preferences.load(shown)));
+                    : new GeneratedModelDialog(null, shown, finalEditable, preferences, preferences.load(shown)));
             SwingUtilities.invokeLater(() -> dialog[0].setVisible(true));
             Gui.until("the dialog shows", () -> dialog[0].isShowing());
             for (Map.Entry<String, String> entry : typed.entrySet()) {

@@ -30,6 +30,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /**
@@ -63,8 +64,8 @@ class ForceMenuTest {
         Logger.getLogger("").addHandler(windowLog);
         CountDownLatch windowClosed = new CountDownLatch(1);
         closed = windowClosed;
-        frame = onEdt(() -> MainWindow.open(servers, List.of(new NoopPropagationModel()),
-                new WindowSettings(preferences.node("window")), new ModelPreferences(preferences.node("models")),
+        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new)),
+                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
                 windowLog, new Launch("0", "NoopPropagationModel", false, null, false), windowClosed::countDown).frame());
         menu = onEdt(() -> new ForceMenu(servers::running));
     }

@@ -6,13 +6,16 @@ import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
  * The window's {@link Servers} for tests and benchmarks in the test tree: a {@link Hub} of the
- * given configuration per start (the port field is not read: the configuration's port counts), as
- * the application's own servers build one, without the event log.
+ * given configuration per start (the port field is not read: the configuration's port counts),
+ * with the model's instance for the run, configured with the values, as the application's own
+ * servers build one, without the event log.
  */
 public final class HubServers implements Servers {
 
@@ -35,8 +38,11 @@ public final class HubServers implements Servers {
     }
 
     @Override
-    public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Exception {
-        Hub hub = new Hub(config, model);
+    public Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+            throws Exception {
+        PropagationModel instance = model.instanceForRun();
+        instance.configure(values);
+        Hub hub = new Hub(config, instance);
         hub.addListener(listener);
         hub.start();
         hubs.add(hub);
@@ -44,6 +50,11 @@ public final class HubServers implements Servers {
             @Override
             public int port() {
                 return hub.controlPort();
+            }
+
+            @Override
+            public PropagationModel model() {
+                return instance;
             }
 
             @Override

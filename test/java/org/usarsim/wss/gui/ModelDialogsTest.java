@@ -31,20 +31,22 @@ import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelCatalog;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PluginJars;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
- * Which dialog a model gets, by its type, and what the built-in one does to the real models:
+ * Which dialog a model gets, by what it says (never by its type or its name), and what the
+ * built-in one does to the real models:
  * constructing them is cheap (no thread, no socket until start()). What a model was configured
  * with shows in its start failure, which names the simulator's address, on a port nobody listens on.
  */
@@ -55,7 +57,8 @@ class ModelDialogsTest {
         private final String name;
         private final boolean configurable;
         private final List<Setting> settings;
-        volatile ModelSettings configured;
+        private final DialogLayout layout;
+        volatile SettingValues configured;
         volatile Boolean dialogEditable;
 
         Recorder(String name, boolean configurable) {
@@ -63,9 +66,20 @@ class ModelDialogsTest {
         }
 
         Recorder(String name, boolean configurable, List<Setting> settings) {
+            this(name, configurable, settings, null);
+        }
+
+        /** With {@code layout} null, the SPI's default {@code dialogLayout()}. */
+        Recorder(String name, boolean configurable, List<Setting> settings, DialogLayout layout) {
             this.name = name;
             this.configurable = configurable;
             this.settings = settings;
+            this.layout = layout;
+        }
+
+        @Override
+        public DialogLayout dialogLayout() {
+            return layout == null ? PropagationModel.super.dialogLayout() : layout;
         }
 
         @Override
@@ -79,7 +93,7 @@ class ModelDialogsTest {
         }
 
         @Override
-        public void configure(ModelSettings settings) {
+        public void configure(SettingValues settings) {
             configured = settings;
         }
 
@@ -271,7 +285,7 @@ class ModelDialogsTest {
     void theObstacleModelGetsTheObstaclesGroupAndCancelLeavesItAlone() throws Exception {
         int[] ports = closedPorts(2);
         ObstaclePropagationModel model = new ObstaclePropagationModel();
-        model.configure(new ModelSettings(Map.of("usarsim.port", String.valueOf(ports[0]))));
+        model.configure(new SettingValues(Map.of("usarsim.port", String.valueOf(ports[0]))));
         CompletableFuture<Boolean> shown = show(model, true);
         Window dialog = dialog("ObstaclePropagationModel Configuration");
         assertTrue(hasField(dialog, "obstacle.attenuation"));
@@ -433,6 +447,44 @@ class ModelDialogsTest {
         assertTrue(shown.get(5, TimeUnit.SECONDS));
         assertEquals(Map.of("usarsim.host", "127.0.0.1", "reshaped.rate", "4"), preferences.load(model));
         assertFalse(ModelDialogs.isConfigurable(new MySimulatorModel("Bare", List.of())), "no settings, no dialog of its own");
+    }
+
+    @Test
+    void aPluginModelThatAsksForTheDistanceLayoutGetsItAndOneThatDoesNotGetsTheGeneratedDialog() throws Exception {
+        List<Setting> distanceKeys = new DistanceOnlyPropagationModel().settings();
+        List<Setting> obstacleKeys = new ObstaclePropagationModel().settings();
+        assertEquals(DialogLayout.GENERATED, new Recorder("Plain", false).dialogLayout(), "the SPI's default");
+
+        // Not a SimulatorModel, and not named like one: it says which layout it wants.
+        Recorder asks = new Recorder("Ranged", false, distanceKeys, DialogLayout.DISTANCE);
+        int port = closedPorts(1)[0];
+        CompletableFuture<Boolean> shown = show(asks, true);
+        Window dialog = dialog("Ranged Configuration");
+        assertTrue(hasField(dialog, DistanceModelDialog.CUTOFF_DISTANCE), "the DistanceOnly layout");
+        assertFalse(hasField(dialog, "obstacle.attenuation"), "no Obstacles group");
+        type(dialog, "usarsim.port", String.valueOf(port));
+        click(dialog, DistanceModelDialog.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals(String.valueOf(port), asks.configured.asMap().get("usarsim.port"), "stored and handed to configure");
+
+        Recorder obstacles = new Recorder("Walled", false, obstacleKeys, DialogLayout.DISTANCE_AND_OBSTACLES);
+        shown = show(obstacles, true);
+        Window obstacleDialog = dialog("Walled Configuration");
+        assertTrue(hasField(obstacleDialog, DistanceModelDialog.CUTOFF_DISTANCE));
+        assertTrue(hasField(obstacleDialog, "obstacle.attenuation"), "the Obstacles group");
+        click(obstacleDialog, DistanceModelDialog.CANCEL);
+        assertFalse(shown.get(5, TimeUnit.SECONDS));
+
+        // The same keys without asking, or asking without the keys the layout shows: the generated dialog.
+        for (Recorder generated : List.of(new Recorder("Quiet", false, distanceKeys),
+                new Recorder("Short", false, distanceKeys, DialogLayout.DISTANCE_AND_OBSTACLES))) {
+            shown = show(generated, true);
+            Window plain = dialog(generated.name() + " Configuration");
+            assertFalse(hasField(plain, DistanceModelDialog.CUTOFF_DISTANCE), generated.name());
+            assertTrue(hasField(plain, "distance.cutoff"), generated.name() + ": a row per declared setting");
+            click(plain, DialogParts.CANCEL);
+            assertFalse(shown.get(5, TimeUnit.SECONDS));
+        }
     }
 
     // ---- before every start ----

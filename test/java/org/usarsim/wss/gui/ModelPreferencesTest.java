@@ -51,7 +51,7 @@ class ModelPreferencesTest {
     @Test
     void nothingStoredGivesTheDefaults() {
         assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
-        assertEquals(Setting.defaults(OBSTACLE_MODEL.settings()), preferences.settings(OBSTACLE_MODEL).asMap());
+        assertEquals(Setting.defaults(OBSTACLE_MODEL.settings()), preferences.settingValues(OBSTACLE_MODEL).asMap());
         assertEquals(12, preferences.load(OBSTACLE_MODEL).size(), "usarsim.*, distance.* and obstacle.*");
         assertTrue(logged.isEmpty(), "no warning for missing values: " + logged);
     }
@@ -71,8 +71,8 @@ class ModelPreferencesTest {
         Map<String, String> expected = new LinkedHashMap<>(Setting.defaults(DISTANCE_MODEL.settings()));
         expected.putAll(values);
         assertEquals(expected, loaded);
-        assertEquals(3.0007, preferences.settings(DISTANCE_MODEL).getDouble("distance.n", -1), 0);
-        assertEquals(250, preferences.settings(DISTANCE_MODEL).getInt("usarsim.interval", -1));
+        assertEquals(3.0007, preferences.settingValues(DISTANCE_MODEL).getDouble("distance.n", -1), 0);
+        assertEquals(250, preferences.settingValues(DISTANCE_MODEL).getInt("usarsim.interval", -1));
     }
 
     @Test

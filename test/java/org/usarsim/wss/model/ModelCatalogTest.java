@@ -75,13 +75,13 @@ class ModelCatalogTest {
     void aPluginWhoseSettingsAreBrokenIsSkippedAndTheOthersLoad() throws IOException {
         Path folder = dir.resolve("plugins");
         Path jar = PluginJars.jar(folder.resolve("settings.jar"), classes,
-                List.of("Base", "BadDefault", "SettingsThrow", "ServerKey", "TunedModel"),
-                List.of("BadDefault", "SettingsThrow", "ServerKey", "TunedModel"));
+                List.of("Base", "BadDefault", "DeclarationThrows", "ServerKey", "TunedModel"),
+                List.of("BadDefault", "DeclarationThrows", "ServerKey", "TunedModel"));
         ModelCatalog catalog = ModelCatalog.load(APPLICATION, List.of(folder));
         assertEquals(List.of("NoopPropagationModel", "DistanceOnlyPropagationModel", "ObstaclePropagationModel", "Tuned"),
                 catalog.names());
         warning("skipping the propagation model BadDefault in " + jar, "bad.level: the default '0' is not a whole number from 1 to 10");
-        warning("skipping the propagation model SettingsThrow in " + jar, "settings() failed", "settings() fails");
+        warning("skipping the propagation model DeclarationThrows in " + jar, "settings() failed", "settings() fails");
         warning("skipping the propagation model ServerKey in " + jar, "wss.port: the wss.* keys are the server's");
         assertEquals(List.of("tuned.level", "tuned.gain"), catalog.find("Tuned").settings().stream().map(Setting::key).toList());
     }

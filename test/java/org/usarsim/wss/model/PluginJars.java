@@ -74,7 +74,7 @@ public final class PluginJars {
                                 Setting.number("tuned.gain", "Gain", "2.5").from(0).unit("dB")
                                         .help("Taken off the level's strength"));
                     }
-                    public void configure(ModelSettings settings) {
+                    public void configure(SettingValues settings) {
                         level = settings.getInt("tuned.level", level);
                         gain = settings.getDouble("tuned.gain", gain);
                         java.util.logging.Logger.getLogger(TunedModel.class.getName())
@@ -88,8 +88,8 @@ public final class PluginJars {
                         return java.util.List.of(Setting.integer("bad.level", "Level", 0).from(1).to(10));
                     }
                 }""");
-        source("SettingsThrow", """
-                public final class SettingsThrow extends Base {
+        source("DeclarationThrows", """
+                public final class DeclarationThrows extends Base {
                     public java.util.List<Setting> settings() { throw new IllegalStateException("settings() fails"); }
                 }""");
         source("ServerKey", """

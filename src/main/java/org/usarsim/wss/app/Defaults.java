@@ -1,10 +1,12 @@
 package org.usarsim.wss.app;
 
-/** The defaults a user meets on the command line and in a properties file, named once (--help prints them). */
+/**
+ * The defaults a user meets on the command line and in a properties file that are the
+ * application's own, named once (--help prints them). The control port's is the protocol's
+ * ({@code protocol.ControlPort.DEFAULT}), the model's the catalog's
+ * ({@code model.ModelCatalog.DEFAULT_MODEL}): the window reads those too.
+ */
 final class Defaults {
-
-    /** The WSS's control port, robots connect to (wss.port). */
-    static final int CONTROL_PORT = 50000;
 
     /** The world server's port (--port): USARSim's position port. */
     static final int WORLD_PORT = 7435;

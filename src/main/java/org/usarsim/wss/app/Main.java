@@ -17,12 +17,13 @@ import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
-import org.usarsim.wss.gui.WindowSettings;
+import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.model.ModelCatalog;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.sim.WorldFileException;
-import org.usarsim.wss.sim.WorldServer;
+import org.usarsim.wss.world.WorldFileException;
+import org.usarsim.wss.world.WorldServer;
 import sun.misc.Signal;
 import sun.misc.SignalHandler;
 
@@ -134,7 +135,7 @@ public final class Main {
                 case "--help":
                 case "-h":
                     out.println(HELP);
-                    out.print(Settings.help(Settings.defaults().catalog()));
+                    out.print(ConfigFile.help(ConfigFile.defaults().catalog()));
                     return OK;
                 default:
                     throw badInput("unknown argument " + args[i] + "\n" + USAGE);
@@ -157,18 +158,18 @@ public final class Main {
                     bind == null ? Defaults.ALL_INTERFACES : bind);
         }
         Properties file = new Properties();
-        Settings settings;
+        ConfigFile configFile;
         try {
             if (config != null) {
-                file = Settings.read(config);
+                file = ConfigFile.read(config);
             }
             // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
-            Function<Settings, ModelCatalog> catalog = server -> {
+            Function<ConfigFile, ModelCatalog> catalog = server -> {
                 LogSetup.install(out, server.logLevel());
-                return Settings.modelsFor(server);
+                return ConfigFile.modelsFor(server);
             };
-            settings = Settings.of(file, config == null ? "the defaults" : config.toString(), catalog);
-        } catch (SettingsException e) {
+            configFile = ConfigFile.of(file, config == null ? "the defaults" : config.toString(), catalog);
+        } catch (ConfigFileException e) {
             throw badInput(e.getMessage());
         }
         String noDisplay = headless ? null : noDisplay();
@@ -176,9 +177,9 @@ public final class Main {
             if (noDisplay != null) {
                 Logger.getLogger(Main.class.getName()).info(noDisplay + ": running headless");
             }
-            return runHeadless(settings, config);
+            return runHeadless(configFile, config);
         }
-        return runWindow(settings, file, config != null, start);
+        return runWindow(configFile, file, config != null, start);
     }
 
     private static Failure badInput(String message) {
@@ -199,39 +200,37 @@ public final class Main {
         }
     }
 
-    private static PropagationModel knownModel(ModelCatalog catalog, String name) throws Failure {
-        PropagationModel model = catalog.find(name);
+    private static ModelProvider knownModel(ModelCatalog catalog, String name) throws Failure {
+        ModelProvider model = catalog.provider(name);
         if (model == null) {
             throw badInput("wss.model = '" + name + "' is not a known model; known: " + String.join(", ", catalog.names()));
         }
         return model;
     }
 
-    private static int runHeadless(Settings settings, Path config) throws Failure {
-        ModelCatalog catalog = settings.catalog();
-        PropagationModel model = knownModel(catalog, settings.modelName());
+    private static int runHeadless(ConfigFile configFile, Path config) throws Failure {
+        ModelCatalog catalog = configFile.catalog();
+        ModelProvider model = knownModel(catalog, configFile.modelName());
         Logger log = Logger.getLogger(Main.class.getName());
-        for (String key : settings.ignoredKeys()) {
+        for (String key : configFile.ignoredKeys()) {
             log.warning(config + ": " + key + " is not a setting of " + model.name() + " (it is one of "
                     + String.join(", ", declaring(catalog, key)) + "): ignored");
         }
         Server server;
         try {
-            server = Server.create(settings.hubConfig(), model, settings.eventLog() ? settings.eventLogDir() : null);
+            server = Server.create(configFile.hubConfig(), model, configFile.modelValues(),
+                    configFile.eventLog() ? configFile.eventLogDir() : null);
         } catch (Server.StartFailure e) {
             throw new Failure(CANNOT_START, e.getMessage());
         }
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
         try (StopSignal stop = new StopSignal()) {
             try {
-                model.configure(settings.modelSettings());
                 server.start();
             } catch (Server.StartFailure e) {
                 throw new Failure(CANNOT_START, e.getMessage());
-            } catch (RuntimeException e) {
-                throw new Failure(CANNOT_START, model.name() + " did not start: " + e.getMessage());
             }
-            try (StatsLog stats = StatsLog.every(settings.statsInterval(), server.hub())) {
+            try (StatsLog stats = StatsLog.every(configFile.statsInterval(), server.hub())) {
                 stop.await();
             } finally {
                 server.close();
@@ -244,18 +243,17 @@ public final class Main {
      * The main window, starting servers as headless mode does, until it is closed (or SIGTERM,
      * which stops the server). The keys {@code file} sets (none without --config) go over the stored ones.
      */
-    private static int runWindow(Settings settings, Properties file, boolean fromFile, boolean start) throws Failure {
-        ModelCatalog catalog = settings.catalog();
-        Launch launch = new Launch(file.containsKey("wss.port") ? settings.get("wss.port") : null,
-                file.containsKey("wss.model") ? knownModel(catalog, settings.modelName()).name() : null,
-                file.containsKey("wss.eventLog") ? settings.eventLog() : null,
-                fromFile ? settings.modelKeysSetBy(file) : null, start);
+    private static int runWindow(ConfigFile configFile, Properties file, boolean fromFile, boolean start) throws Failure {
+        ModelCatalog catalog = configFile.catalog();
+        Launch launch = new Launch(file.containsKey("wss.port") ? configFile.get("wss.port") : null,
+                file.containsKey("wss.model") ? knownModel(catalog, configFile.modelName()).name() : null,
+                file.containsKey("wss.eventLog") ? configFile.eventLog() : null,
+                fromFile ? configFile.modelKeysSetBy(file) : null, start);
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
-        List<PropagationModel> models = catalog.names().stream().map(catalog::find).toList();
-        WindowServers servers = new WindowServers(settings);
+        WindowServers servers = new WindowServers(configFile);
         try (StopSignal stop = new StopSignal()) {
-            SwingUtilities.invokeLater(() -> MainWindow.open(servers, models, new WindowSettings(), new ModelPreferences(),
+            SwingUtilities.invokeLater(() -> MainWindow.open(servers, catalog.providers(), new WindowPreferences(), new ModelPreferences(),
                     windowLog, launch, stop::stop));
             try {
                 stop.await();

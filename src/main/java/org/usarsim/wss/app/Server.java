@@ -5,13 +5,16 @@ import java.nio.file.Path;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.SettingValues;
 
 /**
  * One run of the WSS: the hub, its model and the CSV event log. Headless mode and the window
- * build and start it the same way, through here; a failure is a {@link StartFailure} whose message
- * is the one line to show.
+ * build and start it the same way, through here: each run gets its own model instance, configured
+ * here with the values of the run ({@link ModelProvider#instanceForRun}); a failure is a
+ * {@link StartFailure} whose message is the one line to show.
  */
 final class Server implements AutoCloseable {
 
@@ -37,8 +40,12 @@ final class Server implements AutoCloseable {
         }
     }
 
-    /** The hub, its model, and (when {@code eventLogDir} is not null) the event log there; nothing listens yet. */
-    static Server create(HubConfig config, PropagationModel model, Path eventLogDir) throws StartFailure {
+    /**
+     * The hub, a new instance of the model configured with {@code values}, and (when
+     * {@code eventLogDir} is not null) the event log there; nothing listens yet.
+     */
+    static Server create(HubConfig config, ModelProvider provider, SettingValues values, Path eventLogDir) throws StartFailure {
+        PropagationModel model = configured(provider, values);
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
             try {
@@ -50,8 +57,24 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog);
     }
 
+    /** The model's instance for this run, made and configured by {@link #create}. */
+    private static PropagationModel configured(ModelProvider provider, SettingValues values) throws StartFailure {
+        try {
+            PropagationModel model = provider.instanceForRun();
+            model.configure(values);
+            return model;
+        } catch (ModelStartException | RuntimeException e) {
+            throw new StartFailure(provider.name() + " did not start: " + e.getMessage());
+        }
+    }
+
     Hub hub() {
         return hub;
+    }
+
+    /** This run's model instance (the window's map asks it). */
+    PropagationModel model() {
+        return model;
     }
 
     /**

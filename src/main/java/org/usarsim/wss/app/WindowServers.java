@@ -5,8 +5,10 @@ import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -15,21 +17,22 @@ import org.usarsim.wss.model.WssEventListener;
  */
 final class WindowServers implements Servers {
 
-    private final Settings settings;
+    private final ConfigFile configFile;
     private final AtomicReference<Server> current = new AtomicReference<>();
 
-    WindowServers(Settings settings) {
-        this.settings = settings;
+    WindowServers(ConfigFile configFile) {
+        this.configFile = configFile;
     }
 
     @Override
-    public Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Server.StartFailure {
-        String problem = Setting.find(Settings.SERVER, "wss.port").problem(port);
+    public Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+            throws Server.StartFailure {
+        String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }
-        HubConfig config = settings.hubConfig().withControlPort(Integer.parseInt(port.strip()));
-        Server server = Server.create(config, model, eventLog ? settings.eventLogDir() : null);
+        HubConfig config = configFile.hubConfig().withControlPort(Integer.parseInt(port.strip()));
+        Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null);
         server.hub().addListener(listener);
         current.set(server);
         try {
@@ -42,6 +45,11 @@ final class WindowServers implements Servers {
             @Override
             public int port() {
                 return server.hub().controlPort();
+            }
+
+            @Override
+            public PropagationModel model() {
+                return server.model();
             }
 
             @Override

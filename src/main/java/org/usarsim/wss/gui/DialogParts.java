@@ -22,7 +22,7 @@ import javax.swing.event.DocumentListener;
 import javax.swing.text.JTextComponent;
 
 /**
- * What the settings dialogs share ({@link DistanceModelDialog}, {@link SettingsDialog}): the
+ * What the settings dialogs share ({@link DistanceModelDialog}, {@link GeneratedModelDialog}): the
  * component names tests find, the colours of a refusal, the buttons, the words of a refusal.
  */
 final class DialogParts {

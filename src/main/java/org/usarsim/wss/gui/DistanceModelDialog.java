@@ -16,16 +16,17 @@ import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
 import javax.swing.UIManager;
+import org.usarsim.wss.model.DialogLayout;
+import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.simulator.PathLoss;
-import org.usarsim.wss.model.simulator.SimulatorModel;
-import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /**
- * The configuration dialog of the simulator models ({@link SimulatorModel}: DistanceOnlyPropagationModel
- * and ObstaclePropagationModel), laid out as the original's (its manual's figure 2) with two
- * groups it did not have: "Link Stability" and, for an {@link ObstaclePropagationModel},
- * "Obstacles". The values are those of the model's preferences node, named by its {@code name()}. Fields hold the model keys' values as
+ * The configuration dialog of the models whose {@code dialogLayout()} is {@link DialogLayout#DISTANCE}
+ * or {@link DialogLayout#DISTANCE_AND_OBSTACLES} (DistanceOnlyPropagationModel and
+ * ObstaclePropagationModel, or a plugin that asks for it), laid out as the original's (its
+ * manual's figure 2) with two groups it did not have: "Link Stability" and, for
+ * {@code DISTANCE_AND_OBSTACLES}, "Obstacles". The values are those of the model's preferences node, named by its {@code name()}. Fields hold the model keys' values as
  * text; each field's label, unit, tooltip and check come from the model's declared {@link Setting}s. The cutoff distance is derived, both ways:
  * editing Cutoff, N, Pd0 or d0 recomputes it, editing it recomputes N. OK stores the values with
  * {@link ModelPreferences}; in read-only mode (the server runs) every field is disabled and the
@@ -58,7 +59,7 @@ final class DistanceModelDialog extends JDialog {
     private static final String ATTENUATION = "obstacle.attenuation";
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
 
-    private final SimulatorModel model;
+    private final PropagationModel model;
     private final List<Setting> declared;
     private final boolean obstacles;
     private final boolean editable;
@@ -83,11 +84,11 @@ final class DistanceModelDialog extends JDialog {
      * Shows {@code values} (a value for each key the model declares); OK stores the values in
      * {@code model.name()}'s preferences. It does not touch the model itself.
      */
-    DistanceModelDialog(Window owner, SimulatorModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
+    DistanceModelDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
         super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
         this.model = model;
         this.declared = model.settings();
-        this.obstacles = model instanceof ObstaclePropagationModel;
+        this.obstacles = model.dialogLayout() == DialogLayout.DISTANCE_AND_OBSTACLES;
         this.editable = editable;
         this.preferences = preferences;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
@@ -190,12 +191,17 @@ final class DistanceModelDialog extends JDialog {
     }
 
     /**
-     * Whether the model declares every key this dialog shows: a plugin's subclass that changed
-     * the simulator models' settings gets the dialog built from its declaration instead.
+     * Whether this dialog is the one for the model: it asks for it ({@code dialogLayout()}) and
+     * declares every key the layout shows. A plugin's simulator model that changed the
+     * declaration gets the dialog built from it instead.
      */
-    static boolean fits(SimulatorModel model) {
+    static boolean fits(PropagationModel model) {
+        DialogLayout layout = model.dialogLayout();
+        if (layout != DialogLayout.DISTANCE && layout != DialogLayout.DISTANCE_AND_OBSTACLES) {
+            return false;
+        }
         List<String> keys = new ArrayList<>(List.of(HOST, PORT, INTERVAL, TIMEOUT, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME));
-        if (model instanceof ObstaclePropagationModel) {
+        if (layout == DialogLayout.DISTANCE_AND_OBSTACLES) {
             keys.addAll(List.of(ATTENUATION, CACHE_DISTANCE));
         }
         List<Setting> declared = model.settings();

@@ -22,8 +22,9 @@ import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
 import org.usarsim.wss.hub.HubSnapshot;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.SettingValues;
 
 /**
  * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
@@ -50,32 +51,32 @@ public final class MainWindow {
     private final NetworkView view = new NetworkView();
     private final Timer timer;
     private final Servers servers;
-    private final Map<String, PropagationModel> models = new LinkedHashMap<>();
-    private final WindowSettings settings;
+    private final Map<String, ModelProvider> models = new LinkedHashMap<>();
+    private final WindowPreferences windowPreferences;
     private final ModelPreferences modelPreferences;
     private final WindowLog windowLog;
     private final Runnable onClosed;
     /** What each model's next start uses, and its dialog shows: the stored settings, a --config file's over them. */
-    private final RunSettings runSettings;
+    private final NextRunValues nextRunValues;
     private ControlBar.State state = ControlBar.State.STOPPED;
     private Servers.Running running;
     /** The port typed for the server that runs, shown again at Stop (the field shows the actual one meanwhile). */
     private String askedPort;
     private boolean closing;
 
-    private MainWindow(Servers servers, List<PropagationModel> modelList, WindowSettings settings,
+    private MainWindow(Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
         this.servers = servers;
         modelList.forEach(model -> models.put(model.name(), model));
-        this.settings = settings;
+        this.windowPreferences = windowPreferences;
         this.modelPreferences = modelPreferences;
         this.windowLog = windowLog;
         this.onClosed = onClosed;
-        this.runSettings = new RunSettings(modelPreferences, launch.modelSettings());
+        this.nextRunValues = new NextRunValues(modelPreferences, launch.modelValues());
         bar = new ControlBar(List.copyOf(models.keySet()));
-        bar.port.setText(launch.port() != null ? launch.port() : settings.port());
-        bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : settings.eventLog());
-        String model = launch.model() != null ? launch.model() : settings.model();
+        bar.port.setText(launch.port() != null ? launch.port() : windowPreferences.port());
+        bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : windowPreferences.eventLog());
+        String model = launch.model() != null ? launch.model() : windowPreferences.model();
         if (models.containsKey(model)) {
             bar.model.setSelectedItem(model);
         } else {
@@ -90,12 +91,13 @@ public final class MainWindow {
     }
 
     /**
-     * Builds and shows the window; presses Start when the launch asks. {@code onClosed} runs once the
-     * window is closed and the server stopped (the application exits there). Event thread.
+     * Builds and shows the window, offering {@code models} (each Start runs a new instance of the
+     * one selected); presses Start when the launch asks. {@code onClosed} runs once the window is
+     * closed and the server stopped (the application exits there). Event thread.
      */
-    public static MainWindow open(Servers servers, List<PropagationModel> models, WindowSettings settings,
+    public static MainWindow open(Servers servers, List<ModelProvider> models, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
-        MainWindow window = new MainWindow(servers, models, settings, modelPreferences, windowLog, launch, onClosed);
+        MainWindow window = new MainWindow(servers, models, windowPreferences, modelPreferences, windowLog, launch, onClosed);
         window.frame.setVisible(true);
         window.timer.start();
         if (launch.start()) {
@@ -138,7 +140,7 @@ public final class MainWindow {
         content.add(center, BorderLayout.CENTER);
         frame.setContentPane(content);
         frame.setMinimumSize(new Dimension(640, 480));
-        Rectangle bounds = settings.bounds();
+        Rectangle bounds = windowPreferences.bounds();
         if (bounds != null) {
             frame.setBounds(bounds);
         } else {
@@ -147,13 +149,13 @@ public final class MainWindow {
         }
     }
 
-    private PropagationModel selectedModel() {
+    private ModelProvider selectedModel() {
         return models.get((String) bar.model.getSelectedItem());
     }
 
     private void showState() {
-        PropagationModel model = selectedModel();
-        bar.show(state, model != null && ModelDialogs.isConfigurable(model));
+        ModelProvider model = selectedModel();
+        bar.show(state, model != null && ModelDialogs.isConfigurable(model.model()));
     }
 
     private void setState(ControlBar.State newState) {
@@ -186,19 +188,14 @@ public final class MainWindow {
 
     private void start() {
         String port = bar.port.getText().strip();
-        PropagationModel model = selectedModel();
+        ModelProvider model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
-        try {
-            model.configure(new ModelSettings(runSettings.values(model)));
-        } catch (RuntimeException e) {
-            failed(model.name() + " did not accept its settings: " + e.getMessage());
-            return;
-        }
+        SettingValues values = new SettingValues(nextRunValues.values(model.model()));
         setState(ControlBar.State.STARTING);
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, eventLog, view);
+                return servers.start(port, model, values, eventLog, view);
             }
 
             @Override
@@ -217,10 +214,10 @@ public final class MainWindow {
                 } catch (InterruptedException e) {
                     throw new IllegalStateException("the event thread was interrupted", e);
                 }
-                settings.storeRun(port, model.name(), eventLog);
+                windowPreferences.storeRun(port, model.name(), eventLog);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
-                view.attach(running, model);
+                view.attach(running, running.model());
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -259,9 +256,9 @@ public final class MainWindow {
     }
 
     private void configure() {
-        PropagationModel model = selectedModel();
-        if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences, runSettings.values(model))) {
-            runSettings.entered(model);
+        PropagationModel model = selectedModel().model();
+        if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences, nextRunValues.values(model))) {
+            nextRunValues.entered(model);
         }
     }
 
@@ -280,7 +277,7 @@ public final class MainWindow {
     }
 
     private void finishClosing() {
-        settings.storeBounds(frame.getBounds());
+        windowPreferences.storeBounds(frame.getBounds());
         timer.stop();
         view.close();
         forceMenu.close();

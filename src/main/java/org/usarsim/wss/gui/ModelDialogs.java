@@ -3,7 +3,6 @@ package org.usarsim.wss.gui;
 import java.awt.Window;
 import java.util.Map;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * Where the window opens a model's configuration (the model's own dialog, the built-in one of the
@@ -25,11 +24,13 @@ public final class ModelDialogs {
 
     /**
      * Shows the model's configuration and returns when it is closed; read-only when
-     * {@code editable} is false (the server runs). In this order: a model with a dialog of its own
-     * ({@code isConfigurable()}) shows its {@code showConfigurationDialog(editable)}; a
-     * {@link SimulatorModel} (DistanceOnlyPropagationModel, ObstaclePropagationModel) gets
-     * {@link DistanceModelDialog}, provided it declares the keys that dialog shows; any other
-     * model with declared settings gets the {@link SettingsDialog} built from them. The built-in dialogs' OK stores the values in
+     * {@code editable} is false (the server runs). The model says which dialog, never its type:
+     * in this order, a model with a dialog of its own ({@code isConfigurable()}) shows its
+     * {@code showConfigurationDialog(editable)}; a model whose {@code dialogLayout()} is
+     * {@code DISTANCE} or {@code DISTANCE_AND_OBSTACLES} (DistanceOnlyPropagationModel,
+     * ObstaclePropagationModel) gets {@link DistanceModelDialog}, provided it declares the keys
+     * that dialog shows; any other model with declared settings gets the
+     * {@link GeneratedModelDialog} built from them. The built-in dialogs' OK stores the values in
      * {@code preferences}, under the model's {@code name()}, and hands them to the model's
      * {@code configure}. The built-in dialogs show the stored values. Call on the Swing event thread.
      *
@@ -49,12 +50,12 @@ public final class ModelDialogs {
         if (model.isConfigurable()) {
             model.showConfigurationDialog(editable);
             return false;
-        } else if (model instanceof SimulatorModel simulatorModel && DistanceModelDialog.fits(simulatorModel)) {
-            DistanceModelDialog dialog = new DistanceModelDialog(owner, simulatorModel, editable, preferences, values);
+        } else if (DistanceModelDialog.fits(model)) {
+            DistanceModelDialog dialog = new DistanceModelDialog(owner, model, editable, preferences, values);
             dialog.setVisible(true);
             saved = dialog.saved();
         } else if (!model.settings().isEmpty()) {
-            SettingsDialog dialog = new SettingsDialog(owner, model, editable, preferences, values);
+            GeneratedModelDialog dialog = new GeneratedModelDialog(owner, model, editable, preferences, values);
             dialog.setVisible(true);
             saved = dialog.saved();
         } else {
@@ -68,10 +69,10 @@ public final class ModelDialogs {
 
     /**
      * Hands the model its stored settings (those of its {@code name()}; defaults where none is
-     * stored). The window calls it before every start, so that the model runs with what the dialog
-     * last stored, in this session or an earlier one.
+     * stored). {@link #show} calls it after an OK, on the instance the dialog showed; a run gets an
+     * instance of its own, configured by the server with the values the window hands it.
      */
     public static void configureFromPreferences(PropagationModel model, ModelPreferences preferences) {
-        model.configure(preferences.settings(model));
+        model.configure(preferences.settingValues(model));
     }
 }

@@ -6,9 +6,9 @@ import java.util.Map;
 import java.util.logging.Logger;
 import java.util.prefs.BackingStoreException;
 import java.util.prefs.Preferences;
-import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 
 /**
  * A model's settings as the GUI keeps them between runs: one {@link Preferences} node per model,
@@ -63,8 +63,8 @@ public final class ModelPreferences {
     }
 
     /** What {@link #load} gives, for {@code PropagationModel.configure}. */
-    public ModelSettings settings(PropagationModel model) {
-        return new ModelSettings(load(model));
+    public SettingValues settingValues(PropagationModel model) {
+        return new SettingValues(load(model));
     }
 
     /**

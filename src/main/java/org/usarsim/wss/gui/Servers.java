@@ -2,7 +2,9 @@ package org.usarsim.wss.gui;
 
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -12,20 +14,25 @@ import org.usarsim.wss.model.WssEventListener;
 public interface Servers {
 
     /**
-     * Starts a server on that control port with that model (configured already), the CSV event
-     * log when {@code eventLog}, and {@code listener} receiving its events from the first robot on.
-     * Slow (a model may connect to the simulator): never on the event thread.
+     * Starts a server on that control port with a new instance of that model
+     * ({@link ModelProvider#instanceForRun}) configured with {@code values}, the CSV event log when
+     * {@code eventLog}, and {@code listener} receiving its events from the first robot on. Slow (a
+     * model may connect to the simulator): never on the event thread.
      *
      * @throws Exception when it does not start; the message says why in one line, and nothing is
      *                   left listening
      */
-    Running start(String port, PropagationModel model, boolean eventLog, WssEventListener listener) throws Exception;
+    Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+            throws Exception;
 
     /** A server that runs. */
     interface Running {
 
         /** The control port it listens on (the one the OS chose when asked for 0). */
         int port();
+
+        /** The model instance this server runs (the map asks it for positions, ranges and walls). */
+        PropagationModel model();
 
         /** Its robots, ports and links at one instant (takes the hub's lock briefly: never on the event thread). */
         HubSnapshot snapshot();

@@ -14,24 +14,27 @@ import java.util.logging.Logger;
 
 /**
  * The propagation models: the built-in ones, found with {@link ServiceLoader} on the application's
- * class path, NoopPropagationModel first; then those of the plugin jars in each given folder
+ * class path, the default model ({@link #DEFAULT_MODEL}) first; then those of the plugin jars in each given folder
  * ({@link PluginFolder}), folder by folder, jars in name order. A model that fails to load, whose
  * {@code settings()} declaration is broken ({@link Setting#declarationProblem}), or whose name is
- * taken by one loaded before it, is reported with a WARNING and skipped.
+ * taken by one loaded before it, is reported with a WARNING and skipped. Each model is offered as a
+ * {@link ModelProvider}: the instance made when it was loaded, to ask what it declares, and a new
+ * instance for each run (its {@link ServiceLoader.Provider}'s {@code get()}).
  */
 public final class ModelCatalog {
 
     private static final Logger LOG = Logger.getLogger(ModelCatalog.class.getName());
 
-    private static final String NOOP = "NoopPropagationModel";
+    /** The model a run uses unless told otherwise (wss.model, the window's first run): the one that changes nothing. */
+    public static final String DEFAULT_MODEL = "NoopPropagationModel";
 
     /** More failures than this from one source: its ServiceLoader is not getting anywhere. */
     private static final int MAX_FAILURES = 100;
 
     /** The models by name, in load order. */
-    private final Map<String, PropagationModel> models;
+    private final Map<String, ModelProvider> models;
 
-    private ModelCatalog(Map<String, PropagationModel> models) {
+    private ModelCatalog(Map<String, ModelProvider> models) {
         this.models = models;
     }
 
@@ -45,11 +48,11 @@ public final class ModelCatalog {
      * (a folder that does not exist has none). Never fails: what cannot be loaded is logged.
      */
     public static ModelCatalog load(ClassLoader loader, List<Path> pluginFolders) {
-        Map<String, PropagationModel> models = new LinkedHashMap<>();
+        Map<String, ModelProvider> models = new LinkedHashMap<>();
         Map<String, String> sources = new LinkedHashMap<>();
-        List<Named> builtIn = instantiate(ServiceLoader.load(PropagationModel.class, loader), "the class path");
-        builtIn.sort((a, b) -> Boolean.compare(!a.name().equals(NOOP), !b.name().equals(NOOP)));
-        for (Named model : builtIn) {
+        List<ModelProvider> builtIn = instantiate(ServiceLoader.load(PropagationModel.class, loader), "the class path");
+        builtIn.sort((a, b) -> Boolean.compare(!a.name().equals(DEFAULT_MODEL), !b.name().equals(DEFAULT_MODEL)));
+        for (ModelProvider model : builtIn) {
             add(models, sources, model, "the class path");
         }
         List<Path> seen = new ArrayList<>();
@@ -67,10 +70,10 @@ public final class ModelCatalog {
         return new ModelCatalog(models);
     }
 
-    private static void loadPlugin(Path jar, URLClassLoader jarLoader, Map<String, PropagationModel> models,
+    private static void loadPlugin(Path jar, URLClassLoader jarLoader, Map<String, ModelProvider> models,
             Map<String, String> sources) {
         boolean used = false;
-        for (Named model : instantiate(ServiceLoader.load(PropagationModel.class, jarLoader), jar.toString())) {
+        for (ModelProvider model : instantiate(ServiceLoader.load(PropagationModel.class, jarLoader), jar.toString())) {
             if (add(models, sources, model, jar.toString())) {
                 LOG.info("loaded propagation model " + model.name() + " from " + jar);
                 used = true;
@@ -86,29 +89,25 @@ public final class ModelCatalog {
     }
 
     /** Adds the model unless its name is taken (first wins); whether it was added. */
-    private static boolean add(Map<String, PropagationModel> models, Map<String, String> sources, Named model, String source) {
+    private static boolean add(Map<String, ModelProvider> models, Map<String, String> sources, ModelProvider model, String source) {
         String taken = sources.get(model.name());
         if (taken != null) {
             LOG.warning("skipping a propagation model in " + source + ": " + model.model().getClass().getName()
                     + " is called " + model.name() + ", the name of a model already loaded from " + taken);
             return false;
         }
-        models.put(model.name(), model.model());
+        models.put(model.name(), model);
         sources.put(model.name(), source);
         return true;
     }
 
-    /** A model and the name it gave when it was loaded. */
-    private record Named(String name, PropagationModel model) {
-    }
-
     /**
-     * Every model the loader builds, with its name; each one that throws while being found, built
-     * or named is logged as a WARNING naming {@code source} and the reason, and skipped.
+     * Every model the loader offers, built once and named; each one that throws while being found,
+     * built or named is logged as a WARNING naming {@code source} and the reason, and skipped.
      */
-    private static List<Named> instantiate(ServiceLoader<PropagationModel> loader, String source) {
-        List<Named> found = new ArrayList<>();
-        Iterator<PropagationModel> iterator = loader.iterator();
+    private static List<ModelProvider> instantiate(ServiceLoader<PropagationModel> loader, String source) {
+        List<ModelProvider> found = new ArrayList<>();
+        Iterator<ServiceLoader.Provider<PropagationModel>> iterator = loader.stream().iterator();
         int failures = 0;
         while (true) {
             PropagationModel model = null;
@@ -116,7 +115,8 @@ public final class ModelCatalog {
                 if (!iterator.hasNext()) {
                     break;
                 }
-                model = iterator.next();
+                ServiceLoader.Provider<PropagationModel> provider = iterator.next();
+                model = provider.get();
                 String name = model.name();
                 if (name == null || name.isBlank()) {
                     LOG.warning("skipping a propagation model in " + source + ": " + model.getClass().getName()
@@ -127,7 +127,7 @@ public final class ModelCatalog {
                 if (declared != null) {
                     LOG.warning("skipping the propagation model " + name + " in " + source + ": " + declared);
                 } else {
-                    found.add(new Named(name, model));
+                    found.add(new ModelProvider(name, model, provider::get));
                 }
             } catch (RuntimeException | Error e) {
                 if (e instanceof VirtualMachineError && !(e instanceof StackOverflowError)) {
@@ -185,10 +185,13 @@ public final class ModelCatalog {
         }
     }
 
-    /** The model named by its {@link PropagationModel#name()}, its class's simple or its qualified name; or null. */
-    public PropagationModel find(String name) {
-        for (Map.Entry<String, PropagationModel> entry : models.entrySet()) {
-            Class<?> type = entry.getValue().getClass();
+    /**
+     * The model named by its {@link PropagationModel#name()}, its class's simple or its qualified
+     * name; or null.
+     */
+    public ModelProvider provider(String name) {
+        for (Map.Entry<String, ModelProvider> entry : models.entrySet()) {
+            Class<?> type = entry.getValue().model().getClass();
             if (entry.getKey().equals(name) || type.getSimpleName().equals(name) || type.getName().equals(name)) {
                 return entry.getValue();
             }
@@ -196,9 +199,20 @@ public final class ModelCatalog {
         return null;
     }
 
+    /** The instance made when the model {@link #provider} finds was loaded (to ask what it declares); or null. */
+    public PropagationModel find(String name) {
+        ModelProvider provider = provider(name);
+        return provider == null ? null : provider.model();
+    }
+
     /** The models, in load order: NoopPropagationModel, the other built-ins, the plugins. */
-    public List<PropagationModel> models() {
+    public List<ModelProvider> providers() {
         return List.copyOf(models.values());
+    }
+
+    /** The instances made when the models were loaded, in load order, to ask what they declare. */
+    public List<PropagationModel> models() {
+        return models.values().stream().map(ModelProvider::model).toList();
     }
 
     /** The names of the models, in load order: NoopPropagationModel, the other built-ins, the plugins. */

@@ -35,7 +35,7 @@ public interface PropagationModel {
      * Takes the settings (headless: the properties file; GUI: the stored preferences): a value for
      * every key of {@link #settings()}, checked with its rule, the default where none was given.
      */
-    default void configure(ModelSettings settings) {
+    default void configure(SettingValues settings) {
     }
 
     /** The hub, for breaking and resuming pairs and kicking robots. Called before {@link #start}. */
@@ -67,6 +67,17 @@ public interface PropagationModel {
 
     /** Shows the model's settings; read-only when {@code editable} is false (the server runs). */
     default void showConfigurationDialog(boolean editable) {
+    }
+
+    /**
+     * Which dialog the GUI builds from {@link #settings()} to configure the model: by default the
+     * one generated from the declaration, a row per setting; {@link DialogLayout#DISTANCE} or
+     * {@link DialogLayout#DISTANCE_AND_OBSTACLES} for the simulator models' layout, which the GUI
+     * uses when the model declares every key that layout shows. Not asked when
+     * {@link #isConfigurable()}.
+     */
+    default DialogLayout dialogLayout() {
+        return DialogLayout.GENERATED;
     }
 
     /**

@@ -7,7 +7,7 @@ import java.util.List;
  * The one parser of the segment grammar the three text protocols share,
  * {@code WORD {Key Value} {Key Value} ...}: the control protocol ({@link CommandParser}), the
  * simulator's replies ({@code model.simulator.SimulatorReplies}) and the world server's requests
- * ({@code sim.PositionProtocol}).
+ * ({@code world.PositionProtocol}).
  *
  * <p>Whitespace is {@link Character#isWhitespace}; any amount of it (or none) is accepted around the
  * line, between the word and the segments, between segments, and inside a segment around the key and

@@ -17,11 +17,11 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
-import org.usarsim.wss.hub.Wait;
 
 /** What both simulator models share: a poll that fails, a stop and a new start, a reply cut by a timeout. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
@@ -144,7 +144,7 @@ class SimulatorModelTest {
         rig.robot("A", 0, 0, 0);
         rig.robot("B", 10, 0, 0);
         rig.polls(1);
-        rig.model.configure(new ModelSettings(Map.of("distance.n", "1")));
+        rig.model.configure(new SettingValues(Map.of("distance.n", "1")));
         rig.polls(2);
         assertEquals(new PathLoss(-49.67, 3, 2, -93).strength(10), rig.model.getSignalStrengthForPair("A", "B"),
                 "a running model keeps the configuration it started with");

@@ -7,9 +7,10 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.simulator.PollClock;
 import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorConnection;
@@ -48,6 +49,12 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         super(clock);
     }
 
+    /** The DistanceOnly model's layout with the Obstacles group. */
+    @Override
+    public DialogLayout dialogLayout() {
+        return DialogLayout.DISTANCE_AND_OBSTACLES;
+    }
+
     /** The simulator models' settings, then obstacle.attenuation and obstacle.cacheDistance. */
     @Override
     public List<Setting> settings() {
@@ -57,7 +64,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected void started(ModelSettings settings) {
+    protected void started(SettingValues settings) {
         attenuation = settings.getDouble("obstacle.attenuation", 0);
         counts = new ObstacleCounts(settings.getDouble("obstacle.cacheDistance", 0));
         getobsUnanswered = false;

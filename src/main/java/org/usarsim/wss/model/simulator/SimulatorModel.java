@@ -9,13 +9,14 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.SettingValues;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.model.WssEventListener;
 
@@ -97,9 +98,18 @@ public abstract class SimulatorModel implements PropagationModel {
         return SETTINGS;
     }
 
+    /**
+     * The DistanceOnly model's layout, which shows every key of {@link #SETTINGS}; a subclass
+     * whose declaration lacks one of them gets the generated dialog.
+     */
+    @Override
+    public DialogLayout dialogLayout() {
+        return DialogLayout.DISTANCE;
+    }
+
     /** Takes the values; they are checked, by their settings' rules, at the next start. */
     @Override
-    public void configure(ModelSettings settings) {
+    public void configure(SettingValues settings) {
         Map<String, String> values = new HashMap<>(given);
         values.putAll(settings.asMap());
         given = Map.copyOf(values);
@@ -250,7 +260,7 @@ public abstract class SimulatorModel implements PropagationModel {
      * Called at every start, before the first poll, with the run's checked settings (every
      * declared key): a subclass reads its own and forgets what the last run learned.
      */
-    protected void started(ModelSettings settings) {
+    protected void started(SettingValues settings) {
     }
 
     /** The path loss of the current run (the declared defaults before the first start). */

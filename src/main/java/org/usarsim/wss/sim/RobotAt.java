@@ -1,5 +1,0 @@
-package org.usarsim.wss.sim;
-
-/** A robot at one moment: where it is and whether its battery is empty. */
-record RobotAt(String name, Point position, boolean batteryEmpty) {
-}

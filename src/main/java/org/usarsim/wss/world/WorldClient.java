@@ -1,0 +1,103 @@
+package org.usarsim.wss.world;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.logging.Logger;
+import org.usarsim.wss.protocol.LineSplitter;
+
+/**
+ * One client of the world server, on its own thread: reads lines (CR LF or LF) and writes the
+ * answer to each in one write, in order. A line with no answer is only logged. A line over
+ * {@link LineSplitter#MAX_LINE_BYTES} drops the client.
+ */
+final class WorldClient implements Runnable, LineSplitter.Sink {
+
+    private static final Logger LOG = Logger.getLogger(WorldClient.class.getName());
+
+    private final WorldServer server;
+    private final Socket socket;
+    private final String peer;
+    private final LineSplitter splitter = new LineSplitter();
+    /** Its thread, once {@link #start} started it. */
+    private volatile Thread thread;
+
+    WorldClient(WorldServer server, Socket socket) {
+        this.server = server;
+        this.socket = socket;
+        this.peer = socket.getInetAddress().getHostAddress() + ":" + socket.getPort();
+    }
+
+    void start() {
+        Thread started = new Thread(this, "world-client " + peer);
+        started.setDaemon(true);
+        thread = started;
+        started.start();
+    }
+
+    /** Waits, until {@code deadline} ({@link System#nanoTime()}) at most, for its thread to end. */
+    void awaitEnd(long deadline) throws InterruptedException {
+        Thread started = thread;
+        long left = deadline - System.nanoTime();
+        if (started != null && left > 0) {
+            started.join(Math.max(1, left / 1_000_000));
+        }
+    }
+
+    void close() {
+        try {
+            socket.close();
+        } catch (IOException e) {
+            LOG.fine(() -> "closing the connection of client " + peer + ": " + e);
+        }
+    }
+
+    @Override
+    public void run() {
+        LOG.info("client " + peer + " connected");
+        try {
+            socket.setTcpNoDelay(true);
+            InputStream in = socket.getInputStream();
+            byte[] buffer = new byte[16 * 1024];
+            int read;
+            while (!socket.isClosed() && (read = in.read(buffer)) >= 0) {
+                splitter.feed(buffer, 0, read, this);
+            }
+        } catch (IOException e) {
+            LOG.fine(() -> "client " + peer + ": " + e);
+        } finally {
+            close();
+            LOG.info("client " + peer + " left");
+            server.ended(this);
+        }
+    }
+
+    @Override
+    public void line(String line) {
+        if (socket.isClosed()) {
+            return;
+        }
+        String reply = PositionProtocol.answer(line, server::now);
+        if (reply == null) {
+            LOG.fine(() -> "client " + peer + ": no answer to '" + shortened(line) + "'");
+            return;
+        }
+        try {
+            socket.getOutputStream().write((reply + "\r\n").getBytes(StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            LOG.fine(() -> "client " + peer + ": cannot write: " + e);
+            close();
+        }
+    }
+
+    @Override
+    public void lineTooLong() {
+        LOG.warning("client " + peer + " sent a line over " + LineSplitter.MAX_LINE_BYTES + " bytes: dropping it");
+        close();
+    }
+
+    private static String shortened(String line) {
+        return line.length() <= 200 ? line : line.substring(0, 200) + "...";
+    }
+}

@@ -12,7 +12,7 @@ import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelProvider;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /** A start that fails (the control port in use) leaves no thread behind. */
@@ -34,7 +34,7 @@ class FailedStartTest {
             for (int i = 0; i < STARTS; i++) {
                 Hub hub = new Hub(config, new NoopPropagationModel());
                 assertThrows(java.io.IOException.class, hub::start);
-                Server server = Server.create(config, ModelProvider.of(NoopPropagationModel::new), new SettingValues(Map.of()), null);
+                Server server = Server.create(config, ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), null);
                 assertThrows(Server.StartFailure.class, server::start);
             }
             Wait.until("no wss-port-memory thread is left of " + 2 * STARTS + " failed starts (" + before

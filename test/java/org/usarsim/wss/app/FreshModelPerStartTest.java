@@ -43,7 +43,7 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -80,7 +80,7 @@ class FreshModelPerStartTest {
         }
 
         @Override
-        public synchronized void configure(SettingValues values) {
+        public synchronized void configure(ModelSettings values) {
             configured = true;
             given.putAll(values.asMap());
         }

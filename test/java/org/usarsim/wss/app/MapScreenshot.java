@@ -33,7 +33,7 @@ import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.world.WorldServer;
@@ -91,7 +91,7 @@ public final class MapScreenshot {
         SwingUtilities.invokeAndWait(() -> {
             JFrame window = MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                     new ModelPreferences(preferences.node("models")), windowLog,
-                    new Launch("0", model.name(), false, new SettingValues(settings), true), () -> { }).frame();
+                    new Launch("0", model.name(), false, new ModelSettings(settings), true), () -> { }).frame();
             window.setBounds(0, 0, 1100, 780);
             frame.set(window);
         });

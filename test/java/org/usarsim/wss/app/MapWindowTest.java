@@ -46,7 +46,7 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.world.WorldServer;
 
@@ -111,7 +111,7 @@ class MapWindowTest {
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.interval", "100");
         settings.put("distance.n", "3");
-        frame = open(model, new SettingValues(settings));
+        frame = open(model, new ModelSettings(settings));
         int port = controlPort();
 
         try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3");
@@ -153,7 +153,7 @@ class MapWindowTest {
         }
     }
 
-    private JFrame open(PropagationModel model, SettingValues settings) throws Exception {
+    private JFrame open(PropagationModel model, ModelSettings settings) throws Exception {
         preferences = TestPreferences.create();
         windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);

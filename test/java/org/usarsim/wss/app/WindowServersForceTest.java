@@ -12,7 +12,7 @@ import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelProvider;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
@@ -28,7 +28,7 @@ class WindowServersForceTest {
         file.setProperty("wss.bindAddress", "127.0.0.1");
         file.setProperty("wss.force.down", "r1:r2");
         WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
-        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new SettingValues(Map.of()), false, new WssEventListener() { });
+        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");
             r2.initAccepting("r2");

@@ -55,7 +55,7 @@ import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
@@ -376,7 +376,7 @@ class WindowTest {
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.timeout", "500");
         // As --config gives them: the file's model settings for this session's starts.
-        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new SettingValues(settings), false),
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(settings), false),
                 List.of(new NoopPropagationModel(), distanceOnly));
         assertTrue(onEdt(() -> component(JButton.class, "configure").isEnabled()), "DistanceOnly has settings");
         run(() -> component(JButton.class, "start").doClick());
@@ -480,7 +480,7 @@ class WindowTest {
         // As --config gives them: only the model keys the file sets.
         Map<String, String> file = Map.of("usarsim.host", "127.0.0.1", "usarsim.port", String.valueOf(simulatorPort),
                 "usarsim.interval", "150");
-        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new SettingValues(file), false),
+        frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(file), false),
                 List.of(new NoopPropagationModel(), distanceOnly, new ObstaclePropagationModel()));
 
         String title = "DistanceOnlyPropagationModel Configuration";

@@ -8,7 +8,7 @@ import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -38,7 +38,7 @@ public final class HubServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
             throws Exception {
         PropagationModel instance = model.instanceForRun();
         instance.configure(values);

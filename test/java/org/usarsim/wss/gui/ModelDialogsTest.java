@@ -38,7 +38,7 @@ import org.usarsim.wss.model.PluginJars;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
@@ -58,7 +58,7 @@ class ModelDialogsTest {
         private final boolean configurable;
         private final List<Setting> settings;
         private final DialogLayout layout;
-        volatile SettingValues configured;
+        volatile ModelSettings configured;
         volatile Boolean dialogEditable;
 
         Recorder(String name, boolean configurable) {
@@ -93,7 +93,7 @@ class ModelDialogsTest {
         }
 
         @Override
-        public void configure(SettingValues settings) {
+        public void configure(ModelSettings settings) {
             configured = settings;
         }
 
@@ -285,7 +285,7 @@ class ModelDialogsTest {
     void theObstacleModelGetsTheObstaclesGroupAndCancelLeavesItAlone() throws Exception {
         int[] ports = closedPorts(2);
         ObstaclePropagationModel model = new ObstaclePropagationModel();
-        model.configure(new SettingValues(Map.of("usarsim.port", String.valueOf(ports[0]))));
+        model.configure(new ModelSettings(Map.of("usarsim.port", String.valueOf(ports[0]))));
         CompletableFuture<Boolean> shown = show(model, true);
         Window dialog = dialog("ObstaclePropagationModel Configuration");
         assertTrue(hasField(dialog, "obstacle.attenuation"));

@@ -42,7 +42,7 @@ class ModelProviderTest {
         PluginJars.tunedJar(dir.resolve("plugins").resolve("tuned.jar"), classes);
         ModelProvider tuned = ModelCatalog.load(APPLICATION, List.of(dir.resolve("plugins"))).provider("Tuned");
         PropagationModel first = tuned.instanceForRun();
-        first.configure(new SettingValues(Map.of("tuned.level", "5", "tuned.gain", "0.25")));
+        first.configure(new ModelSettings(Map.of("tuned.level", "5", "tuned.gain", "0.25")));
         PropagationModel second = tuned.instanceForRun();
         assertSame(tuned.model().getClass(), second.getClass(), "the plugin's class, from its jar's loader");
         assertEquals(-50.25, first.getSignalStrengthForPair("A", "B"), 0);

@@ -74,7 +74,7 @@ public final class PluginJars {
                                 Setting.number("tuned.gain", "Gain", "2.5").from(0).unit("dB")
                                         .help("Taken off the level's strength"));
                     }
-                    public void configure(SettingValues settings) {
+                    public void configure(ModelSettings settings) {
                         level = settings.getInt("tuned.level", level);
                         gain = settings.getDouble("tuned.gain", gain);
                         java.util.logging.Logger.getLogger(TunedModel.class.getName())

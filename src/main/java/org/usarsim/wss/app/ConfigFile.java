@@ -27,7 +27,7 @@ import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.protocol.ControlPort;
 
 /**
@@ -273,10 +273,10 @@ public final class ConfigFile {
      * The model keys (not {@code wss.*}) that {@code file}, the properties this configuration was
      * read from, sets, with their checked values: what the window puts over the stored model settings.
      */
-    SettingValues modelKeysSetBy(Properties file) {
+    ModelSettings modelKeysSetBy(Properties file) {
         Map<String, String> set = new LinkedHashMap<>();
         file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
-        return new SettingValues(set);
+        return new ModelSettings(set);
     }
 
     /**
@@ -302,12 +302,12 @@ public final class ConfigFile {
     }
 
     /** What the chosen model is handed: the value of each key it declares; none when there is no such model. */
-    SettingValues modelValues() {
+    ModelSettings modelValues() {
         PropagationModel model = catalog.find(modelName());
         Map<String, String> own = new LinkedHashMap<>();
         if (model != null) {
             model.settings().forEach(setting -> own.put(setting.key(), values.get(setting.key())));
         }
-        return new SettingValues(own);
+        return new ModelSettings(own);
     }
 }

@@ -8,7 +8,7 @@ import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 
 /**
  * One run of the WSS: the hub, its model and the CSV event log. Headless mode and the window
@@ -44,7 +44,7 @@ final class Server implements AutoCloseable {
      * The hub, a new instance of the model configured with {@code values}, and (when
      * {@code eventLogDir} is not null) the event log there; nothing listens yet.
      */
-    static Server create(HubConfig config, ModelProvider provider, SettingValues values, Path eventLogDir) throws StartFailure {
+    static Server create(HubConfig config, ModelProvider provider, ModelSettings values, Path eventLogDir) throws StartFailure {
         PropagationModel model = configured(provider, values);
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
@@ -58,7 +58,7 @@ final class Server implements AutoCloseable {
     }
 
     /** The model's instance for this run, made and configured by {@link #create}. */
-    private static PropagationModel configured(ModelProvider provider, SettingValues values) throws StartFailure {
+    private static PropagationModel configured(ModelProvider provider, ModelSettings values) throws StartFailure {
         try {
             PropagationModel model = provider.instanceForRun();
             model.configure(values);

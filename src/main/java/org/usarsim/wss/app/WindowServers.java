@@ -8,7 +8,7 @@ import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -25,7 +25,7 @@ final class WindowServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
             throws Server.StartFailure {
         String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
         if (problem != null) {

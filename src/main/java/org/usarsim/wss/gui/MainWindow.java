@@ -24,7 +24,7 @@ import javax.swing.WindowConstants;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 
 /**
  * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
@@ -190,7 +190,7 @@ public final class MainWindow {
         String port = bar.port.getText().strip();
         ModelProvider model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
-        SettingValues values = new SettingValues(nextRunValues.values(model.model()));
+        ModelSettings values = new ModelSettings(nextRunValues.values(model.model()));
         setState(ControlBar.State.STARTING);
         new SwingWorker<Servers.Running, Void>() {
             @Override

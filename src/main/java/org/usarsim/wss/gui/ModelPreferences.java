@@ -8,7 +8,7 @@ import java.util.prefs.BackingStoreException;
 import java.util.prefs.Preferences;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 
 /**
  * A model's settings as the GUI keeps them between runs: one {@link Preferences} node per model,
@@ -63,8 +63,8 @@ public final class ModelPreferences {
     }
 
     /** What {@link #load} gives, for {@code PropagationModel.configure}. */
-    public SettingValues settingValues(PropagationModel model) {
-        return new SettingValues(load(model));
+    public ModelSettings settingValues(PropagationModel model) {
+        return new ModelSettings(load(model));
     }
 
     /**

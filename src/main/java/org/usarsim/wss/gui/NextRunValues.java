@@ -6,7 +6,7 @@ import java.util.Set;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 
 /**
  * The setting values a model's next start uses, which are also those its dialog shows: the model's
@@ -23,7 +23,7 @@ final class NextRunValues {
     /** The models whose dialog stored values in this session: the file's no longer go over them. */
     private final Set<String> entered = new HashSet<>();
 
-    NextRunValues(ModelPreferences preferences, SettingValues file) {
+    NextRunValues(ModelPreferences preferences, ModelSettings file) {
         this.preferences = preferences;
         this.file = file == null ? Map.of() : file.asMap();
     }

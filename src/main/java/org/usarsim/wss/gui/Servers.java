@@ -4,7 +4,7 @@ import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -22,7 +22,7 @@ public interface Servers {
      * @throws Exception when it does not start; the message says why in one line, and nothing is
      *                   left listening
      */
-    Running start(String port, ModelProvider model, SettingValues values, boolean eventLog, WssEventListener listener)
+    Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
             throws Exception;
 
     /** A server that runs. */

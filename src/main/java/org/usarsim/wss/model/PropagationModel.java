@@ -35,7 +35,7 @@ public interface PropagationModel {
      * Takes the settings (headless: the properties file; GUI: the stored preferences): a value for
      * every key of {@link #settings()}, checked with its rule, the default where none was given.
      */
-    default void configure(SettingValues settings) {
+    default void configure(ModelSettings settings) {
     }
 
     /** The hub, for breaking and resuming pairs and kicking robots. Called before {@link #start}. */

@@ -25,7 +25,7 @@ import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelStartException;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.simulator.DataConnection;
 import org.usarsim.wss.model.simulator.FakeSimulator;
 import org.usarsim.wss.model.simulator.ManualClock;
@@ -279,7 +279,7 @@ class DistanceOnlyModelTest {
             free = probe.getLocalPort();
         }
         DistanceOnlyPropagationModel model = new DistanceOnlyPropagationModel();
-        model.configure(new SettingValues(Map.of("usarsim.host", "127.0.0.1", "usarsim.port", Integer.toString(free))));
+        model.configure(new ModelSettings(Map.of("usarsim.host", "127.0.0.1", "usarsim.port", Integer.toString(free))));
         ModelStartException e = assertThrows(ModelStartException.class, () -> new TestHub(model, true, 65536).close());
         assertTrue(e.getMessage().startsWith("cannot reach the simulator at 127.0.0.1:" + free + " ("), e.getMessage());
         assertFalse(model.isActive());

@@ -12,7 +12,7 @@ import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -80,7 +80,7 @@ public final class ModelRig implements AutoCloseable {
         all.put("usarsim.interval", "100");
         all.put("usarsim.timeout", "300");
         all.putAll(settings);
-        model.configure(new SettingValues(all));
+        model.configure(new ModelSettings(all));
         capture = LogCapture.of(model.getClass().getName(), Level.FINE);
         log = capture.records;
         server = new TestHub(model, true, 65536);

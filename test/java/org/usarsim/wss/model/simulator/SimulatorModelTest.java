@@ -20,7 +20,7 @@ import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.RobotPair;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 
 /** What both simulator models share: a poll that fails, a stop and a new start, a reply cut by a timeout. */
@@ -144,7 +144,7 @@ class SimulatorModelTest {
         rig.robot("A", 0, 0, 0);
         rig.robot("B", 10, 0, 0);
         rig.polls(1);
-        rig.model.configure(new SettingValues(Map.of("distance.n", "1")));
+        rig.model.configure(new ModelSettings(Map.of("distance.n", "1")));
         rig.polls(2);
         assertEquals(new PathLoss(-49.67, 3, 2, -93).strength(10), rig.model.getSignalStrengthForPair("A", "B"),
                 "a running model keeps the configuration it started with");

@@ -10,7 +10,7 @@ import java.util.logging.Logger;
 import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.simulator.PollClock;
 import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.model.simulator.SimulatorConnection;
@@ -64,7 +64,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     }
 
     @Override
-    protected void started(SettingValues settings) {
+    protected void started(ModelSettings settings) {
         attenuation = settings.getDouble("obstacle.attenuation", 0);
         counts = new ObstacleCounts(settings.getDouble("obstacle.cacheDistance", 0));
         getobsUnanswered = false;

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 
 /**
  * A simulator model's configuration for one run, read and checked once at its start: every value
@@ -13,7 +13,7 @@ import org.usarsim.wss.model.SettingValues;
  * frozen. {@link #values} holds every declared key, for what a subclass declares besides.
  */
 record SimulatorConfig(String host, int port, int intervalMs, int timeoutMs, PathLoss pathLoss, double margin,
-        double holdSeconds, SettingValues values) {
+        double holdSeconds, ModelSettings values) {
 
     /** The values given over the declared defaults, each checked; the first refused one stops the start. */
     static SimulatorConfig read(List<Setting> declared, Map<String, String> given) throws ModelStartException {
@@ -28,7 +28,7 @@ record SimulatorConfig(String host, int port, int intervalMs, int timeoutMs, Pat
                 throw new ModelStartException(setting.key() + ": '" + value + "' is not " + problem);
             }
         }
-        SettingValues checked = new SettingValues(values);
+        ModelSettings checked = new ModelSettings(values);
         return new SimulatorConfig(checked.getString("usarsim.host", null), checked.getInt("usarsim.port", 0),
                 checked.getInt("usarsim.interval", 0), checked.getInt("usarsim.timeout", 0),
                 new PathLoss(checked.getDouble("distance.pd0", 0), checked.getDouble("distance.n", 0),

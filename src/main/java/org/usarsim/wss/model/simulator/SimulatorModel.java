@@ -16,7 +16,7 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.SettingValues;
+import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.model.WssEventListener;
 
@@ -109,7 +109,7 @@ public abstract class SimulatorModel implements PropagationModel {
 
     /** Takes the values; they are checked, by their settings' rules, at the next start. */
     @Override
-    public void configure(SettingValues settings) {
+    public void configure(ModelSettings settings) {
         Map<String, String> values = new HashMap<>(given);
         values.putAll(settings.asMap());
         given = Map.copyOf(values);
@@ -260,7 +260,7 @@ public abstract class SimulatorModel implements PropagationModel {
      * Called at every start, before the first poll, with the run's checked settings (every
      * declared key): a subclass reads its own and forgets what the last run learned.
      */
-    protected void started(SettingValues settings) {
+    protected void started(ModelSettings settings) {
     }
 
     /** The path loss of the current run (the declared defaults before the first start). */

@@ -9,11 +9,11 @@ import java.util.TreeMap;
  * the model declares. The server checked every value with its setting's rule before; a model reads
  * them with a fallback for any missing.
  */
-public final class SettingValues {
+public final class ModelSettings {
 
     private final Map<String, String> values;
 
-    public SettingValues(Map<String, String> values) {
+    public ModelSettings(Map<String, String> values) {
         this.values = Map.copyOf(values);
     }
 

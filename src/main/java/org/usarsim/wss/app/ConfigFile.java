@@ -27,6 +27,8 @@ import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.shaping.RateTable;
+import org.usarsim.wss.shaping.ShapingConfig;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.protocol.ControlPort;
 
@@ -74,8 +76,20 @@ public final class ConfigFile {
                     .help("The addresses whose control connections may force pairs (FORCE, docs/protocol.md section 7)"),
             Setting.pairs("wss.force.down", "Forced down", "").orEmpty("none")
                     .help("Pairs of robots forced down from the start, even in range, until an operator releases them"),
-            Setting.pairs("wss.force.up", "Forced up", "").orEmpty("none")
-                    .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them"),
+            Setting.text("wss.force.up", "Forced up", "").orEmpty("none")
+                    .noun("a comma-separated list of robot pairs A:B, each with an optional :RATE and :DELAY (R1:R2:1M:50)")
+                    .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them;"
+                            + " with links shaped, A:B:RATE:DELAY pins the pair's rate and delay (docs/shaping.md)"),
+            Setting.choice(ShapingConfig.SHAPING, "Link shaping", "off", List.of("off", "on"))
+                    .help("Shape every link like radio: rate and delay from the signal, a robot's airtime shared (docs/shaping.md)"),
+            Setting.text(ShapingConfig.RATES, "Rates by strength", RateTable.DEFAULT.toString())
+                    .noun("steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)")
+                    .help("A pair whose strength is at or above a step's dBm gets its rate; below the last, the last"),
+            Setting.integer(ShapingConfig.DELAY_MS, "Delay", ShapingConfig.DEFAULT_DELAY_MS)
+                    .from(ShapingConfig.MIN_DELAY_MS).to(ShapingConfig.MAX_DELAY_MS).unit("ms")
+                    .help("Bytes reach the target no sooner than this after the WSS read them, plus their time on the air"),
+            Setting.bool(ShapingConfig.AIRTIME, "Shared airtime", true)
+                    .help("A robot's radio is one channel all its links share, by time"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -141,6 +155,7 @@ public final class ConfigFile {
         }
         ConfigFile server = new ConfigFile(values, null, List.of());
         server.forcedPairs(source);
+        server.shaping(source);
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
         List<Setting> own = chosen == null ? List.of() : chosen.settings();
@@ -263,9 +278,23 @@ public final class ConfigFile {
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
                     Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
-                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null));
+                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
+                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins());
         } catch (UnknownHostException | ConfigFileException e) {
-            throw new IllegalStateException("wss.bindAddress, wss.operators and wss.force.* were checked", e);
+            throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.* and wss.shaping.* were checked", e);
+        }
+    }
+
+    /** The shaping settings, checked together (docs/shaping.md). */
+    private ShapingConfig shaping(String source) throws ConfigFileException {
+        Map<String, String> shapingValues = new LinkedHashMap<>();
+        for (String key : List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS, ShapingConfig.AIRTIME)) {
+            shapingValues.put(key, get(key));
+        }
+        try {
+            return ShapingConfig.from(shapingValues);
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + e.getMessage());
         }
     }
 
@@ -287,7 +316,13 @@ public final class ConfigFile {
     private Map<RobotPair, Force> forcedPairs(String source) throws ConfigFileException {
         Map<RobotPair, Force> forced = new LinkedHashMap<>();
         listed(get("wss.force.down"), RobotPair::listOf).forEach(pair -> forced.put(pair, Force.DOWN));
-        for (RobotPair pair : listed(get("wss.force.up"), RobotPair::listOf)) {
+        ForcedUp up;
+        try {
+            up = ForcedUp.parse(get("wss.force.up"));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": wss.force.up = '" + get("wss.force.up") + "': " + e.getMessage());
+        }
+        for (RobotPair pair : up.pairs()) {
             if (forced.put(pair, Force.UP) != null) {
                 throw new ConfigFileException(source + ": the pair " + pair.first() + ":" + pair.second()
                         + " is in both wss.force.down and wss.force.up; force it one way");

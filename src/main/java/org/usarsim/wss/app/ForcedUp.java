@@ -1,0 +1,50 @@
+package org.usarsim.wss.app;
+
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.usarsim.wss.hub.core.RatePin;
+import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.shaping.Bitrate;
+import org.usarsim.wss.shaping.ShapingConfig;
+
+/**
+ * {@code wss.force.up}: the pairs forced up from the start, each {@code A:B}, and with links
+ * shaped {@code A:B:RATE} or {@code A:B:RATE:DELAY} to pin the pair's rate (bit/s, {@code k}
+ * and {@code M} allowed) and delay (ms), as {@code FORCE ... {State Up} {Rate r} {Delay d}} does;
+ * an empty RATE ({@code A:B::50}) pins the delay only.
+ */
+record ForcedUp(List<RobotPair> pairs, Map<RobotPair, RatePin> pins) {
+
+    /** @throws IllegalArgumentException naming the item that is not a pair, a rate or a delay */
+    static ForcedUp parse(String text) {
+        List<RobotPair> pairs = new ArrayList<>();
+        Map<RobotPair, RatePin> pins = new LinkedHashMap<>();
+        if (text == null || text.isBlank()) {
+            return new ForcedUp(pairs, pins);
+        }
+        for (String item : text.split(",", -1)) {
+            String[] parts = item.strip().split(":", -1);
+            List<RobotPair> pair = parts.length >= 2 ? RobotPair.listOf(parts[0] + ":" + parts[1]) : null;
+            if (pair == null || parts.length > 4) {
+                throw new IllegalArgumentException("'" + item.strip() + "' is not A:B, A:B:RATE or A:B:RATE:DELAY ("
+                        + RobotPair.LIST_WORDS + ")");
+            }
+            long rate = 0;
+            int delay = -1;
+            try {
+                rate = parts.length > 2 && !parts[2].isBlank() ? Bitrate.parse(parts[2]) : 0;
+                delay = parts.length > 3 ? ShapingConfig.parseDelayMs(parts[3]) : -1;
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException("'" + item.strip() + "': " + e.getMessage(), e);
+            }
+            pairs.add(pair.get(0));
+            RatePin pin = new RatePin(rate, delay);
+            if (!pin.equals(RatePin.NONE)) {
+                pins.put(pair.get(0), pin);
+            }
+        }
+        return new ForcedUp(List.copyOf(pairs), Map.copyOf(pins));
+    }
+}

@@ -9,9 +9,14 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.net.InetAddress;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.model.LinkQuality;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.shaping.RateTable;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /** The hub's rules without sockets, threads or waiting: each step's changes read as data, the time moved by hand. */
 class HubCoreTest {
@@ -167,6 +172,51 @@ class HubCoreTest {
         core.commit(port, port.epoch(), LOOPBACK, true, new FakeConnection(50003));
         assertEquals("A", core.reverseDns("B", 50003));
         assertNull(core.reverseDns("B", 50004));
+    }
+
+    @Test
+    void aPairsConditionOneWayComesFromThePinThenTheModelsOwnRateThenTheRateTable() {
+        HubCore shaped = new HubCore("TestModel", true, 600, 1000,
+                new ShapingConfig(true, RateTable.parse("-50:8M,-70:2M,-90:1M"), 5, true));
+        OrderedPair ab = new OrderedPair("A", "B");
+        OrderedPair ba = ab.reversed();
+        shaped.register(robot("A", sessionA, 5000), now, new Changes());
+        shaped.register(robot("B", sessionB, 6000), now, new Changes());
+        Changes measuredFirst = new Changes();
+        shaped.measured(Map.of(ab, new Measurement(-40, Optional.empty()), ba, new Measurement(-60, Optional.empty())), measuredFirst);
+        assertTrue(measuredFirst.events().isEmpty(), "a pair not seen yet has no condition to say");
+
+        Changes dns = new Changes();
+        shaped.dns("A", "B", 0, true, 40001, now, dns);
+        assertTrue(dns.events().containsAll(List.of(new HubEvent.RateChanged(ab, 8_000_000), new HubEvent.RateChanged(ba, 2_000_000))),
+                "a new pair starts at its measured rates: " + dns.events());
+        assertEquals(new PairCondition(PairState.UP, 8_000_000, 5), shaped.conditions().get(ab));
+
+        Changes weaker = new Changes();
+        shaped.measured(Map.of(ab, new Measurement(-80, Optional.empty())), weaker);
+        assertEquals(List.of(new HubEvent.RateChanged(ab, 1_000_000)), weaker.events(), "said once, at the change");
+        Changes same = new Changes();
+        shaped.measured(Map.of(ab, new Measurement(-85, Optional.empty())), same);
+        assertTrue(same.events().isEmpty(), "the same rate is not said again");
+
+        Changes modelSays = new Changes();
+        shaped.measured(Map.of(ab, new Measurement(-85, Optional.of(new LinkQuality(300_000, 40)))), modelSays);
+        assertEquals(new PairCondition(PairState.UP, 300_000, 40), shaped.conditions().get(ab), "the model's own rate and delay win");
+
+        shaped.force(AB, Force.UP, new RatePin(1_000_000, 50), now, new Changes());
+        assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50), shaped.conditions().get(ab), "the operator's pin wins");
+        assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50), shaped.conditions().get(ba), "both ways");
+
+        shaped.release(AB, true, true, now, new Changes());
+        assertEquals(new PairCondition(PairState.UP, 300_000, 40), shaped.conditions().get(ab), "released: the model's again");
+        assertEquals(new PairCondition(PairState.UP, 2_000_000, 5), shaped.conditions().get(ba));
+    }
+
+    @Test
+    void withShapingOffAConditionIsItsStateOnly() {
+        registeredPort();
+        core.breakPair(AB, now, new Changes());
+        assertEquals(new PairCondition(PairState.BROKEN, 0, 0), core.conditions().get(new OrderedPair("A", "B")));
     }
 
     private void registerBoth() {

@@ -44,6 +44,9 @@ import org.usarsim.wss.protocol.ControlPort;
 public final class ConfigFile {
 
     /** The server's own settings. */
+    /** What wss.shaping.rates takes, in words. */
+    private static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
+
     static final List<Setting> SERVER = List.of(
             Setting.integer("wss.port", "Control port", ControlPort.DEFAULT).from(0).to(65535).noun("a port number").note("0: any free port")
                     .help("The control port robots connect to; 0 lets the OS choose one, which the start line names"),
@@ -77,13 +80,13 @@ public final class ConfigFile {
             Setting.pairs("wss.force.down", "Forced down", "").orEmpty("none")
                     .help("Pairs of robots forced down from the start, even in range, until an operator releases them"),
             Setting.text("wss.force.up", "Forced up", "").orEmpty("none")
-                    .noun("a comma-separated list of robot pairs A:B, each with an optional :RATE and :DELAY (R1:R2:1M:50)")
+                    .noun(ForcedUp.WORDS)
                     .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them;"
                             + " with links shaped, A:B:RATE:DELAY pins the pair's rate and delay (docs/shaping.md)"),
             Setting.choice(ShapingConfig.SHAPING, "Link shaping", "off", List.of("off", "on"))
                     .help("Shape every link like radio: rate and delay from the signal, a robot's airtime shared (docs/shaping.md)"),
             Setting.text(ShapingConfig.RATES, "Rates by strength", RateTable.DEFAULT.toString())
-                    .noun("steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)")
+                    .noun(RATES_WORDS)
                     .help("A pair whose strength is at or above a step's dBm gets its rate; below the last, the last"),
             Setting.integer(ShapingConfig.DELAY_MS, "Delay", ShapingConfig.DEFAULT_DELAY_MS)
                     .from(ShapingConfig.MIN_DELAY_MS).to(ShapingConfig.MAX_DELAY_MS).unit("ms")
@@ -292,6 +295,12 @@ public final class ConfigFile {
             shapingValues.put(key, get(key));
         }
         try {
+            RateTable.parse(get(ShapingConfig.RATES));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + ShapingConfig.RATES + " = '" + get(ShapingConfig.RATES) + "' is not "
+                    + RATES_WORDS + ": " + e.getMessage());
+        }
+        try {
             return ShapingConfig.from(shapingValues);
         } catch (IllegalArgumentException e) {
             throw new ConfigFileException(source + ": " + e.getMessage());
@@ -320,10 +329,10 @@ public final class ConfigFile {
         try {
             up = ForcedUp.parse(get("wss.force.up"));
         } catch (IllegalArgumentException e) {
-            throw new ConfigFileException(source + ": wss.force.up = '" + get("wss.force.up") + "': " + e.getMessage());
+            throw new ConfigFileException(source + ": wss.force.up = '" + get("wss.force.up") + "' is not " + e.getMessage());
         }
         for (RobotPair pair : up.pairs()) {
-            if (forced.put(pair, Force.UP) != null) {
+            if (forced.put(pair, Force.UP) == Force.DOWN) {
                 throw new ConfigFileException(source + ": the pair " + pair.first() + ":" + pair.second()
                         + " is in both wss.force.down and wss.force.up; force it one way");
             }

@@ -17,7 +17,11 @@ import org.usarsim.wss.shaping.ShapingConfig;
  */
 record ForcedUp(List<RobotPair> pairs, Map<RobotPair, RatePin> pins) {
 
-    /** @throws IllegalArgumentException naming the item that is not a pair, a rate or a delay */
+    /** What {@link #parse} accepts, in words. */
+    static final String WORDS = "a comma-separated list of robot pairs A:B, each with an optional :RATE and :DELAY"
+            + " (R1:R2:1M:50; two different names without whitespace, braces, ':' or ',')";
+
+    /** @throws IllegalArgumentException saying what the list should be, and which item is not */
     static ForcedUp parse(String text) {
         List<RobotPair> pairs = new ArrayList<>();
         Map<RobotPair, RatePin> pins = new LinkedHashMap<>();
@@ -28,8 +32,7 @@ record ForcedUp(List<RobotPair> pairs, Map<RobotPair, RatePin> pins) {
             String[] parts = item.strip().split(":", -1);
             List<RobotPair> pair = parts.length >= 2 ? RobotPair.listOf(parts[0] + ":" + parts[1]) : null;
             if (pair == null || parts.length > 4) {
-                throw new IllegalArgumentException("'" + item.strip() + "' is not A:B, A:B:RATE or A:B:RATE:DELAY ("
-                        + RobotPair.LIST_WORDS + ")");
+                throw new IllegalArgumentException(WORDS + ": '" + item.strip() + "' is not A:B, A:B:RATE or A:B:RATE:DELAY");
             }
             long rate = 0;
             int delay = -1;
@@ -37,7 +40,7 @@ record ForcedUp(List<RobotPair> pairs, Map<RobotPair, RatePin> pins) {
                 rate = parts.length > 2 && !parts[2].isBlank() ? Bitrate.parse(parts[2]) : 0;
                 delay = parts.length > 3 ? ShapingConfig.parseDelayMs(parts[3]) : -1;
             } catch (IllegalArgumentException e) {
-                throw new IllegalArgumentException("'" + item.strip() + "': " + e.getMessage(), e);
+                throw new IllegalArgumentException(WORDS + ": '" + item.strip() + "': " + e.getMessage(), e);
             }
             pairs.add(pair.get(0));
             RatePin pin = new RatePin(rate, delay);

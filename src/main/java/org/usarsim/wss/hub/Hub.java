@@ -6,31 +6,24 @@ import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
-import java.util.Comparator;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.OptionalDouble;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Changes;
-import org.usarsim.wss.hub.core.CloseReason;
 import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.Measurement;
 import org.usarsim.wss.hub.core.OrderedPair;
-import org.usarsim.wss.hub.core.PairCondition;
-import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RegisteredRobot;
-import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.hub.tcp.ControlListener;
@@ -70,6 +63,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
 
     private final HubConfig config;
     private final PropagationModel model;
+    private final ModelAnswers answers;
     private final LongSupplier clock;
     private final EventFanOut events;
     private final SocketBuffers socketBuffers;
@@ -77,11 +71,9 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     private final WarningLimiter warnings;
     private final Object lock = new Object();
     private final HubCore core;
-    /** The sockets of each port the core holds. Guarded by {@link #lock}. */
-    private final Map<WssPort, PortSockets> sockets = new HashMap<>();
     private final Outbox outbox;
-    private final SocketTurns turns = new SocketTurns();
     private final ForgetTimer forgetTimer = new ForgetTimer(this::forgetIfGone);
+    private final ChangeApplier applier;
     private final KeepAlive keepAlive;
     /** The robots' radios, when links are shaped (docs/shaping.md). */
     private final Airtime airtime;
@@ -97,6 +89,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     Hub(HubConfig config, PropagationModel model, LongSupplier clock) {
         this.config = config;
         this.model = model;
+        this.answers = new ModelAnswers(model);
         this.clock = clock;
         this.warnings = WarningLimiter.standard(clock);
         this.events = new EventFanOut(LOG, warnings);
@@ -107,6 +100,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.airtime = config.shaping().airtime() ? Airtime.shared() : Airtime.unshared();
         this.sampler = config.shaping().on() ? new Sampler(this::measure) : null;
         this.keepAlive = KeepAlive.within(config.deadPeerSeconds());
+        this.applier = new ChangeApplier(outbox, forgetTimer, this,
+                (action, e) -> step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out)));
         events.add(new EventLogger());
     }
 
@@ -202,74 +197,12 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     /** One step of the core under the lock, its changes applied after it. */
     private void step(Consumer<Changes> step) {
         Changes out = new Changes();
-        Applying applying;
+        ChangeApplier.Applying applying;
         synchronized (lock) {
             step.accept(out);
-            applying = taken(out);
+            applying = applier.taken(out);
         }
-        apply(applying);
-    }
-
-    /** A step's changes as the hub applies them: its port work resolved to sockets, its turn and its last event's number. */
-    private record Applying(Changes changes, List<PortTask> portTasks, long turn, long lastEvent) {
-    }
-
-    /** A port's socket work with the sockets it is for, resolved under the lock (a port forgotten later keeps its own). */
-    private record PortTask(Changes.PortAction action, PortSockets sockets) {
-    }
-
-    /** Under the lock: the step's events are numbered in the outbox, its port work resolved and given a turn. */
-    private Applying taken(Changes out) {
-        long lastEvent = outbox.append(out.events());
-        if (!out.hasSocketWork()) {
-            return new Applying(out, List.of(), 0, lastEvent);
-        }
-        List<PortTask> tasks = new ArrayList<>();
-        for (Changes.PortAction action : out.portActions()) {
-            PortSockets portSockets = action.work() == Changes.PortWork.RELEASE ? sockets.remove(action.port())
-                    : sockets.get(action.port());
-            if (portSockets != null) {
-                tasks.add(new PortTask(action, portSockets));
-            }
-        }
-        return new Applying(out, tasks, turns.take(), lastEvent);
-    }
-
-    /**
-     * After the lock: the socket work in the order the steps were taken (a break's port stops
-     * before the resume that follows it listens again), then the port memory's timers, then the
-     * events. Returns once this step's socket work is done: a break has stopped its ports.
-     */
-    private void apply(Applying applying) {
-        Changes changes = applying.changes();
-        if (applying.turn() > 0) {
-            turns.await(applying.turn());
-            try {
-                applying.portTasks().forEach(this::portWork);
-                changes.closes().forEach(close -> close.link().close(close.reason()));
-                changes.sessionsToClose().forEach(RobotSession::close);
-            } finally {
-                turns.done(applying.turn());
-            }
-        }
-        changes.forgetLater().forEach(later -> forgetTimer.schedule(later.robot(), later.afterNs()));
-        outbox.deliver();
-    }
-
-    private void portWork(PortTask task) {
-        Changes.PortAction action = task.action();
-        PortSockets portSockets = task.sockets();
-        switch (action.work()) {
-            case LISTEN -> {
-                try {
-                    portSockets.listen(this, action.epoch());
-                } catch (IOException e) {
-                    step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out));
-                }
-            }
-            case STOP -> portSockets.stopListening();
-            case RELEASE -> portSockets.release();
-        }
+        applier.apply(applying);
     }
 
     // ---- called by control sessions ----
@@ -285,7 +218,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     public boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
         Changes out = new Changes();
-        Applying applying;
+        ChangeApplier.Applying applying;
         synchronized (lock) {
             long start = System.nanoTime();
             HubCore.NameCheck check;
@@ -302,9 +235,9 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
                     return false;
                 }
             }
-            applying = taken(out);
+            applying = applier.taken(out);
         }
-        apply(applying);
+        applier.apply(applying);
         return true;
     }
 
@@ -323,7 +256,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
                 return;
             }
             lock.notifyAll(); // an INIT of the name waits for the drain now
-            listening.stream().map(sockets::get).filter(Objects::nonNull).forEach(toDrain::add);
+            listening.stream().map(applier::socketsOf).filter(Objects::nonNull).forEach(toDrain::add);
         }
         // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
         List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
@@ -347,12 +280,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
                 return OptionalDouble.empty();
             }
         }
-        try {
-            return OptionalDouble.of(model.getSignalStrengthForPair(from, to));
-        } catch (RuntimeException e) {
-            LOG.log(Level.WARNING, model.name() + " failed to give the strength " + from + " -> " + to + ": " + e, e);
-            return OptionalDouble.of(Double.NaN);
-        }
+        return answers.signalStrength(from, to);
     }
 
     /**
@@ -366,9 +294,9 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         if (from.equals(to)) {
             return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
         }
-        boolean allowed = modelAllows(from, to);
+        boolean allowed = answers.allows(from, to);
         if (sampler != null && bothRegistered(from, to)) { // a new pair starts at its own rate, not the lowest
-            Map<OrderedPair, Measurement> measurements = measure(List.of(RobotPair.of(from, to)));
+            Map<OrderedPair, Measurement> measurements = answers.measure(List.of(RobotPair.of(from, to)));
             step(out -> core.measured(measurements, out));
         }
         HubCore.DnsResult result = dns(from, to, targetPort, allowed, null, null);
@@ -403,17 +331,17 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             ServerSocketChannel listening) {
         Changes out = new Changes();
         HubCore.DnsResult result;
-        Applying applying;
+        ChangeApplier.Applying applying;
         synchronized (lock) {
             int number = placeholder == null ? -1 : PortSockets.numberOf(placeholder);
             result = core.dns(from, to, targetPort, allowed, number, clock.getAsLong(), out);
             if (result.numberUsed()) {
                 WssPort port = core.port(result.key());
-                sockets.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder, listening));
+                applier.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder, listening));
             }
-            applying = taken(out);
+            applying = applier.taken(out);
         }
-        apply(applying);
+        applier.apply(applying);
         return result;
     }
 
@@ -435,15 +363,15 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     @Override
     public void accepted(WssPort port, int epoch, SocketChannel socket) {
         InetAddress peer = socket.socket().getInetAddress();
-        boolean allowed = modelAllows(port.key.from(), port.key.to());
+        boolean allowed = answers.allows(port.key.from(), port.key.to());
         HubCore.Admission admission;
         Changes out = new Changes();
-        Applying applying;
+        ChangeApplier.Applying applying;
         synchronized (lock) {
             admission = core.admit(port, epoch, peer, allowed, clock.getAsLong(), out);
-            applying = taken(out);
+            applying = applier.taken(out);
         }
-        apply(applying);
+        applier.apply(applying);
         if (admission.refusal() != null) {
             refuse(port, socket, peer, admission.refusal());
             return;
@@ -574,8 +502,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     @Override
     public void release(String robotA, String robotB) {
         RobotPair pair = pairOf(robotA, robotB);
-        boolean firstToSecond = modelAllows(pair.first(), pair.second());
-        boolean secondToFirst = modelAllows(pair.second(), pair.first());
+        boolean firstToSecond = answers.allows(pair.first(), pair.second());
+        boolean secondToFirst = answers.allows(pair.second(), pair.first());
         step(out -> core.release(pair, firstToSecond, secondToFirst, clock.getAsLong(), out));
     }
 
@@ -608,115 +536,17 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         synchronized (lock) {
             pairs = core.pairsToMeasure();
         }
-        Map<OrderedPair, Measurement> measurements = measure(pairs);
+        Map<OrderedPair, Measurement> measurements = answers.measure(pairs);
         step(out -> core.measured(measurements, out));
     }
 
-    /** What the model says of the pairs, both ways; without the lock. */
-    private Map<OrderedPair, Measurement> measure(List<RobotPair> pairs) {
-        Map<OrderedPair, Measurement> measurements = new HashMap<>();
-        for (RobotPair pair : pairs) {
-            OrderedPair way = new OrderedPair(pair.first(), pair.second());
-            measurements.put(way, measurement(way));
-            measurements.put(way.reversed(), measurement(way.reversed()));
-        }
-        return measurements;
-    }
-
-    private Measurement measurement(OrderedPair way) {
-        try {
-            return new Measurement(model.getSignalStrengthForPair(way.from(), way.to()),
-                    model.linkQualityForPair(way.from(), way.to()));
-        } catch (RuntimeException e) {
-            return Measurement.NONE; // a robot the model does not know (gone, say): the lowest rate
-        }
-    }
-
-    // ---- the snapshot ----
-
-    /** The robots, the WSS ports and the established links, all at one instant. */
+    /** The robots, the WSS ports, the established links and the pairs' statistics, all at one instant. */
     public HubSnapshot snapshot() {
-        List<HubSnapshot.RobotEntry> robotEntries = new ArrayList<>();
-        List<HubSnapshot.PortEntry> portEntries = new ArrayList<>();
-        List<HubSnapshot.LinkEntry> linkEntries = new ArrayList<>();
-        List<PairStats> pairStats;
-        Map<OrderedPair, PairCondition> conditions;
+        Snapshots.Copied copied;
         synchronized (lock) {
-            pairStats = core.pairStats();
-            long now = clock.getAsLong();
-            for (RegisteredRobot robot : core.robots()) {
-                double inUse = config.shaping().on() ? airtime.inUse(robot.name(), now) : Double.NaN;
-                robotEntries.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports(), inUse));
-            }
-            conditions = core.conditions();
-            for (WssPort port : core.ports()) {
-                var key = port.key;
-                portEntries.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
-                for (Connection link : port.links()) {
-                    if (link.isEstablished() && !link.isClosed()) {
-                        linkEntries.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number,
-                                link.outgoingPort()));
-                    }
-                }
-            }
+            copied = Snapshots.copy(core, config.shaping().on() ? airtime : null, clock.getAsLong());
         }
-        robotEntries.sort(Comparator.comparing(HubSnapshot.RobotEntry::name));
-        portEntries.sort(Comparator.comparing(HubSnapshot.PortEntry::from).thenComparing(HubSnapshot.PortEntry::to)
-                .thenComparingInt(HubSnapshot.PortEntry::targetPort));
-        linkEntries.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
-                .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
-        return new HubSnapshot(robotEntries, portEntries, linkEntries, pairEntries(pairStats, conditions));
-    }
-
-    /** The pairs' statistics, sorted by pair; the model is asked for strengths and positions here, without the lock. */
-    private List<HubSnapshot.PairEntry> pairEntries(List<PairStats> pairStats, Map<OrderedPair, PairCondition> conditions) {
-        long now = clock.getAsLong();
-        List<HubSnapshot.PairEntry> entries = new ArrayList<>();
-        for (PairStats pair : pairStats) {
-            String first = pair.pair.first();
-            String second = pair.pair.second();
-            double[] rates = pair.rates(now);
-            CloseReason lastClose = pair.lastClose();
-            entries.add(new HubSnapshot.PairEntry(first, second, pair.state(), strength(first, second), distance(first, second),
-                    pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1], pair.connections(),
-                    pair.breaks(), pair.resumes(), pair.upShare(now), lastClose == null ? null : lastClose.toString(),
-                    rateOf(conditions, first, second), rateOf(conditions, second, first)));
-        }
-        entries.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));
-        return entries;
-    }
-
-    private static long rateOf(Map<OrderedPair, PairCondition> conditions, String from, String to) {
-        PairCondition condition = conditions.get(new OrderedPair(from, to));
-        return condition == null ? 0 : condition.bitsPerSecond();
-    }
-
-    private double strength(String first, String second) {
-        try {
-            return model.getSignalStrengthForPair(first, second);
-        } catch (RuntimeException e) {
-            return Double.NaN; // a robot the model does not know (gone, say)
-        }
-    }
-
-    /** The distance between the robots' positions, NaN unless the model knows both. */
-    private double distance(String first, String second) {
-        try {
-            var a = model.positionOf(first);
-            var b = model.positionOf(second);
-            return a.isPresent() && b.isPresent() ? a.get().distanceTo(b.get()) : Double.NaN;
-        } catch (RuntimeException e) {
-            return Double.NaN;
-        }
-    }
-
-    private boolean modelAllows(String from, String to) {
-        try {
-            return model.connectionIsPossibleForPair(from, to);
-        } catch (RuntimeException e) {
-            LOG.log(Level.WARNING, model.name() + " failed to say whether " + from + " -> " + to + " may connect: " + e, e);
-            return false;
-        }
+        return Snapshots.complete(copied, answers, clock.getAsLong());
     }
 
     /** The model's own events join the hub's, in order with them. */

@@ -1,0 +1,83 @@
+package org.usarsim.wss.hub;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import org.usarsim.wss.hub.core.CloseReason;
+import org.usarsim.wss.hub.core.Connection;
+import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.OrderedPair;
+import org.usarsim.wss.hub.core.PairCondition;
+import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.core.RegisteredRobot;
+import org.usarsim.wss.hub.core.WssPort;
+import org.usarsim.wss.shaping.Airtime;
+
+/**
+ * How a {@link HubSnapshot} is taken: what the core holds is copied under the hub's lock
+ * ({@link #copy}), then the model is asked for each pair's strength and distance after it
+ * ({@link #complete}), and every list is sorted.
+ */
+final class Snapshots {
+
+    /** What the core holds, copied under the hub's lock. */
+    record Copied(List<HubSnapshot.RobotEntry> robots, List<HubSnapshot.PortEntry> ports, List<HubSnapshot.LinkEntry> links,
+            List<PairStats> pairStats, Map<OrderedPair, PairCondition> conditions) {
+    }
+
+    private Snapshots() {
+    }
+
+    /** Under the hub's lock. @param airtime the robots' radios, or null when links are not shaped */
+    static Copied copy(HubCore core, Airtime airtime, long nowNs) {
+        List<HubSnapshot.RobotEntry> robots = new ArrayList<>();
+        for (RegisteredRobot robot : core.robots()) {
+            double inUse = airtime == null ? Double.NaN : airtime.inUse(robot.name(), nowNs);
+            robots.add(new HubSnapshot.RobotEntry(robot.name(), robot.address().getHostAddress(), robot.ports(), inUse));
+        }
+        List<HubSnapshot.PortEntry> ports = new ArrayList<>();
+        List<HubSnapshot.LinkEntry> links = new ArrayList<>();
+        for (WssPort port : core.ports()) {
+            var key = port.key;
+            ports.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
+            for (Connection link : port.links()) {
+                if (link.isEstablished() && !link.isClosed()) {
+                    links.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number, link.outgoingPort()));
+                }
+            }
+        }
+        return new Copied(robots, ports, links, core.pairStats(), core.conditions());
+    }
+
+    /** After the lock: the pairs' rows (the model asked here), every list sorted. */
+    static HubSnapshot complete(Copied copied, ModelAnswers model, long nowNs) {
+        List<HubSnapshot.PairEntry> pairs = new ArrayList<>();
+        for (PairStats pair : copied.pairStats()) {
+            String first = pair.pair.first();
+            String second = pair.pair.second();
+            double[] rates = pair.rates(nowNs);
+            CloseReason lastClose = pair.lastClose();
+            pairs.add(new HubSnapshot.PairEntry(first, second, pair.state(), model.strength(first, second),
+                    model.distance(first, second), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1],
+                    pair.connections(), pair.breaks(), pair.resumes(), pair.upShare(nowNs),
+                    lastClose == null ? null : lastClose.toString(),
+                    rateOf(copied.conditions(), first, second), rateOf(copied.conditions(), second, first)));
+        }
+        List<HubSnapshot.RobotEntry> robots = new ArrayList<>(copied.robots());
+        List<HubSnapshot.PortEntry> ports = new ArrayList<>(copied.ports());
+        List<HubSnapshot.LinkEntry> links = new ArrayList<>(copied.links());
+        robots.sort(Comparator.comparing(HubSnapshot.RobotEntry::name));
+        ports.sort(Comparator.comparing(HubSnapshot.PortEntry::from).thenComparing(HubSnapshot.PortEntry::to)
+                .thenComparingInt(HubSnapshot.PortEntry::targetPort));
+        links.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
+                .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
+        pairs.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));
+        return new HubSnapshot(robots, ports, links, pairs);
+    }
+
+    private static long rateOf(Map<OrderedPair, PairCondition> conditions, String from, String to) {
+        PairCondition condition = conditions.get(new OrderedPair(from, to));
+        return condition == null ? 0 : condition.bitsPerSecond();
+    }
+}

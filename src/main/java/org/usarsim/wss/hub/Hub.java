@@ -103,6 +103,18 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.applier = new ChangeApplier(outbox, forgetTimer, this,
                 (action, e) -> step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out)));
         events.add(new EventLogger());
+        loadFailurePaths();
+    }
+
+    /**
+     * Loads the classes the hub needs when something fails, before anything can: out of
+     * descriptors, a class read from a folder (the tests' class path) cannot be loaded, and the
+     * session that met the failure would die of it instead of answering Could.Not.Allocate.Port.
+     */
+    private static void loadFailurePaths() {
+        HubEvent.class.getPermittedSubclasses();
+        WarningLimiter.class.getDeclaredClasses();
+        Changes.class.getDeclaredClasses();
     }
 
     public void addListener(WssEventListener listener) {

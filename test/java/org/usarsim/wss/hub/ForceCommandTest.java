@@ -1,6 +1,5 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -16,6 +15,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.model.RobotPair;
 
 /**

@@ -1,6 +1,5 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.net.ServerSocket;
@@ -12,6 +11,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
 

@@ -1,6 +1,5 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
@@ -31,6 +30,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 

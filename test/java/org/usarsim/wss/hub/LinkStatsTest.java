@@ -1,10 +1,5 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.PairStats;
-import org.usarsim.wss.hub.tcp.Closing;
-import org.usarsim.wss.hub.core.CloseReason;
-import org.usarsim.wss.hub.core.PairState;
-import org.usarsim.wss.hub.core.Force;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -27,6 +22,11 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.hub.core.CloseReason;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.PairState;
+import org.usarsim.wss.hub.core.PairStats;
+import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.model.RobotLinkModel;
 
 /** The statistics of each pair of robots (issue 12), over real loopback sockets. */

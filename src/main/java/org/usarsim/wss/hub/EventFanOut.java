@@ -3,9 +3,9 @@ package org.usarsim.wss.hub;
 import java.net.InetAddress;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import java.util.function.Consumer;
 import org.usarsim.wss.hub.core.EventSink;
 import org.usarsim.wss.model.WssEventListener;
 

@@ -1,10 +1,10 @@
 package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
+import java.net.StandardSocketOptions;
 import java.nio.channels.SocketChannel;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.net.StandardSocketOptions;
 import java.util.logging.Logger;
 
 /**

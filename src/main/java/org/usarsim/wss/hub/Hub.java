@@ -49,9 +49,9 @@ import org.usarsim.wss.shaping.Airtime;
  * {@link Outbox}. Control sessions, port listeners and links call in through {@link Switchboard};
  * the propagation model through {@link RobotLinkModel}.
  *
- * <p>The model is never called under the lock (a model may call back in from its own thread), nor
- * is a listener. The only I/O under it is none: a DNS binds a new port's number before it takes
- * the lock to allocate it, and a link's sockets are opened between two checks ({@link #accepted}).
+ * <p>Under the lock there is no I/O, no call into the model (a model may call back in from its
+ * own thread) and no listener: a DNS binds a new port's number before it takes the lock to
+ * allocate it, and a link's sockets are opened between two checks ({@link #accepted}).
  */
 public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
 

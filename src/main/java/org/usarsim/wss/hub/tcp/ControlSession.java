@@ -32,7 +32,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     private static final Logger LOG = Logger.getLogger(ControlSession.class.getName());
 
-    private final Switchboard hub;
+    private final Switchboard switchboard;
     private final ControlListener listener;
     private final SocketChannel channel;
     private final InetAddress address;
@@ -41,8 +41,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     /** The name this connection registered, once INIT succeeded. Only the session's thread touches it. */
     private String robot;
 
-    ControlSession(Switchboard hub, ControlListener listener, SocketChannel channel) {
-        this.hub = hub;
+    ControlSession(Switchboard switchboard, ControlListener listener, SocketChannel channel) {
+        this.switchboard = switchboard;
         this.listener = listener;
         this.channel = channel;
         this.address = channel.socket().getInetAddress();
@@ -69,7 +69,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         LOG.fine(() -> "control connection from " + peer);
         try {
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            hub.keepAlive().apply(channel);
+            switchboard.keepAlive().apply(channel);
             ByteBuffer buffer = ByteBuffer.allocate(16 * 1024);
             int read;
             while ((read = channel.read(buffer)) >= 0) {
@@ -90,7 +90,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
             close();
             listener.ended(this);
             if (robot != null) {
-                hub.deregister(robot, this);
+                switchboard.deregister(robot, this);
             }
             LOG.fine(() -> "control connection from " + peer + " closed");
         }
@@ -108,7 +108,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         } catch (ProtocolException e) {
             reply = e.reply();
         } catch (RuntimeException e) {
-            hub.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
+            switchboard.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
             reply = Replies.error(Replies.INTERNAL_ERROR);
         }
         String answered = reply;
@@ -118,7 +118,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     @Override
     public void lineTooLong() {
-        hub.warn(LOG, "over-long lines", address,
+        switchboard.warn(LOG, "over-long lines", address,
                 peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error", null);
         send(Replies.error(Replies.LINE_TOO_LONG));
     }
@@ -149,7 +149,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     private String init(Command command) throws ProtocolException {
         String name = Arguments.robot(command);
         List<Integer> ports = Arguments.portList(command);
-        if (!hub.register(name, address, ports, this)) {
+        if (!switchboard.register(name, address, ports, this)) {
             return Replies.error(Replies.ALREADY_EXISTS);
         }
         robot = name;
@@ -161,14 +161,14 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (other.equals(robot)) {
             return Replies.signalToSelf(other);
         }
-        OptionalDouble strength = hub.signalStrength(robot, other);
+        OptionalDouble strength = switchboard.signalStrength(robot, other);
         return strength.isPresent() ? Replies.signal(other, strength.getAsDouble()) : Replies.signalUnknownRobot(other);
     }
 
     private String dns(Command command) throws ProtocolException {
         String other = Arguments.robot(command);
         int targetPort = Arguments.targetPort(command);
-        HubCore.DnsResult result = hub.dns(robot, other, targetPort);
+        HubCore.DnsResult result = switchboard.dns(robot, other, targetPort);
         switch (result.outcome()) {
             case OK:
                 return Replies.dns(other, result.port());
@@ -183,7 +183,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     private String reverseDns(Command command) throws ProtocolException {
         String asked = Arguments.askedPort(command);
-        String source = hub.reverseDns(robot, Integer.parseInt(asked));
+        String source = switchboard.reverseDns(robot, Integer.parseInt(asked));
         return source == null ? Replies.reverseDnsUnknown(asked) : Replies.reverseDns(asked, source);
     }
 
@@ -192,8 +192,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
      * Only from an address of wss.operators; the names need not be registered.
      */
     private String force(Command command) throws ProtocolException {
-        if (!hub.isOperator(address)) {
-            hub.warn(LOG, "operator commands refused", address,
+        if (!switchboard.isOperator(address)) {
+            switchboard.warn(LOG, "operator commands refused", address,
                     peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators", null);
             return Replies.error(Replies.NOT_AN_OPERATOR);
         }
@@ -232,9 +232,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
                 + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "");
         LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape); // who, before what it does
         switch (wanted) {
-            case "down" -> hub.force(first, second, Force.DOWN);
-            case "up" -> hub.force(first, second, Force.UP, pin);
-            default -> hub.release(first, second);
+            case "down" -> switchboard.force(first, second, Force.DOWN);
+            case "up" -> switchboard.force(first, second, Force.UP, pin);
+            default -> switchboard.release(first, second);
         }
         return Replies.forceOk();
     }

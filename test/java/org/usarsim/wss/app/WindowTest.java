@@ -309,7 +309,8 @@ class WindowTest {
                         java.awt.event.MouseEvent.BUTTON3));
             });
             until("the force menu of r1 - r2 shows", () -> !popupItems().isEmpty());
-            assertEquals(List.of("Force down r1 - r2", "Force up r1 - r2", "Release to the model"), onEdt(this::popupItems));
+            assertEquals(List.of("Force down r1 - r2", "Force up r1 - r2", "Limit rate...", "Release to the model"),
+                    onEdt(this::popupItems));
             run(() -> javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath());
             run(() -> Stream.of(java.awt.Window.getWindows()).flatMap(w -> Gui.all(w, javax.swing.JPopupMenu.class).stream())
                     .forEach(menu -> menu.setVisible(false)));

@@ -41,10 +41,14 @@ import org.usarsim.wss.world.WorldServer;
 /**
  * Takes the map screenshots of docs/images (docs/gui.md, "For developers"): serves the world file,
  * opens the window with the properties file's model, registers the world's robots with the WSS,
- * shows the map, waits SECONDS of world time, selects ROBOT and paints the window to PNG.
+ * shows the map, waits SECONDS of world time, selects ROBOT and paints the window to PNG. Each
+ * KEY=VALUE after them goes over the file's; the file's server keys ({@code wss.shaping},
+ * {@code wss.force.up}, ...; not the port, model or address) apply to the window's server. With
+ * {@code wss.shaping=on} every robot also asks a DNS of every other, so that the hub shapes every
+ * pair and the map draws each line as wide as its rate.
  *
  *     xvfb-run -a -s "-screen 0 1280x900x24" java -cp target/classes:target/test-classes \
- *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png
+ *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png [KEY=VALUE...]
  */
 public final class MapScreenshot {
 
@@ -56,6 +60,10 @@ public final class MapScreenshot {
         Properties properties = new Properties();
         try (Reader in = Files.newBufferedReader(Path.of(args[1]))) {
             properties.load(in);
+        }
+        for (int i = 5; i < args.length; i++) {
+            String[] keyValue = args[i].split("=", 2);
+            properties.setProperty(keyValue[0], keyValue[1]);
         }
         long millis = (long) (Double.parseDouble(args[2]) * 1000);
         String selected = args[3];
@@ -77,7 +85,11 @@ public final class MapScreenshot {
 
         Preferences preferences = Preferences.userRoot().node("wss-map-screenshot-" + ProcessHandle.current().pid());
         Properties serverProperties = new Properties();
+        properties.stringPropertyNames().stream().filter(key -> key.startsWith("wss."))
+                .filter(key -> !List.of("wss.port", "wss.model", "wss.bindAddress").contains(key))
+                .forEach(key -> serverProperties.setProperty(key, properties.getProperty(key).strip()));
         serverProperties.setProperty("wss.bindAddress", "127.0.0.1");
+        boolean shaped = "on".equalsIgnoreCase(serverProperties.getProperty("wss.shaping", "off"));
         WindowServers application = new WindowServers(ConfigFile.of(serverProperties, "screenshot"));
         AtomicReference<Servers.Running> running = new AtomicReference<>();
         Servers servers = (port, runModel, values, eventLog, listener) -> {
@@ -99,13 +111,25 @@ public final class MapScreenshot {
         int port = running.get().port();
 
         List<Socket> robots = new ArrayList<>();
+        List<String> names = new ArrayList<>();
         for (String line : Files.readAllLines(worldFile)) {
             String[] words = line.strip().split("\\s+");
             if (words[0].equals("robot")) {
                 Socket robot = new Socket("127.0.0.1", port);
-                robot.getOutputStream().write(("INIT {Robot " + words[1] + "}\r\n").getBytes(StandardCharsets.UTF_8));
+                // With links shaped each robot gives a port, so that the others may ask a DNS of it.
+                robot.getOutputStream().write(("INIT {Robot " + words[1] + "}" + (shaped ? " {Port 7000}" : "") + "\r\n")
+                        .getBytes(StandardCharsets.UTF_8));
                 readLine(robot.getInputStream());
                 robots.add(robot);
+                names.add(words[1]);
+            }
+        }
+        if (shaped) { // a DNS makes a pair known to the hub, which shapes it from then on
+            for (int i = 0; i < robots.size(); i++) {
+                for (int j = i + 1; j < robots.size(); j++) {
+                    robots.get(i).getOutputStream().write(("DNS {Robot " + names.get(j) + "}\r\n").getBytes(StandardCharsets.UTF_8));
+                    readLine(robots.get(i).getInputStream());
+                }
             }
         }
         MapProbe map = MapProbe.of(frame.get());

@@ -111,7 +111,7 @@ class MapWindowTest {
         settings.put("usarsim.port", String.valueOf(simulatorPort));
         settings.put("usarsim.interval", "100");
         settings.put("distance.n", "3");
-        frame = open(model, new ModelSettings(settings));
+        frame = open(model, new ModelSettings(settings), Map.of());
         int port = controlPort();
 
         try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3");
@@ -136,6 +136,8 @@ class MapWindowTest {
             assertEquals(MapProbe.broken(), map.lineColour("Base", "Far"), "100 m: out of range, grey");
             assertEquals(MapProbe.broken(), map.lineColour("Far", "Scout"), "100.5 m: out of range, grey");
             assertEquals(MapProbe.strong(), map.lineColour("Base", "Scout"), "10 m, -70.6 dBm: in range, green");
+            assertEquals(0, map.rate("Base", "Scout"), "links not shaped: no rate");
+            assertEquals(MapProbe.unshapedWidth(), map.lineWidth("Base", "Scout"), "and the width lines always had");
             assertEquals(MapProbe.broken(), map.pixelAlong("Base", "Far", 0.3), "painted grey");
             assertEquals(MapProbe.strong(), map.pixelAlong("Base", "Scout", 0.25), "painted green");
             assertEquals("Base - Far", map.lineHit("Base", "Far", 0.3), "a right click there opens the menu on Base - Far");
@@ -153,13 +155,73 @@ class MapWindowTest {
         }
     }
 
-    private JFrame open(PropagationModel model, ModelSettings settings) throws Exception {
+    /** Range 55.6 m (distance.n 3) as above; the default rate table gives Base - Scout 54, Base - Mid 24, Mid - Scout 18 Mbit/s. */
+    private static final String RATES_WORLD = """
+            robot Base  0,0,0
+            robot Scout 10,0,0
+            robot Mid   0,-20,0
+            """;
+
+    @Test
+    void withLinksShapedALineIsAsWideAsItsPairsRate() throws Exception {
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        world = WorldServer.start(Files.writeString(dir.resolve("rates.world"), RATES_WORLD), InetAddress.getByName("127.0.0.1"),
+                simulatorPort);
+        DistanceOnlyPropagationModel model = new DistanceOnlyPropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(model.settings()));
+        settings.put("usarsim.host", "127.0.0.1");
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.interval", "100");
+        settings.put("distance.n", "3");
+        frame = open(model, new ModelSettings(settings), Map.of("wss.shaping", "on"));
+        int port = controlPort();
+
+        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3");
+                TestRobot mid = new TestRobot(port, "127.0.0.4")) {
+            base.init("Base", 7000);
+            scout.init("Scout", 7000);
+            mid.init("Mid", 7000);
+            MapProbe map = MapProbe.of(frame);
+            map.showMap();
+            until("the map shows the three robots at positions", () -> map.shows(List.of("Base", "Mid", "Scout")));
+            // A DNS makes a pair known to the hub, which then shapes it at the rate of its strength.
+            base.dns("Scout", 7000);
+            base.dns("Mid", 7000);
+            mid.dns("Scout", 7000);
+            until("the map has each pair's rate", () -> map.rate("Base", "Scout") == 54_000_000
+                    && map.rate("Base", "Mid") == 24_000_000 && map.rate("Mid", "Scout") == 18_000_000);
+            // 10 m: -70.6 dBm; 20 m: -79.7 dBm; 22.4 m: -81.1 dBm (the default table: -72 for 54M, -81 for 24M, -83 for 18M).
+            assertEquals(6f, map.lineWidth("Base", "Scout"), 1e-6, "the top rate: the thickest");
+            assertEquals(MapProbe.widthFor(24_000_000), map.lineWidth("Base", "Mid"), 1e-6);
+            assertEquals(MapProbe.widthFor(18_000_000), map.lineWidth("Mid", "Scout"), 1e-6);
+            assertEquals(3.5f, map.lineWidth("Mid", "Scout"), 1e-6, "halfway from 6 to 54 Mbit/s on a log scale");
+            // Painted so: each within a pixel of its width (antialiasing), the fastest the widest.
+            int baseScout = map.paintedWidth("Base", "Scout", 0.25);
+            int baseMid = map.paintedWidth("Base", "Mid", 0.3);
+            int midScout = map.paintedWidth("Mid", "Scout", 0.3);
+            assertEquals(6, baseScout, 1.01, "Base - Scout painted " + baseScout + " px wide");
+            assertEquals(MapProbe.widthFor(24_000_000), baseMid, 1.01, "Base - Mid painted " + baseMid + " px wide");
+            assertEquals(3.5, midScout, 1.01, "Mid - Scout painted " + midScout + " px wide");
+            assertTrue(baseScout > midScout, "54 Mbit/s is painted wider than 18: " + baseScout + " and " + midScout);
+
+            // Forced down: grey, dashed, and as wide as a line that says a state, not a rate.
+            map.chooseOnLine("Base", "Scout", 0.25, "Force down");
+            until("Base - Scout forced down", () -> map.line("Base", "Scout", PairState.FORCED_DOWN));
+            assertEquals(MapProbe.unshapedWidth(), map.lineWidth("Base", "Scout"));
+        }
+    }
+
+    private JFrame open(PropagationModel model, ModelSettings settings, Map<String, String> file) throws Exception {
         preferences = TestPreferences.create();
         windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", dir.toString());
+        file.forEach(properties::setProperty);
         WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
         return onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                 new ModelPreferences(preferences.node("models")), windowLog,

@@ -24,6 +24,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Properties;
 import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
 import java.util.prefs.Preferences;
@@ -98,11 +100,17 @@ class WindowTest {
     }
 
     private JFrame openWindow(Launch launch, List<PropagationModel> models) throws Exception {
+        return openWindow(launch, models, Map.of());
+    }
+
+    /** The window, its servers built from a properties file with these keys besides the address and the event log's folder. */
+    private JFrame openWindow(Launch launch, List<PropagationModel> models, Map<String, String> file) throws Exception {
         CountDownLatch windowClosed = new CountDownLatch(1);
         closed = windowClosed;
         Properties properties = new Properties();
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", eventLogs.toString());
+        file.forEach(properties::setProperty);
         WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
         List<ModelProvider> providers = models.stream().map(model -> ModelProvider.of(() -> model)).toList();
         return onEdt(() -> MainWindow.open(servers, providers,
@@ -199,8 +207,8 @@ class WindowTest {
             ServerSocket r1Accepts = r1.initAccepting("r1");
             ServerSocket r2Accepts = r2.initAccepting("r2");
             waitForTable("robots", List.of(
-                    List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort())),
-                    List.of("r2", "127.0.0.3", String.valueOf(r2Accepts.getLocalPort()))));
+                    List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort()), "-"),
+                    List.of("r2", "127.0.0.3", String.valueOf(r2Accepts.getLocalPort()), "-")));
 
             int toR2 = r1.dns("r2", 0);
             int toR1 = r2.dns("r1", 0);
@@ -239,7 +247,7 @@ class WindowTest {
             until("r2 comes first", () -> cells(robots).get(0).get(0).equals("r2"));
 
             model.links().kickOutRobot("r2");
-            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort()))));
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", String.valueOf(r1Accepts.getLocalPort()), "-")));
             waitForTable("ports", List.of());
             until("the log says r2 was kicked", () -> find(frame.getContentPane(), JTextArea.class, "log").getText()
                     .contains("debug: kicked out r2"));
@@ -267,14 +275,15 @@ class WindowTest {
                 assertEquals(12345, atR2.getInputStream().readNBytes(12345).length);
                 atR2.getOutputStream().write(new byte[678]);
                 assertEquals(678, data.getInputStream().readNBytes(678).length);
-                // Robot A, B, state, strength, distance, bytes A>B, B>A, connections, breaks, resumes, up %, last close
+                // Robot A, B, state, strength, distance, bytes A>B, B>A, rate A>B, B>A (links not shaped),
+                // connections, breaks, resumes, up %, last close
                 until("the statistics count the bytes", () -> statistics(stats).equals(
-                        List.of("r1", "r2", "up", "0.0", "NaN", "12345", "678", "1", "0", "0", "100.0", "")));
+                        List.of("r1", "r2", "up", "0.0", "NaN", "12345", "678", "-", "-", "1", "0", "0", "100.0", "")));
                 model.links().breakConnectionsForPair("r1", "r2");
                 until("the statistics show the break", () -> {
                     List<String> row = statistics(stats);
-                    return row.subList(0, 10).equals(List.of("r1", "r2", "broken", "0.0", "NaN", "12345", "678", "1", "1", "0"))
-                            && row.get(11).equals("out of range") && Double.parseDouble(row.get(10)) < 100;
+                    return row.subList(0, 12).equals(List.of("r1", "r2", "broken", "0.0", "NaN", "12345", "678", "-", "-", "1", "1", "0"))
+                            && row.get(13).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
                 });
             }
             // The filter works as on the other tables.
@@ -300,11 +309,76 @@ class WindowTest {
                         java.awt.event.MouseEvent.BUTTON3));
             });
             until("the force menu of r1 - r2 shows", () -> !popupItems().isEmpty());
-            assertEquals(List.of("Force down r1 - r2", "Force up r1 - r2", "Release to the model"), onEdt(this::popupItems));
+            assertEquals(List.of("Force down r1 - r2", "Force up r1 - r2", "Limit rate...", "Release to the model"),
+                    onEdt(this::popupItems));
             run(() -> javax.swing.MenuSelectionManager.defaultManager().clearSelectedPath());
             run(() -> Stream.of(java.awt.Window.getWindows()).flatMap(w -> Gui.all(w, javax.swing.JPopupMenu.class).stream())
                     .forEach(menu -> menu.setVisible(false)));
         }
+    }
+
+    @Test
+    void withLinksShapedTheStatisticsShowEachPairsRateAndTheRobotsTheirAirtime() throws Exception {
+        closeWindow();
+        // r1 - r2 pinned at 2 Mbit/s by the file; r1 - r3 at the rate table's, for ScriptedModel's 0 dBm its top rate.
+        frame = openWindow(new Launch("0", "ScriptedModel", false, null, false), List.of(new NoopPropagationModel(), model),
+                Map.of("wss.shaping", "on", "wss.force.up", "r1:r2:2M"));
+        int port = start();
+        ExecutorService traffic = Executors.newFixedThreadPool(2);
+        try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3");
+                TestRobot r3 = new TestRobot(port, "127.0.0.4")) {
+            r1.init("r1");
+            ServerSocket r2Accepts = r2.initAccepting("r2");
+            r3.initAccepting("r3");
+            int toR2 = r1.dns("r2", 0);
+            r1.dns("r3", 0);
+            JTable stats = component(JTable.class, "stats");
+            JTable robots = component(JTable.class, "robots");
+            until("the statistics show each pair's rate both ways", () -> column(stats, "Robot B").equals(List.of("r2", "r3"))
+                    && column(stats, "Rate A>B").equals(List.of("2 Mbit/s", "54 Mbit/s"))
+                    && column(stats, "Rate B>A").equals(List.of("2 Mbit/s", "54 Mbit/s")));
+            assertEquals(List.of("forced up", "up"), onEdt(() -> column(stats, "State")));
+            until("idle radios", () -> column(robots, "Airtime").equals(List.of("0 %", "0 %", "0 %")));
+
+            try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
+                // r1 sends to r2 as fast as the link takes it (4 MB: 16 s at 2 Mbit/s); both radios are on the air.
+                traffic.execute(() -> {
+                    try {
+                        byte[] chunk = new byte[64 * 1024];
+                        for (int i = 0; i < 64; i++) {
+                            data.getOutputStream().write(chunk);
+                        }
+                    } catch (IOException closedAtTheEnd) {
+                        // the test is over
+                    }
+                });
+                traffic.execute(() -> {
+                    try {
+                        atR2.getInputStream().transferTo(java.io.OutputStream.nullOutputStream());
+                    } catch (IOException closedAtTheEnd) {
+                        // the test is over
+                    }
+                });
+                until("r1's and r2's radios busy, r3's idle", () -> {
+                    List<String> airtime = column(robots, "Airtime");
+                    return percent(airtime.get(0)) >= 50 && percent(airtime.get(1)) >= 50 && airtime.get(2).equals("0 %");
+                });
+                assertEquals(List.of("r1", "r2", "r3"), onEdt(() -> column(robots, "Name")));
+            }
+        } finally {
+            traffic.shutdownNow();
+        }
+    }
+
+    /** The cells of the table's column with that header, row by row as sorted and filtered. Event thread. */
+    private static List<String> column(JTable table, String header) {
+        int index = table.getColumnModel().getColumnIndex(header);
+        return cells(table).stream().map(row -> row.get(index)).toList();
+    }
+
+    /** "37 %" as 37; -1 for anything else. */
+    private static int percent(String cell) {
+        return cell.matches("\\d+ %") ? Integer.parseInt(cell.substring(0, cell.indexOf(' '))) : -1;
     }
 
     /** The statistics table's one row, without the throughput columns (they move with time). Event thread. */
@@ -391,7 +465,7 @@ class WindowTest {
             try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
                 base.init("Base");
                 scout.init("Scout");
-                waitForTable("robots", List.of(List.of("Base", "127.0.0.2", ""), List.of("Scout", "127.0.0.3", "")));
+                waitForTable("robots", List.of(List.of("Base", "127.0.0.2", "", "-"), List.of("Scout", "127.0.0.3", "", "-")));
             }
             stop();
         } finally {
@@ -404,7 +478,7 @@ class WindowTest {
         int port = start();
         try (TestRobot robot = new TestRobot(port, "127.0.0.2")) {
             robot.init("r1");
-            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "")));
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "", "-")));
             closeWindow();
             assertEquals(-1, robot.control.getInputStream().read(), "the robot's control connection is closed");
         }
@@ -417,7 +491,7 @@ class WindowTest {
         int port = start();
         try (TestRobot robot = new TestRobot(port, "127.0.0.2")) {
             robot.init("r1");
-            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "")));
+            waitForTable("robots", List.of(List.of("r1", "127.0.0.2", "", "-")));
         }
         waitForTable("robots", List.of());
         stop();

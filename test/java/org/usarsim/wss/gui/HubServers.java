@@ -3,6 +3,7 @@ package org.usarsim.wss.gui;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
@@ -63,8 +64,8 @@ public final class HubServers implements Servers {
             }
 
             @Override
-            public void force(String robotA, String robotB, Force force) {
-                hub.force(robotA, robotB, force);
+            public void force(String robotA, String robotB, Force force, RatePin pin) {
+                hub.force(robotA, robotB, force, pin);
             }
 
             @Override

@@ -97,6 +97,59 @@ public final class MapProbe {
         });
     }
 
+    /** The width the rule gives the pair's line (names in any order), in pixels. */
+    public float lineWidth(String a, String b) {
+        return edt(() -> MapLineWidth.of(line(a, b)));
+    }
+
+    /** The pair's link rate the map holds (bit/s; 0: none, links not shaped). */
+    public long rate(String a, String b) {
+        return edt(() -> line(a, b).rate());
+    }
+
+    /**
+     * How wide the pair's line is painted a {@code fraction} of the way along it, the canvas
+     * painted afresh: the pixels across the line (along its normal, one per pixel of distance)
+     * that are inked more than half with the line's colour, counted outwards from its middle as far
+     * as they go on (so that another line or a label near it is not counted).
+     */
+    public int paintedWidth(String a, String b, double fraction) {
+        return edt(() -> {
+            BufferedImage image = paintCanvas();
+            Point2D from = map.screenOf(a);
+            Point2D to = map.screenOf(b);
+            double length = from.distance(to);
+            double nx = -(to.getY() - from.getY()) / length;
+            double ny = (to.getX() - from.getX()) / length;
+            double x = from.getX() + (to.getX() - from.getX()) * fraction;
+            double y = from.getY() + (to.getY() - from.getY()) * fraction;
+            Color colour = MapColours.of(line(a, b), map.data().cutoff());
+            int ground = 3 * 255;
+            int threshold = (ground + colour.getRed() + colour.getGreen() + colour.getBlue()) / 2;
+            int width = 0;
+            for (int side : new int[] {1, -1}) {
+                for (int step = side == 1 ? 0 : 1; step <= 20; step++) {
+                    Color pixel = new Color(image.getRGB((int) Math.round(x + side * step * nx), (int) Math.round(y + side * step * ny)));
+                    if (pixel.getRed() + pixel.getGreen() + pixel.getBlue() >= threshold) {
+                        break;
+                    }
+                    width++;
+                }
+            }
+            return width;
+        });
+    }
+
+    /** The width of a line at this rate (bit/s), as the map's rule gives it. */
+    public static float widthFor(long bitsPerSecond) {
+        return MapLineWidth.forRate(bitsPerSecond);
+    }
+
+    /** The width of a line with links not shaped. */
+    public static float unshapedWidth() {
+        return MapLineWidth.UNSHAPED;
+    }
+
     /** The pair a right click this fraction of the way along its line would open the force menu on, "a - b"; null for none. */
     public String lineHit(String a, String b, double fraction) {
         return edt(() -> {

@@ -70,6 +70,6 @@ class MapTransformTest {
     }
 
     private static MapData.Line line(PairState state, double strength) {
-        return new MapData.Line("A", "B", state, strength);
+        return new MapData.Line("A", "B", state, strength, 0);
     }
 }

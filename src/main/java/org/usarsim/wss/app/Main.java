@@ -230,7 +230,7 @@ public final class Main {
             } catch (Server.StartFailure e) {
                 throw new Failure(CANNOT_START, e.getMessage());
             }
-            try (StatsLog stats = StatsLog.every(configFile.statsInterval(), server.hub())) {
+            try (StatsLog stats = StatsLog.every(configFile.statsInterval(), server.hub(), configFile.hubConfig().shaping().on())) {
                 stop.await();
             } finally {
                 server.close();

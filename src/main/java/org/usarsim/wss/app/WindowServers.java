@@ -3,6 +3,7 @@ package org.usarsim.wss.app;
 import java.util.concurrent.atomic.AtomicReference;
 import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
@@ -58,8 +59,8 @@ final class WindowServers implements Servers {
             }
 
             @Override
-            public void force(String robotA, String robotB, Force force) {
-                server.hub().force(robotA, robotB, force);
+            public void force(String robotA, String robotB, Force force, RatePin pin) {
+                server.hub().force(robotA, robotB, force, pin);
             }
 
             @Override

@@ -1,18 +1,22 @@
 package org.usarsim.wss.gui;
 
+import java.awt.Window;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
-import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.JMenuItem;
 import javax.swing.JPopupMenu;
+import javax.swing.SwingUtilities;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.RatePin;
+import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * The right-click menu on a pair of robots (a row of the statistics table, a line of the map):
- * force the pair down, force it up, or give it back to the model. The hub is called on a thread
+ * force the pair down, force it up, force it up with its rate and delay pinned ("Limit rate...",
+ * asked by a {@link RateLimitDialog}), or give it back to the model. The hub is called on a thread
  * of the menu's own, never on the event thread; what changed comes back through the hub's events
  * like any other change.
  */
@@ -21,6 +25,7 @@ final class ForceMenu {
     private static final Logger LOG = Logger.getLogger(ForceMenu.class.getName());
     static final String DOWN = "Force down";
     static final String UP = "Force up";
+    static final String LIMIT = "Limit rate...";
     static final String RELEASE = "Release to the model";
 
     private final ExecutorService worker = Executors.newSingleThreadExecutor(task -> {
@@ -38,24 +43,44 @@ final class ForceMenu {
     /** Event thread: the menu for the pair; its items are disabled when no server runs. */
     JPopupMenu menuFor(String robotA, String robotB) {
         JPopupMenu menu = new JPopupMenu(robotA + " - " + robotB);
-        menu.add(item(DOWN + " " + robotA + " - " + robotB, server -> server.force(robotA, robotB, Force.DOWN)));
-        menu.add(item(UP + " " + robotA + " - " + robotB, server -> server.force(robotA, robotB, Force.UP)));
-        menu.add(item(RELEASE, server -> server.release(robotA, robotB)));
+        Servers.Running server = running.get();
+        String pair = robotA + " - " + robotB;
+        menu.add(item(DOWN + " " + pair, server, () -> server.force(robotA, robotB, Force.DOWN)));
+        menu.add(item(UP + " " + pair, server, () -> server.force(robotA, robotB, Force.UP)));
+        JMenuItem limit = new JMenuItem(LIMIT);
+        limit.setEnabled(server != null);
+        limit.addActionListener(e -> {
+            Window owner = menu.getInvoker() == null ? null : SwingUtilities.getWindowAncestor(menu.getInvoker());
+            RatePin pin = RateLimitDialog.ask(owner, robotA, robotB);
+            if (pin != null) {
+                String shape = Bitrate.format(pin.bitsPerSecond()) + (pin.pinsDelay() ? ", delay " + pin.delayMs() + " ms" : "");
+                call(LIMIT + " " + pair, () -> {
+                    LOG.info("window: limit rate " + pair + " to " + shape + " (forced up)"); // who, before what it does
+                    server.force(robotA, robotB, Force.UP, pin);
+                });
+            }
+        });
+        menu.add(limit);
+        menu.add(item(RELEASE, server, () -> server.release(robotA, robotB)));
         return menu;
     }
 
-    private JMenuItem item(String text, Consumer<Servers.Running> action) {
+    private JMenuItem item(String text, Servers.Running server, Runnable action) {
         JMenuItem item = new JMenuItem(text);
-        Servers.Running server = running.get();
         item.setEnabled(server != null);
-        item.addActionListener(e -> worker.execute(() -> {
-            try {
-                action.accept(server);
-            } catch (RuntimeException ex) {
-                LOG.log(Level.WARNING, text + " failed: " + ex, ex);
-            }
-        }));
+        item.addActionListener(e -> call(text, action));
         return item;
+    }
+
+    /** Calls the hub on the menu's thread; a failure is logged. */
+    private void call(String what, Runnable action) {
+        worker.execute(() -> {
+            try {
+                action.run();
+            } catch (RuntimeException ex) {
+                LOG.log(Level.WARNING, what + " failed: " + ex, ex);
+            }
+        });
     }
 
     void close() {

@@ -13,8 +13,8 @@ import org.usarsim.wss.model.Wall;
 /**
  * What the map shows at one instant, gathered off the event thread (NetworkView) and never changed
  * after: the robots (each with its position, or null when the model has none, and its range
- * through open space, NaN when the model has none), a line per pair, the walls and the model's
- * cutoff (NaN when it has none).
+ * through open space, NaN when the model has none), a line per pair (with its rate when links are
+ * shaped), the walls and the model's cutoff (NaN when it has none).
  */
 record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff) {
 
@@ -29,9 +29,9 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
     /**
      * Gathers the map of the hub's robots from the model (its query methods only: quick, and never
      * the hub's lock): positions, open-space ranges, walls and cutoff, and a line for every pair of
-     * registered robots, in the state the snapshot's pairs give it (forced ones included), or, for
-     * a pair the hub has not seen yet, up or broken as the model allows. Strengths are the model's
-     * now. Off the event thread.
+     * registered robots, in the state the snapshot's pairs give it (forced ones included) with its
+     * link rate, or, for a pair the hub has not seen yet, up or broken as the model allows (no
+     * rate). Strengths are the model's now. Off the event thread.
      */
     static MapData gather(HubSnapshot hub, PropagationModel model) {
         List<Robot> robots = new ArrayList<>();
@@ -39,31 +39,41 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
             String name = entry.name();
             robots.add(new Robot(name, model.positionOf(name).orElse(null), model.rangeFor(name, name)));
         }
-        Map<String, PairState> states = new HashMap<>();
+        Map<String, HubSnapshot.PairEntry> seen = new HashMap<>();
         for (HubSnapshot.PairEntry pair : hub.pairs()) {
-            states.put(pair.first() + '\n' + pair.second(), pair.state());
+            seen.put(pair.first() + '\n' + pair.second(), pair);
         }
         List<Line> lines = new ArrayList<>();
         for (int i = 0; i < robots.size(); i++) {
             for (int j = i + 1; j < robots.size(); j++) {
                 String a = robots.get(i).name();
                 String b = robots.get(j).name();
-                PairState state = states.get(a + '\n' + b);
-                if (state == null) {
-                    state = model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
-                }
-                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b)));
+                HubSnapshot.PairEntry pair = seen.get(a + '\n' + b);
+                PairState state = pair != null ? pair.state()
+                        : model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
+                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
             }
         }
         return new MapData(robots, lines, model.walls(), model.cutoff());
+    }
+
+    /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */
+    static long rateOf(HubSnapshot.PairEntry pair) {
+        long one = pair.linkRateFirstToSecond();
+        long other = pair.linkRateSecondToFirst();
+        return one > 0 && other > 0 ? Math.min(one, other) : Math.max(one, other);
     }
 
     /** A registered robot; {@code position} null when the model does not know it. */
     record Robot(String name, Position position, double range) {
     }
 
-    /** A pair of robots, names in ascending order: its state and the model's strength (dBm, NaN unknown). */
-    record Line(String first, String second, PairState state, double strength) {
+    /**
+     * A pair of robots, names in ascending order: its state, the model's strength (dBm, NaN
+     * unknown) and with links shaped its link rate ({@link #rateOf}; 0: not shaped, or a pair the
+     * hub has not seen yet).
+     */
+    record Line(String first, String second, PairState state, double strength, long rate) {
 
         boolean forced() {
             return state.isForced();

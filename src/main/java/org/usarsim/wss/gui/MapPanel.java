@@ -30,10 +30,12 @@ import javax.swing.JScrollPane;
 import javax.swing.SwingUtilities;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
+import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * The "Map" tab: the robots at their positions (names beside the dots), a line per pair coloured
- * by {@link MapColours}, dashed when forced, the selected robot's range as a circle, the walls, and
+ * by {@link MapColours}, as wide as {@link MapLineWidth} says (its rate, with links shaped), dashed
+ * when forced, the selected robot's range as a circle, the walls, and
  * beside it the robots without a position. Fits the world until the user zooms (wheel) or pans
  * (drag); a double click fits it again. A click on a dot selects the robot; a right click on a line
  * opens the {@link ForceMenu}. Event thread only; painting reads the {@link MapData} it was given.
@@ -256,7 +258,7 @@ final class MapPanel extends JPanel {
                 paintRange(g, t, shown);
                 paintLines(g, t, shown);
                 paintRobots(g, t, shown);
-                paintLegend(g, step);
+                paintLegend(g, step, shown);
                 if (shown.robots().stream().noneMatch(robot -> robot.position() != null)) {
                     g.setColor(Color.GRAY);
                     String text = shown.robots().isEmpty() ? "No robots" : "No robot has a position (the model gives none)";
@@ -317,10 +319,10 @@ final class MapPanel extends JPanel {
                     continue;
                 }
                 g.setColor(MapColours.of(line, shown.cutoff()));
-                g.setStroke(lineStroke(line.forced()));
+                g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
                 g.draw(new Line2D.Double(a, b));
-                if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
-                    String text = String.format(Locale.ROOT, "%.1f dBm", line.strength());
+                String text = lineLabel(line);
+                if (!text.isEmpty()) {
                     g.setFont(getFont().deriveFont(Font.PLAIN, 10f));
                     label(g, text, (a.getX() + b.getX()) / 2 + 4, (a.getY() + b.getY()) / 2 - 4);
                 }
@@ -337,9 +339,9 @@ final class MapPanel extends JPanel {
             g.drawString(text, (float) x, (float) y);
         }
 
-        private Stroke lineStroke(boolean dashed) {
-            return dashed ? new BasicStroke(2.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {8, 6}, 0)
-                    : new BasicStroke(2.5f);
+        private Stroke lineStroke(float width, boolean dashed) {
+            return dashed ? new BasicStroke(width, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {8, 6}, 0)
+                    : new BasicStroke(width);
         }
 
         private void paintRobots(Graphics2D g, MapTransform t, MapData shown) {
@@ -357,23 +359,28 @@ final class MapPanel extends JPanel {
             }
         }
 
-        private void paintLegend(Graphics2D g, double step) {
+        private void paintLegend(Graphics2D g, double step, MapData shown) {
             g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
             FontMetrics metrics = g.getFontMetrics();
             int x = 10;
             int y = getHeight() - 12;
-            Object[][] entries = {
-                {MapColours.STRONG, false, "up"},
-                {MapColours.NEAR, false, "within " + (int) MapColours.NEAR_DB + " dB of the cutoff"},
-                {MapColours.BROKEN, false, "broken / forced down"},
-                {Color.DARK_GRAY, true, "forced"}};
-            for (Object[] entry : entries) {
-                g.setColor((Color) entry[0]);
-                g.setStroke(lineStroke((Boolean) entry[1]));
+            List<LegendEntry> entries = new java.util.ArrayList<>(List.of(
+                    new LegendEntry(MapColours.STRONG, false, MapLineWidth.UNSHAPED, "up"),
+                    new LegendEntry(MapColours.NEAR, false, MapLineWidth.UNSHAPED,
+                            "within " + (int) MapColours.NEAR_DB + " dB of the cutoff"),
+                    new LegendEntry(MapColours.BROKEN, false, MapLineWidth.UNSHAPED, "broken / forced down"),
+                    new LegendEntry(Color.DARK_GRAY, true, MapLineWidth.UNSHAPED, "forced")));
+            if (shown.lines().stream().anyMatch(line -> line.rate() > 0)) { // links shaped: what the widths mean
+                entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THINNEST, Bitrate.format(MapLineWidth.LOWEST)));
+                entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THICKEST, Bitrate.format(MapLineWidth.TOP)));
+            }
+            for (LegendEntry entry : entries) {
+                g.setColor(entry.colour());
+                g.setStroke(lineStroke(entry.width(), entry.dashed()));
                 g.drawLine(x, y - 4, x + 24, y - 4);
                 g.setColor(Color.DARK_GRAY);
-                g.drawString((String) entry[2], x + 30, y);
-                x += 40 + metrics.stringWidth((String) entry[2]);
+                g.drawString(entry.text(), x + 30, y);
+                x += 40 + metrics.stringWidth(entry.text());
             }
             // The scale: one grid step.
             int pixels = (int) Math.round(step * transform().scale());
@@ -385,6 +392,25 @@ final class MapPanel extends JPanel {
             String label = (step >= 1 ? String.valueOf((long) step) : String.valueOf(step)) + " m";
             g.drawString(label, right - pixels / 2 - metrics.stringWidth(label) / 2, y - 10);
         }
+    }
+
+    /** A line of the legend: a sample of a line drawn so, and what it means. */
+    private record LegendEntry(Color colour, boolean dashed, float width, String text) {
+    }
+
+    /**
+     * The text at the middle of a pair's line: the model's strength ("-71.3 dBm", none when it
+     * has none) and with links shaped the rate of a pair that is up ("54 Mbit/s").
+     */
+    static String lineLabel(MapData.Line line) {
+        List<String> parts = new java.util.ArrayList<>();
+        if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
+            parts.add(String.format(Locale.ROOT, "%.1f dBm", line.strength()));
+        }
+        if (line.state().isUp() && line.rate() > 0) {
+            parts.add(Bitrate.format(line.rate()));
+        }
+        return String.join(", ", parts);
     }
 
     /** A round number of metres (1, 2 or 5 times a power of ten) that is 50 to 125 pixels at this scale. */

@@ -9,14 +9,18 @@ import javax.swing.JScrollPane;
 import javax.swing.JTable;
 import org.usarsim.wss.hub.HubSnapshot.RobotEntry;
 
-/** "Connected Robots": each registered robot's name, the address it registered from, its accepting ports. */
+/**
+ * "Connected Robots": each registered robot's name, the address it registered from, its accepting
+ * ports, and with links shaped its radio's airtime in use ({@link AirtimeCell}).
+ */
 final class RobotsPanel extends JPanel {
 
     private final RowsModel<RobotEntry> model = new RowsModel<>(List.of(
             new RowsModel.Column<>("Name", String.class, RobotEntry::name),
             new RowsModel.Column<>("IP", String.class, RobotEntry::address),
             new RowsModel.Column<>("Ports", String.class,
-                    robot -> robot.ports().stream().map(String::valueOf).collect(Collectors.joining(",")))));
+                    robot -> robot.ports().stream().map(String::valueOf).collect(Collectors.joining(","))),
+            new RowsModel.Column<>("Airtime", AirtimeCell.class, robot -> new AirtimeCell(robot.airtime()))));
 
     RobotsPanel() {
         super(new BorderLayout(0, 4));

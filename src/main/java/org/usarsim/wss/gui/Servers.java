@@ -1,6 +1,7 @@
 package org.usarsim.wss.gui;
 
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -38,7 +39,16 @@ public interface Servers {
         HubSnapshot snapshot();
 
         /** Forces the pair down or up until {@link #release} (takes the hub's lock: never on the event thread). */
-        void force(String robotA, String robotB, Force force);
+        default void force(String robotA, String robotB, Force force) {
+            force(robotA, robotB, force, RatePin.NONE);
+        }
+
+        /**
+         * As {@link #force(String, String, Force)}, up with the pair's rate and delay pinned
+         * ({@link RatePin#NONE}: nothing pinned), as {@code FORCE ... {Rate r} {Delay d}} does
+         * (docs/shaping.md). Never on the event thread.
+         */
+        void force(String robotA, String robotB, Force force, RatePin pin);
 
         /** Gives the pair back to the model (never on the event thread). */
         void release(String robotA, String robotB);

@@ -5,7 +5,8 @@ import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 
 /**
  * "Link statistics": a row per pair of robots the hub has seen (docs/gui.md), from the same
- * snapshots as the other tables; a right-click on a row opens the {@link ForceMenu} of its pair.
+ * snapshots as the other tables, with links shaped the link's rate each way ({@link RateCell});
+ * a right-click on a row opens the {@link ForceMenu} of its pair.
  */
 final class StatsPanel extends FilteredTablePanel<PairEntry> {
 
@@ -20,13 +21,15 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 new RowsModel.Column<>("Bytes B>A", Long.class, PairEntry::bytesSecondToFirst),
                 new RowsModel.Column<>("B/s A>B", Long.class, pair -> Math.round(pair.rateFirstToSecond())),
                 new RowsModel.Column<>("B/s B>A", Long.class, pair -> Math.round(pair.rateSecondToFirst())),
+                new RowsModel.Column<>("Rate A>B", RateCell.class, pair -> new RateCell(pair.linkRateFirstToSecond())),
+                new RowsModel.Column<>("Rate B>A", RateCell.class, pair -> new RateCell(pair.linkRateSecondToFirst())),
                 new RowsModel.Column<>("Conns", Long.class, PairEntry::connections),
                 new RowsModel.Column<>("Breaks", Long.class, PairEntry::breaks),
                 new RowsModel.Column<>("Resumes", Long.class, PairEntry::resumes),
                 new RowsModel.Column<>("Up %", Double.class, pair -> Math.round(pair.upShare() * 1000) / 10.0),
                 new RowsModel.Column<>("Last close", String.class, pair -> pair.lastClose() == null ? "" : pair.lastClose())));
-        // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Conns, Breaks, Resumes, Up %, Last close
-        preferredWidths(70, 70, 80, 60, 60, 80, 80, 70, 70, 50, 55, 65, 50, 105);
+        // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Rate x2, Conns, Breaks, Resumes, Up %, Last close
+        preferredWidths(60, 60, 80, 60, 60, 70, 70, 60, 60, 75, 75, 45, 50, 60, 45, 125);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
     }

@@ -55,9 +55,10 @@ final class EventLogger implements WssEventListener {
         LOG.info(() -> "forced " + first + " - " + second + (up ? " up" : " down"));
     }
 
+    /** At FINE: a robot near a step of the rate table changes rate at many polls (the event log has every RATE). */
     @Override
     public void rateChanged(String from, String to, long bitsPerSecond) {
-        LOG.info(() -> "rate " + from + " -> " + to + ": " + Bitrate.format(bitsPerSecond));
+        LOG.fine(() -> "rate " + from + " -> " + to + ": " + Bitrate.format(bitsPerSecond));
     }
 
     @Override

@@ -34,6 +34,7 @@ import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JFrame;
+import javax.swing.JMenuItem;
 import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
@@ -43,6 +44,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.Version;
 import org.usarsim.wss.gui.Gui;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
@@ -186,8 +188,21 @@ class WindowTest {
     }
 
     @Test
+    void helpAboutNamesTheVersionTheLicenceAndTheManual() {
+        assertTrue(Version.current().matches("\\d+\\.\\d+\\.\\d+.*"), "the pom's version: " + Version.current());
+        assertEquals("Help", onEdt(() -> frame.getJMenuBar().getMenu(0).getText()));
+        JMenuItem about = onEdt(() -> frame.getJMenuBar().getMenu(0).getItem(0));
+        assertEquals("About WSS", onEdt(about::getText));
+        javax.swing.SwingUtilities.invokeLater(about::doClick); // the dialog is modal
+        String text = Gui.closeMessage("About WSS");
+        assertTrue(text.contains("Version " + Version.current()), text);
+        assertTrue(text.contains("GNU General Public License, version 2"), text);
+        assertTrue(text.contains("Wireless Simulation Server Documentation</i>, Max Pfingsthorn, October 8, 2008"), text);
+    }
+
+    @Test
     void showsRobotsPortsAndLinksAsTheyComeBreakResumeAndGo() throws Exception {
-        assertEquals("WSS", onEdt(frame::getTitle));
+        assertEquals("WSS " + Version.current(), onEdt(frame::getTitle));
         assertEquals("Start", button());
         int port = start();
         assertFalse(onEdt(() -> component(JTextField.class, "port").isEnabled()), "the port is locked while running");

@@ -32,7 +32,7 @@ class StatsLogTest {
             List<String> lines = table.lines().toList();
             assertEquals("link statistics, 1 pair", lines.get(0), table);
             assertEquals(StatsLog.HEADER, lines.get(1));
-            assertTrue(lines.get(2).matches("A - B +up +0 +NaN +0 +0 +0 +0 +0 +0 +0 +100\\.0 +-"), lines.get(2));
+            assertTrue(lines.get(2).matches("A - B +up +0 +- +0 +0 +0 +0 +0 +0 +0 +100\\.0 +-"), lines.get(2));
         }
     }
 
@@ -52,5 +52,13 @@ class StatsLogTest {
                 "out of range");
         String row = StatsLog.table(List.of(pair)).lines().toList().get(2);
         assertTrue(row.matches("Alpha - Bravo +broken +-93\\.5 +12\\.25 +1000 +2000 +10 +20 +3 +2 +1 +75\\.0  out of range"), row);
+    }
+
+    @Test
+    void whatTheModelDoesNotKnowIsADashNotNaN() {
+        PairEntry pair = new PairEntry("Alpha", "Bravo", PairState.UP, Double.NaN, Double.NaN, 1, 2, 0, 0, 1, 0, 0, 1,
+                null);
+        String row = StatsLog.table(List.of(pair)).lines().toList().get(2);
+        assertTrue(row.matches("Alpha - Bravo +up +- +- +1 +2 +0 +0 +1 +0 +0 +100\\.0  -"), row);
     }
 }

@@ -56,12 +56,17 @@ final class StatsLog implements AutoCloseable {
         }
         for (PairEntry pair : pairs) {
             text.append('\n').append(String.format(Locale.ROOT, "%-24s %-11s %8s %8s %12d %12d %10.0f %10.0f %5d %6d %7d %5.1f  %s",
-                    pair.first() + " - " + pair.second(), pair.state().text(), Strengths.format(pair.strength()),
-                    Strengths.format(pair.distance()), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(),
+                    pair.first() + " - " + pair.second(), pair.state().text(), known(pair.strength()),
+                    known(pair.distance()), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(),
                     pair.rateFirstToSecond(), pair.rateSecondToFirst(), pair.connections(), pair.breaks(), pair.resumes(),
                     100 * pair.upShare(), pair.lastClose() == null ? "-" : pair.lastClose()));
         }
         return text.toString();
+    }
+
+    /** A value as C's %g writes it; "-" for NaN: the model does not know it. */
+    private static String known(double value) {
+        return Double.isNaN(value) ? "-" : Strengths.format(value);
     }
 
     @Override

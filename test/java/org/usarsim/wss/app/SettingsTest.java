@@ -345,6 +345,15 @@ class SettingsTest {
     }
 
     @Test
+    void theWildcardAddressAsAnOperatorIsRefusedClearly() {
+        Properties properties = new Properties();
+        properties.setProperty("wss.operators", "0.0.0.0");
+        SettingsException e = assertThrows(SettingsException.class, () -> Settings.of(properties, "my.properties"));
+        assertEquals("my.properties: wss.operators = '0.0.0.0' is not a comma-separated list of IP addresses of clients"
+                + " (not 0.0.0.0 or ::, which no client has) (empty: nobody)", e.getMessage());
+    }
+
+    @Test
     void aPairForcedBothWaysIsRefused() {
         Properties properties = new Properties();
         properties.setProperty("wss.force.down", "A:B,C:D");

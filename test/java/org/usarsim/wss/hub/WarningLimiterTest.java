@@ -238,4 +238,14 @@ class WarningLimiterTest {
         assertEquals(true, written.startsWith("FORCE NNN") && written.endsWith("N... (31783 more characters)"),
                 written.substring(written.length() - 40));
     }
+
+    @Test
+    void anInfoWithNoAddressIsLimitedByItsKindsTotalAlone() throws Exception {
+        for (int i = 0; i < 1000; i++) {
+            limiter.info(log, "forced pairs", "forced A" + i + " - B down");
+        }
+        assertEquals(20, capture.messages(Level.INFO).size(), "the kind's total, 20 a minute");
+        runTimer();
+        assertEquals("forced pairs: 980 more like this from any address in the last 60 s", capture.messages(Level.INFO).get(20));
+    }
 }

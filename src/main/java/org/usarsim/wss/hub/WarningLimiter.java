@@ -82,6 +82,15 @@ final class WarningLimiter implements AutoCloseable {
         limiter.log(log, Level.INFO, kind, source, message, null);
     }
 
+    /**
+     * An INFO line with no address to blame (a listener of the hub's events, which carry none):
+     * only the kind's total applies, {@link LogLimiter#ALL_FIRST} an interval, then an INFO summary
+     * {@code forced pairs: 980 more like this from any address in the last 60 s}.
+     */
+    void info(Logger log, String kind, String message) {
+        limiter.log(log, Level.INFO, kind, null, message, null);
+    }
+
     /** Writes the summary of every interval that has ended. */
     void flush() {
         limiter.flush();

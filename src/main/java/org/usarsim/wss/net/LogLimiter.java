@@ -131,6 +131,7 @@ public final class LogLimiter implements AutoCloseable {
      *
      * @param kind what the lines have in common, named for the summary line ("refused connections");
      *        a kind has one level
+     * @param source the address that caused it; null when none is known (then only the kind's total applies)
      * @param thrown written with the line; null for none
      */
     public void log(Logger log, Level level, String kind, InetAddress source, String message, Throwable thrown) {
@@ -145,8 +146,8 @@ public final class LogLimiter implements AutoCloseable {
                 all = new Window(now, log, level);
                 windows.put(allKey, all);
             }
-            Key ownKey = new Key(kind, source.getHostAddress());
-            Window own = windows.get(ownKey);
+            Key ownKey = source == null ? null : new Key(kind, source.getHostAddress());
+            Window own = ownKey == null ? null : windows.get(ownKey);
             if (own != null && own.written >= first) {
                 count(own, now);
                 write = false;
@@ -154,11 +155,13 @@ public final class LogLimiter implements AutoCloseable {
                 count(all, now);
                 write = false;
             } else {
-                if (own == null) {
+                if (own == null && ownKey != null) {
                     own = new Window(now, log, level);
                     windows.put(ownKey, own);
                 }
-                own.written++;
+                if (own != null) {
+                    own.written++;
+                }
                 all.written++;
                 write = true;
             }

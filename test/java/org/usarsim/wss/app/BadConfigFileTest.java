@@ -55,6 +55,7 @@ class BadConfigFileTest {
         "wss.pluginDir|/no/such/folder",
         "wss.logLevel|DEBUG", "wss.logLevel|info", "wss.logLevel|''",
         "wss.operators|localhost", "wss.operators|127.0.0.1,", "wss.operators|256.0.0.1", "wss.operators|127.0.0.1 127.0.0.2",
+        "wss.operators|0.0.0.0", "wss.operators|::", "wss.operators|127.0.0.1, 0:0:0:0:0:0:0:0",
         "wss.force.down|R1", "wss.force.down|R1:R1", "wss.force.down|R1:R2,", "wss.force.down|R1:R2:R3", "wss.force.down|R 1:R2",
         "wss.force.up|:R2", "wss.force.up|R1;R2", "wss.force.up|R1:{R2}", "wss.force.up|R1:R2:fast", "wss.force.up|R1:R2:1M:-5",
         "wss.force.up|R1:R2:1M:50:9",

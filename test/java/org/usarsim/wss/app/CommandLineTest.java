@@ -18,6 +18,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.usarsim.wss.Version;
 
 /**
  * A bad command line or properties file, and --help, through {@link Main#run} in the test JVM:
@@ -59,6 +60,15 @@ class CommandLineTest {
             assertEquals(2, server.exitCode(), "exit code; stderr: " + server.stderr());
             assertTrue(server.stderr().contains("NoSuchModel"), server.stderr());
         }
+    }
+
+    @Test
+    void versionPrintsThePomsVersionAndExitsZero() {
+        MainRun run = MainRun.of("--version");
+        assertEquals(0, run.exitCode(), run.stderr());
+        assertEquals(List.of("wss " + Version.current()), run.stdoutLines());
+        assertTrue(Version.current().matches("\\d+\\.\\d+\\.\\d+.*"), "the pom's version, filtered in: " + Version.current());
+        assertTrue(MainRun.of("--help").stdoutLines().stream().anyMatch(line -> line.startsWith("  --version ")), "--help names it");
     }
 
     @Test

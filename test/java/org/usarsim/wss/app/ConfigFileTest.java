@@ -367,6 +367,15 @@ class ConfigFileTest {
     }
 
     @Test
+    void theWildcardAddressAsAnOperatorIsRefusedClearly() {
+        Properties properties = new Properties();
+        properties.setProperty("wss.operators", "0.0.0.0");
+        ConfigFileException e = assertThrows(ConfigFileException.class, () -> ConfigFile.of(properties, "my.properties"));
+        assertEquals("my.properties: wss.operators = '0.0.0.0' is not a comma-separated list of IP addresses of clients"
+                + " (not 0.0.0.0 or ::, which no client has) (empty: nobody)", e.getMessage());
+    }
+
+    @Test
     void aPairForcedBothWaysIsRefused() {
         Properties properties = new Properties();
         properties.setProperty("wss.force.down", "A:B,C:D");

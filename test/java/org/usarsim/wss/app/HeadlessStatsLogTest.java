@@ -36,7 +36,7 @@ class HeadlessStatsLogTest {
             try (Exchange onQuiet = new Exchange(quietPort); Exchange onCounting = new Exchange(countingPort)) {
                 // Robot A, B, state, dBm (Noop: 0), m (no positions), bytes R1>R2, R2>R1, B/s both ways,
                 // connections, breaks, resumes, up %, last close (none: the connection is open).
-                String expected = "R1 - R2 +up +0 +NaN +12345 +678 +\\d+ +\\d+ +1 +0 +0 +100\\.0 +-";
+                String expected = "R1 - R2 +up +0 +- +12345 +678 +\\d+ +\\d+ +1 +0 +0 +100\\.0 +-";
                 String row = "";
                 for (int table = 0; table < 10 && !row.matches(expected); table++) {
                     counting.awaitLine(line -> line.endsWith(TITLE));

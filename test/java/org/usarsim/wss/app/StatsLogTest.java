@@ -41,7 +41,7 @@ class StatsLogTest {
             List<String> lines = table.lines().toList();
             assertEquals("link statistics, 1 pair", lines.get(0), table);
             assertEquals(StatsLog.HEADER, lines.get(1));
-            assertTrue(lines.get(2).matches("A - B +up +0 +NaN +0 +0 +0 +0 +0 +0 +0 +100\\.0 +-"), lines.get(2));
+            assertTrue(lines.get(2).matches("A - B +up +0 +- +0 +0 +0 +0 +0 +0 +0 +100\\.0 +-"), lines.get(2));
         }
     }
 
@@ -83,7 +83,7 @@ class StatsLogTest {
             assertEquals("link statistics, 1 pair", lines.get(0), table);
             assertEquals(StatsLog.SHAPED_HEADER, lines.get(1));
             // Noop's 0 dBm is above every step of the default table: its top rate, both ways.
-            assertTrue(lines.get(2).matches("A - B +up +0 +NaN +0 +0 +0 +0 +54 Mbit/s +54 Mbit/s +0 +0 +0 +100\\.0 +-"), lines.get(2));
+            assertTrue(lines.get(2).matches("A - B +up +0 +- +0 +0 +0 +0 +54 Mbit/s +54 Mbit/s +0 +0 +0 +100\\.0 +-"), lines.get(2));
             assertEquals(StatsLog.AIRTIME_HEADER, lines.get(3));
             assertTrue(lines.get(4).matches("A +0 %"), lines.get(4));
             assertTrue(lines.get(5).matches("B +0 %"), lines.get(5));
@@ -122,5 +122,13 @@ class StatsLogTest {
         assertEquals(List.of("link statistics, 1 pair", StatsLog.HEADER,
                 "Alpha - Bravo            up               -80    12.25         1000         2000         10         20     3      2       1  75.0  -"),
                 table.lines().toList());
+    }
+
+    @Test
+    void whatTheModelDoesNotKnowIsADashNotNaN() {
+        PairEntry pair = new PairEntry("Alpha", "Bravo", PairState.UP, Double.NaN, Double.NaN, 1, 2, 0, 0, 1, 0, 0, 1,
+                null);
+        String row = StatsLog.table(List.of(pair)).lines().toList().get(2);
+        assertTrue(row.matches("Alpha - Bravo +up +- +- +1 +2 +0 +0 +1 +0 +0 +100\\.0  -"), row);
     }
 }

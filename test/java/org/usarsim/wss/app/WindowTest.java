@@ -36,6 +36,7 @@ import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComboBox;
 import javax.swing.JFrame;
+import javax.swing.JMenuItem;
 import javax.swing.JTable;
 import javax.swing.JTextArea;
 import javax.swing.JTextField;
@@ -45,6 +46,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.Version;
 import org.usarsim.wss.gui.Gui;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
@@ -196,8 +198,21 @@ class WindowTest {
     }
 
     @Test
+    void helpAboutNamesTheVersionTheLicenceAndTheManual() {
+        assertTrue(Version.current().matches("\\d+\\.\\d+\\.\\d+.*"), "the pom's version: " + Version.current());
+        assertEquals("Help", onEdt(() -> frame.getJMenuBar().getMenu(0).getText()));
+        JMenuItem about = onEdt(() -> frame.getJMenuBar().getMenu(0).getItem(0));
+        assertEquals("About WSS", onEdt(about::getText));
+        javax.swing.SwingUtilities.invokeLater(about::doClick); // the dialog is modal
+        String text = Gui.closeMessage("About WSS");
+        assertTrue(text.contains("Version " + Version.current()), text);
+        assertTrue(text.contains("GNU General Public License, version 2"), text);
+        assertTrue(text.contains("Wireless Simulation Server Documentation</i>, Max Pfingsthorn, October 8, 2008"), text);
+    }
+
+    @Test
     void showsRobotsPortsAndLinksAsTheyComeBreakResumeAndGo() throws Exception {
-        assertEquals("WSS", onEdt(frame::getTitle));
+        assertEquals("WSS " + Version.current(), onEdt(frame::getTitle));
         assertEquals("Start", button());
         int port = start();
         assertFalse(onEdt(() -> component(JTextField.class, "port").isEnabled()), "the port is locked while running");
@@ -278,11 +293,11 @@ class WindowTest {
                 // Robot A, B, state, strength, distance, bytes A>B, B>A, rate A>B, B>A (links not shaped),
                 // connections, breaks, resumes, up %, last close
                 until("the statistics count the bytes", () -> statistics(stats).equals(
-                        List.of("r1", "r2", "up", "0.0", "NaN", "12345", "678", "-", "-", "1", "0", "0", "100.0", "")));
+                        List.of("r1", "r2", "up", "0.0", "", "12345", "678", "-", "-", "1", "0", "0", "100.0", "")));
                 model.links().breakConnectionsForPair("r1", "r2");
                 until("the statistics show the break", () -> {
                     List<String> row = statistics(stats);
-                    return row.subList(0, 12).equals(List.of("r1", "r2", "broken", "0.0", "NaN", "12345", "678", "-", "-", "1", "1", "0"))
+                    return row.subList(0, 12).equals(List.of("r1", "r2", "broken", "0.0", "", "12345", "678", "-", "-", "1", "1", "0"))
                             && row.get(13).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
                 });
             }

@@ -130,13 +130,14 @@ public final class Gui {
         return windows;
     }
 
-    /** What a table shows, row by row as sorted and filtered, each cell as its text. Event thread. */
+    /** What a table shows, row by row as sorted and filtered, each cell as its text (null: empty). Event thread. */
     public static List<List<String>> cells(javax.swing.JTable table) {
         List<List<String>> rows = new ArrayList<>();
         for (int row = 0; row < table.getRowCount(); row++) {
             List<String> cells = new ArrayList<>();
             for (int column = 0; column < table.getColumnCount(); column++) {
-                cells.add(String.valueOf(table.getValueAt(row, column)));
+                Object value = table.getValueAt(row, column);
+                cells.add(value == null ? "" : String.valueOf(value)); // null shows as an empty cell
             }
             rows.add(cells);
         }

@@ -44,6 +44,24 @@ class WindowPartsTest {
     }
 
     @Test
+    void theJdksOwnRecordsStayOutAndControlCharactersAreEscaped() {
+        WindowLog log = new WindowLog();
+        LogRecord prefs = new LogRecord(Level.INFO, "Created user preferences directory.");
+        prefs.setLoggerName("java.util.prefs");
+        log.publish(prefs);
+        LogRecord awt = new LogRecord(Level.WARNING, "a font");
+        awt.setLoggerName("sun.awt.X11.XToolkit");
+        log.publish(awt);
+        LogRecord ours = new LogRecord(Level.INFO, "registered E\u001b[2J");
+        ours.setLoggerName("org.usarsim.wss.hub.EventLogger");
+        log.publish(ours);
+        LogRecord plugin = new LogRecord(Level.INFO, "a plugin's line");
+        plugin.setLoggerName("com.example.MyModel");
+        log.publish(plugin);
+        assertEquals(List.of("debug: registered E\\u001B[2J", "debug: a plugin's line"), log.drain());
+    }
+
+    @Test
     void theLogPanelKeepsTheNewestLines() {
         Gui.requireDisplay();
         String text = Gui.onEdt(() -> {

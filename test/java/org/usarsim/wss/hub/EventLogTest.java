@@ -216,4 +216,23 @@ class EventLogTest {
         }
         assertFalse(lines.stream().anyMatch(line -> line.startsWith("DROPPED,")));
     }
+
+    @Test
+    void aFieldWithACommaAQuoteOrALineEndIsQuotedAsRfc4180Says() throws Exception {
+        StuckWriter writer = new StuckWriter();
+        writer.release.countDown();
+        CsvEventLog log = new CsvEventLog(dir.resolve("quoted.txt"), writer, 100);
+        log.robotRegistered("E,1", "127.0.0.1", List.of(5000));
+        log.connectionEstablished("say \"hi\"", "line\rend", 5000);
+        log.pairForced("A\nB", "plain", true);
+        log.close();
+        String text = writer.text.toString();
+        List<String> lines = List.of(text.split(System.lineSeparator()));
+        assertTrue(lines.get(0).matches("REGISTERED,[\\d:.]+,\"E,1\",127\\.0\\.0\\.1,5000"), lines.get(0));
+        assertTrue(lines.get(1).matches("CON_ESTABLISHED,[\\d:.]+,\"say \"\"hi\"\"\",\"line\rend\",5000"), lines.get(1));
+        assertTrue(text.contains(",\"A\nB\",plain,UP" + System.lineSeparator()), text);
+        StringBuilder plain = new StringBuilder();
+        CsvEventLog.appendField(plain, "R1");
+        assertEquals("R1", plain.toString(), "a name that needs nothing is written as it is");
+    }
 }

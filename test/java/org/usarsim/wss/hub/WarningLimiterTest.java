@@ -162,4 +162,90 @@ class WarningLimiterTest {
         limiter.warn(log, "failed answers", address("127.0.0.2"), "failed", bug);
         assertEquals(bug, capture.records.get(0).getThrown());
     }
+
+    @Test
+    void fiveThousandAddressesWriteTwentyLinesOfAKindThenOneSummaryForThemAll() throws Exception {
+        WarningLimiter limited = new WarningLimiter(5, 20, MINUTE, () -> now, new WarningLimiter.Timer() {
+            @Override
+            public void after(long delayNs, Runnable task) {
+                dueAt.add(now + delayNs);
+                due.add(task);
+            }
+
+            @Override
+            public void stop() {
+            }
+        });
+        for (int i = 0; i < 5000; i++) {
+            // IPv6: as many addresses as an attacker likes.
+            limited.warn(log, "refused connections", address("2001:db8::" + Integer.toHexString(i + 1)), "refused #" + i);
+        }
+        limited.warn(log, "over-long lines", address("2001:db8::1"), "another kind has its own total");
+        List<String> written = capture.messages(Level.WARNING);
+        assertEquals(21, written.size(), written.toString());
+        assertEquals("refused #19", written.get(19));
+        assertEquals(List.of(1_000_000_000L + MINUTE), dueAt, "one summary due");
+        runTimer();
+        assertEquals("refused connections: 4980 more like this from any address in the last 60 s",
+                capture.messages(Level.WARNING).get(21));
+        limited.close();
+        assertEquals(22, capture.records.size(), "nothing else to say");
+    }
+
+    @Test
+    void anAddressOverItsOwnLimitHasItsOwnSummaryBeforeTheTotal() throws Exception {
+        WarningLimiter limited = new WarningLimiter(5, 8, MINUTE, () -> now, new WarningLimiter.Timer() {
+            @Override
+            public void after(long delayNs, Runnable task) {
+            }
+
+            @Override
+            public void stop() {
+            }
+        });
+        for (int i = 0; i < 7; i++) {
+            limited.warn(log, "refused connections", address("127.0.0.2"), "flood " + i);
+        }
+        for (int i = 0; i < 10; i++) {
+            limited.warn(log, "refused connections", address("127.0.0." + (10 + i)), "crowd " + i);
+        }
+        assertEquals(8, capture.messages(Level.WARNING).size(), "5 of the flood, 3 of the crowd");
+        now += MINUTE;
+        limited.flush();
+        assertEquals(List.of("refused connections: 2 more like this from 127.0.0.2 in the last 60 s",
+                "refused connections: 7 more like this from any address in the last 60 s"),
+                capture.messages(Level.WARNING).subList(8, 10));
+    }
+
+    @Test
+    void theInfoPathLimitsAnOperatorsForcesAtInfoWithAnInfoSummary() throws Exception {
+        for (int i = 0; i < 1000; i++) {
+            limiter.info(log, "operator commands", address("127.0.0.1"), "operator 127.0.0.1:4000: FORCE A" + i + " - B down");
+        }
+        assertEquals(5, capture.messages(Level.INFO).size());
+        assertEquals("operator 127.0.0.1:4000: FORCE A4 - B down", capture.messages(Level.INFO).get(4));
+        runTimer();
+        assertEquals("operator commands: 995 more like this from 127.0.0.1 in the last 60 s", capture.messages(Level.INFO).get(5));
+        assertEquals(List.of(), capture.messages(Level.WARNING), "an operator's INFO is never a WARNING");
+    }
+
+    @Test
+    void aMessageWithA32KilobyteNameIsCutToAThousandCharacters() throws Exception {
+        String name = "N".repeat(32 * 1024);
+        limiter.info(log, "operator commands", address("127.0.0.1"), "FORCE " + name + " - B down");
+        String written = capture.messages(Level.INFO).get(0);
+        assertEquals(1000 + "... (31783 more characters)".length(), written.length());
+        assertEquals(true, written.startsWith("FORCE NNN") && written.endsWith("N... (31783 more characters)"),
+                written.substring(written.length() - 40));
+    }
+
+    @Test
+    void anInfoWithNoAddressIsLimitedByItsKindsTotalAlone() throws Exception {
+        for (int i = 0; i < 1000; i++) {
+            limiter.info(log, "forced pairs", "forced A" + i + " - B down");
+        }
+        assertEquals(20, capture.messages(Level.INFO).size(), "the kind's total, 20 a minute");
+        runTimer();
+        assertEquals("forced pairs: 980 more like this from any address in the last 60 s", capture.messages(Level.INFO).get(20));
+    }
 }

@@ -221,6 +221,31 @@ class WorldServerTest {
     }
 
     @Test
+    void fortyQuickClientsWriteFiveLinesEachWayThenOneSummaryEach() throws Exception {
+        try (LogCapture log = LogCapture.of("org.usarsim.wss.world", Level.INFO)) {
+            List<Socket> clients = new ArrayList<>();
+            for (int i = 0; i < 40; i++) {
+                Socket client = connect();
+                send(client, "GETPOS\r\n");
+                assertEquals(AT_10, readLine(client)); // its thread runs: it said "connected", or counted it
+                clients.add(client);
+            }
+            for (Socket client : clients) {
+                client.close();
+            }
+            Wait.until("every client left", () -> server.clientCount() == 0);
+            server.close();
+            List<String> lines = log.messages(Level.INFO);
+            assertEquals(5, lines.stream().filter(line -> line.endsWith(" connected")).count(), lines.toString());
+            assertEquals(5, lines.stream().filter(line -> line.endsWith(" left")).count(), lines.toString());
+            assertTrue(lines.stream().anyMatch(line -> line.matches("clients connected: 35 more like this from 127\\.0\\.0\\.1 in the last \\d+ s")),
+                    lines.toString());
+            assertTrue(lines.stream().anyMatch(line -> line.matches("clients left: 35 more like this from 127\\.0\\.0\\.1 in the last \\d+ s")),
+                    lines.toString());
+        }
+    }
+
+    @Test
     void closeStopsListeningAndClosesClients() throws IOException {
         Socket client = connect();
         send(client, "GETPOS\r\n");

@@ -11,6 +11,7 @@ import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import java.util.logging.Logger;
 import java.util.logging.StreamHandler;
+import org.usarsim.wss.LogText;
 
 /** Sends the server's log to standard output (Main.run's {@code out}), one line per event, each with a timestamp. */
 final class LogSetup {
@@ -20,22 +21,25 @@ final class LogSetup {
     private LogSetup() {
     }
 
-    /** One line: time, level, message, and the exception's message if there is one. */
+    /**
+     * One line: time, level, message, and the exception's message if there is one; control
+     * characters escaped ({@link LogText}).
+     */
     static final class OneLine extends Formatter {
         @Override
         public String format(LogRecord record) {
             StringBuilder line = new StringBuilder(128)
                     .append(TIME.format(LocalDateTime.ofInstant(record.getInstant(), ZoneId.systemDefault())))
                     .append(' ').append(record.getLevel().getName()).append(' ')
-                    .append(formatMessage(record));
+                    .append(LogText.escape(formatMessage(record)));
             Throwable thrown = record.getThrown();
             if (thrown != null) {
                 // Still one line: the exception and where it was thrown.
-                line.append(" (").append(thrown);
+                StringBuilder about = new StringBuilder(" (").append(thrown);
                 if (thrown.getStackTrace().length > 0) {
-                    line.append(" at ").append(thrown.getStackTrace()[0]);
+                    about.append(" at ").append(thrown.getStackTrace()[0]);
                 }
-                line.append(')');
+                line.append(LogText.escape(about.append(')').toString().replace('\n', ' ')));
             }
             return line.append(System.lineSeparator()).toString();
         }

@@ -13,6 +13,7 @@ import java.util.function.Function;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.SwingUtilities;
+import org.usarsim.wss.Version;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
@@ -45,7 +46,8 @@ public final class Main {
 
     static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
             + "       java -jar wss.jar --headless [--config FILE]\n"
-            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]";
+            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]\n"
+            + "       java -jar wss.jar --version | --help";
 
     private static final String HELP = USAGE + "\n"
             + "  (no option)         open the WSS's window (docs/gui.md); without a display, run headless\n"
@@ -57,7 +59,9 @@ public final class Main {
             + "  --world FILE        instead of the WSS, serve USARSim's position protocol from a world file (docs/world.md)\n"
             + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")\n"
             + "  --bind ADDRESS      the address the world server listens on (default " + Defaults.ALL_INTERFACES
-            + ": every interface)";
+            + ": every interface)\n"
+            + "  --version           print the version and exit\n"
+            + "  --help, -h          print this and every property of --config FILE, and exit";
 
     /** Why a run ends before it serves: the exit code and the one line for standard error. */
     private static final class Failure extends Exception {
@@ -132,6 +136,9 @@ public final class Main {
                     }
                     break;
                 }
+                case "--version":
+                    out.println("wss " + Version.current());
+                    return OK;
                 case "--help":
                 case "-h":
                     out.println(HELP);

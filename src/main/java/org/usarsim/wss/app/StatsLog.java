@@ -84,8 +84,8 @@ final class StatsLog implements AutoCloseable {
         }
         for (PairEntry pair : pairs) {
             text.append('\n').append(String.format(Locale.ROOT, "%-24s %-11s %8s %8s %12d %12d %10.0f %10.0f ",
-                    pair.first() + " - " + pair.second(), pair.state().text(), Strengths.format(pair.strength()),
-                    Strengths.format(pair.distance()), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(),
+                    pair.first() + " - " + pair.second(), pair.state().text(), known(pair.strength()),
+                    known(pair.distance()), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(),
                     pair.rateFirstToSecond(), pair.rateSecondToFirst()));
             if (shaped) {
                 text.append(String.format(Locale.ROOT, "%12s %12s ", rate(pair.linkRateFirstToSecond()),
@@ -108,6 +108,11 @@ final class StatsLog implements AutoCloseable {
     /** A link's rate for people ("54 Mbit/s"), "-" when the pair has none yet. */
     private static String rate(long bitsPerSecond) {
         return bitsPerSecond > 0 ? Bitrate.format(bitsPerSecond) : "-";
+    }
+
+    /** A value as C's %g writes it; "-" for NaN: the model does not know it. */
+    private static String known(double value) {
+        return Double.isNaN(value) ? "-" : Strengths.format(value);
     }
 
     @Override

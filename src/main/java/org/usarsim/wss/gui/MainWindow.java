@@ -4,6 +4,7 @@ import java.awt.BorderLayout;
 import java.awt.Dimension;
 import java.awt.GridLayout;
 import java.awt.Rectangle;
+import java.awt.event.KeyEvent;
 import java.awt.event.WindowAdapter;
 import java.awt.event.WindowEvent;
 import java.util.LinkedHashMap;
@@ -13,6 +14,9 @@ import java.util.concurrent.ExecutionException;
 import java.util.logging.Logger;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
+import javax.swing.JMenu;
+import javax.swing.JMenuBar;
+import javax.swing.JMenuItem;
 import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JSplitPane;
@@ -21,6 +25,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
+import org.usarsim.wss.Version;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -35,11 +40,12 @@ import org.usarsim.wss.model.ModelSettings;
  */
 public final class MainWindow {
 
+    /** The title of the window's message dialogs; the window's own adds the version. */
     static final String TITLE = "WSS";
     static final int REFRESH_MS = 250;
     private static final Logger LOG = Logger.getLogger(MainWindow.class.getName());
 
-    private final JFrame frame = new JFrame(TITLE);
+    private final JFrame frame = new JFrame(TITLE + " " + Version.current());
     private final ControlBar bar;
     private final RobotsPanel robots = new RobotsPanel();
     private final PortsPanel ports = new PortsPanel();
@@ -139,6 +145,8 @@ public final class MainWindow {
         content.add(bar, BorderLayout.NORTH);
         content.add(center, BorderLayout.CENTER);
         frame.setContentPane(content);
+        frame.setJMenuBar(menuBar());
+        frame.setIconImages(Icons.all());
         frame.setMinimumSize(new Dimension(640, 480));
         Rectangle bounds = windowPreferences.bounds();
         if (bounds != null) {
@@ -147,6 +155,21 @@ public final class MainWindow {
             frame.setSize(960, 700);
             frame.setLocationByPlatform(true);
         }
+    }
+
+    /** The Help menu, with About. */
+    private JMenuBar menuBar() {
+        JMenuItem about = new JMenuItem("About WSS");
+        about.setName("about");
+        about.setMnemonic(KeyEvent.VK_A);
+        about.addActionListener(e -> AboutDialog.show(frame));
+        JMenu help = new JMenu("Help");
+        help.setName("help");
+        help.setMnemonic(KeyEvent.VK_H);
+        help.add(about);
+        JMenuBar menus = new JMenuBar();
+        menus.add(help);
+        return menus;
     }
 
     private ModelProvider selectedModel() {

@@ -15,8 +15,8 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 new RowsModel.Column<>("Robot A", String.class, PairEntry::first),
                 new RowsModel.Column<>("Robot B", String.class, PairEntry::second),
                 new RowsModel.Column<>("State", String.class, pair -> pair.state().text()),
-                new RowsModel.Column<>("dBm", Double.class, PairEntry::strength),
-                new RowsModel.Column<>("Metres", Double.class, PairEntry::distance),
+                new RowsModel.Column<>("dBm", Double.class, pair -> known(pair.strength())),
+                new RowsModel.Column<>("Metres", Double.class, pair -> known(pair.distance())),
                 new RowsModel.Column<>("Bytes A>B", Long.class, PairEntry::bytesFirstToSecond),
                 new RowsModel.Column<>("Bytes B>A", Long.class, PairEntry::bytesSecondToFirst),
                 new RowsModel.Column<>("B/s A>B", Long.class, pair -> Math.round(pair.rateFirstToSecond())),
@@ -32,5 +32,10 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
         preferredWidths(60, 60, 80, 60, 60, 70, 70, 60, 60, 75, 75, 45, 50, 60, 45, 125);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
+    }
+
+    /** A value the model knows; null (an empty cell, sorted first) for its NaN, "does not know". */
+    private static Double known(double value) {
+        return Double.isNaN(value) ? null : value;
     }
 }

@@ -32,6 +32,7 @@ import org.usarsim.wss.protocol.Strengths;
  * once caught up, it lets the next events gather for 20 ms before it writes again.
  * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
  * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
+ * A field that needs it (a name with a comma, a quote, a CR or a LF) is quoted as RFC 4180 says.
  */
 public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
@@ -148,9 +149,36 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         }
         text.append(type).append(',').append(formattedTime);
         for (Object field : fields) {
-            text.append(',').append(field);
+            text.append(',');
+            appendField(text, String.valueOf(field));
         }
         text.append(System.lineSeparator());
+    }
+
+    /**
+     * A field as RFC 4180 writes it: as it is, unless it holds a comma, a double quote, a CR or a
+     * LF (a robot name may: {@code INIT {Robot a,b}}); then between double quotes, each double quote
+     * in it doubled. A name never breaks the line into more fields or more lines.
+     */
+    static void appendField(StringBuilder text, String field) {
+        boolean quote = false;
+        for (int i = 0; i < field.length() && !quote; i++) {
+            char c = field.charAt(i);
+            quote = c == ',' || c == '"' || c == '\r' || c == '\n';
+        }
+        if (!quote) {
+            text.append(field);
+            return;
+        }
+        text.append('"');
+        for (int i = 0; i < field.length(); i++) {
+            char c = field.charAt(i);
+            text.append(c);
+            if (c == '"') {
+                text.append('"');
+            }
+        }
+        text.append('"');
     }
 
     private void write(StringBuilder text, boolean flush) {

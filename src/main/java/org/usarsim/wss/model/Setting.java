@@ -265,7 +265,7 @@ public final class Setting {
             case ADDRESS -> "an IP address of this machine";
             case DIRECTORY -> "an existing directory";
             case CHOICE -> "one of " + String.join(", ", choices);
-            case ADDRESSES -> "a comma-separated list of IP addresses";
+            case ADDRESSES -> "a comma-separated list of IP addresses of clients (not 0.0.0.0 or ::, which no client has)";
             case PAIRS -> RobotPair.LIST_WORDS;
         });
         boolean numeric = type == Type.INTEGER || type == Type.NUMBER;
@@ -363,14 +363,15 @@ public final class Setting {
     /**
      * The addresses of a list such as {@code 127.0.0.1, 10.0.0.7} (whitespace around the items
      * allowed), or null when the text is not such a list. Each item is an IPv4 address in dotted
-     * decimal or an IPv6 address in hex, never a name: nothing is looked up.
+     * decimal or an IPv6 address in hex, never a name: nothing is looked up. The wildcard address
+     * ({@code 0.0.0.0}, {@code ::}) is refused: no connection comes from it, so it would match nobody.
      */
     public static List<InetAddress> addressList(String text) {
         Set<InetAddress> addresses = new LinkedHashSet<>();
         for (String item : text.split(",", -1)) {
             InetAddress address = numericAddress(item.strip());
-            if (address == null) {
-                return null;
+            if (address == null || address.isAnyLocalAddress()) {
+                return null; // the wildcard address is a server's to listen on: no client comes from it
             }
             addresses.add(address);
         }

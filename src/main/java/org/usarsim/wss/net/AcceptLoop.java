@@ -28,6 +28,12 @@ public abstract class AcceptLoop implements Runnable {
 
     /** How long the loop waits before accepting again after a failed accept. */
     static final long PAUSE_MS = 100;
+    /**
+     * The accept queue of a port many clients connect to at once (the world server; the hub's
+     * control port has the same): connects beyond a full queue wait for a SYN retransmit, a second
+     * (docs/reliability.md, "Accept queue").
+     */
+    public static final int BACKLOG = 1024;
 
     protected final ServerSocketChannel server;
     private final Logger log;

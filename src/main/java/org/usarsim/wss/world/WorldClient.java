@@ -4,13 +4,15 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.protocol.LineSplitter;
 
 /**
  * One client of the world server, on its own thread: reads lines (CR LF or LF) and writes the
  * answer to each in one write, in order. A line with no answer is only logged. A line over
- * {@link LineSplitter#MAX_LINE_BYTES} drops the client.
+ * {@link LineSplitter#MAX_LINE_BYTES} drops the client. Its log lines go through the server's
+ * {@link WorldServer#lines} limit.
  */
 final class WorldClient implements Runnable, LineSplitter.Sink {
 
@@ -55,7 +57,7 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
 
     @Override
     public void run() {
-        LOG.info("client " + peer + " connected");
+        server.lines.log(LOG, Level.INFO, "clients connected", socket.getInetAddress(), "client " + peer + " connected", null);
         try {
             socket.setTcpNoDelay(true);
             InputStream in = socket.getInputStream();
@@ -68,7 +70,7 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
             LOG.fine(() -> "client " + peer + ": " + e);
         } finally {
             close();
-            LOG.info("client " + peer + " left");
+            server.lines.log(LOG, Level.INFO, "clients left", socket.getInetAddress(), "client " + peer + " left", null);
             server.ended(this);
         }
     }
@@ -93,7 +95,8 @@ final class WorldClient implements Runnable, LineSplitter.Sink {
 
     @Override
     public void lineTooLong() {
-        LOG.warning("client " + peer + " sent a line over " + LineSplitter.MAX_LINE_BYTES + " bytes: dropping it");
+        server.lines.log(LOG, Level.WARNING, "over-long lines", socket.getInetAddress(),
+                "client " + peer + " sent a line over " + LineSplitter.MAX_LINE_BYTES + " bytes: dropping it", null);
         close();
     }
 

@@ -15,6 +15,7 @@ import java.util.function.DoubleSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.net.AcceptLoop;
+import org.usarsim.wss.net.LogLimiter;
 
 /**
  * Serves USARSim's position protocol from a world file, so that the simulator-driven
@@ -33,6 +34,8 @@ public final class WorldServer implements AutoCloseable {
     private final Consumer<WorldClient> starter;
     private final Thread acceptor;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** The limit on the lines its clients cause (connected, left, an over-long line), as the WSS's. */
+    final LogLimiter lines = LogLimiter.standard("world-warnings");
 
     /**
      * Reads the world file, then listens on the address and port (0: any free port) and serves
@@ -61,7 +64,7 @@ public final class WorldServer implements AutoCloseable {
         this.world = world;
         this.clock = clock;
         this.starter = starter;
-        this.server = AcceptLoop.bind(address, 50);
+        this.server = AcceptLoop.bind(address, AcceptLoop.BACKLOG);
         this.acceptor = new Thread(new Acceptor(server), "world-server " + port());
         acceptor.setDaemon(true);
         acceptor.start();
@@ -106,6 +109,7 @@ public final class WorldServer implements AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
+        lines.close();
         LOG.info("world server stopped");
     }
 

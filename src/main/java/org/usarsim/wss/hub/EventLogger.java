@@ -12,6 +12,13 @@ final class EventLogger implements WssEventListener {
 
     private static final Logger LOG = Logger.getLogger("org.usarsim.wss.events");
 
+    /** The limit on lines an operator causes: forces and releases come as fast as FORCEs do. */
+    private final WarningLimiter limits;
+
+    EventLogger(WarningLimiter limits) {
+        this.limits = limits;
+    }
+
     @Override
     public void robotRegistered(String robot, String address, List<Integer> ports) {
         LOG.info(() -> "registered " + robot + " from " + address + " accepting on " + ports);
@@ -52,7 +59,7 @@ final class EventLogger implements WssEventListener {
 
     @Override
     public void pairForced(String first, String second, boolean up) {
-        LOG.info(() -> "forced " + first + " - " + second + (up ? " up" : " down"));
+        limits.info(LOG, "forced pairs", "forced " + first + " - " + second + (up ? " up" : " down"));
     }
 
     /** At FINE: a robot near a step of the rate table changes rate at many polls (the event log has every RATE). */
@@ -63,7 +70,7 @@ final class EventLogger implements WssEventListener {
 
     @Override
     public void pairReleased(String first, String second) {
-        LOG.info(() -> "released " + first + " - " + second + " to the model");
+        limits.info(LOG, "released pairs", "released " + first + " - " + second + " to the model");
     }
 
     @Override

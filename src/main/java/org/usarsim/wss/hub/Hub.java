@@ -102,7 +102,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.keepAlive = KeepAlive.within(config.deadPeerSeconds());
         this.applier = new ChangeApplier(outbox, forgetTimer, this,
                 (action, e) -> step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out)));
-        events.add(new EventLogger());
+        events.add(new EventLogger(warnings));
         loadFailurePaths();
     }
 
@@ -436,6 +436,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     @Override
     public void linkEnded(Link link, boolean wasEstablished) {
         step(out -> core.linkEnded(link.port(), link, wasEstablished, clock.getAsLong(), out));
+    }
+
+    @Override
+    public void note(Logger log, String category, InetAddress client, String message) {
+        warnings.info(log, category, client, message);
     }
 
     @Override

@@ -29,9 +29,10 @@ public abstract class AcceptLoop implements Runnable {
     /** How long the loop waits before accepting again after a failed accept. */
     static final long PAUSE_MS = 100;
     /**
-     * The accept queue of a port many clients connect to at once (the world server; the hub's
-     * control port has the same): connects beyond a full queue wait for a SYN retransmit, a second
-     * (docs/reliability.md, "Accept queue").
+     * The accept queue of a port many clients connect to at once (the hub's control port, the
+     * world server): a whole team starts at once, and a SYN that finds the queue full is dropped
+     * and retransmitted only a second later. The OS caps it at net.core.somaxconn (4,096 on
+     * current Linux; docs/reliability.md, "Accept queue").
      */
     public static final int BACKLOG = 1024;
 

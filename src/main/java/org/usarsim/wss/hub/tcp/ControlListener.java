@@ -15,12 +15,6 @@ import org.usarsim.wss.net.AcceptLoop;
 public final class ControlListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
-    /**
-     * Connections the OS completes before the listener accepts them. A whole team starts at once:
-     * a SYN that finds the queue full is dropped and retransmitted only a second later. The OS
-     * caps it at net.core.somaxconn (4,096 on current Linux; docs/reliability.md).
-     */
-    static final int BACKLOG = 1024;
 
     private final Switchboard switchboard;
     private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
@@ -28,7 +22,7 @@ public final class ControlListener extends AcceptLoop {
 
     /** Binds at once, so that a port in use is known before anything else starts. */
     public ControlListener(Switchboard switchboard, InetSocketAddress address) throws IOException {
-        super(AcceptLoop.bind(address, BACKLOG), LOG, "the control port", "the control connection from");
+        super(AcceptLoop.bind(address, AcceptLoop.BACKLOG), LOG, "the control port", "the control connection from");
         this.switchboard = switchboard;
         this.thread = new Thread(this, "wss-control-listener");
         thread.setDaemon(true);

@@ -230,7 +230,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         }
         String shape = pin.equals(RatePin.NONE) ? "" : (pin.pinsRate() ? " rate " + Bitrate.format(pin.bitsPerSecond()) : "")
                 + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "");
-        LOG.info("operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape); // who, before what it does
+        // Who, before what it does; limited like the WARNINGs, as an operator can send FORCEs as fast as it likes.
+        switchboard.note(LOG, "operator commands", address, "operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape);
         switch (wanted) {
             case "down" -> switchboard.force(first, second, Force.DOWN);
             case "up" -> switchboard.force(first, second, Force.UP, pin);

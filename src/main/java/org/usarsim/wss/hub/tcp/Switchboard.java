@@ -59,6 +59,9 @@ public interface Switchboard {
     /** How control connections and links find a peer that vanished. */
     KeepAlive keepAlive();
 
+    /** An INFO line a client caused (an operator's FORCE), written to {@code log} within the same limits as the WARNINGs. */
+    void note(Logger log, String category, InetAddress client, String message);
+
     /** A WARNING a client caused, written to {@code log} within the limit per client (docs/reliability.md); {@code cause} may be null. */
     void warn(Logger log, String category, InetAddress client, String message, Throwable cause);
 }

@@ -76,6 +76,17 @@ final class DialogParts {
         dialog.setLocationRelativeTo(owner);
     }
 
+    /** A grid cell of a row of label, field and unit: the last one takes the row's spare width. */
+    static GridBagConstraints cell(int x, int y, int leftInset, boolean last) {
+        GridBagConstraints c = new GridBagConstraints();
+        c.gridx = x;
+        c.gridy = y;
+        c.anchor = GridBagConstraints.LINE_START;
+        c.insets = new Insets(3, leftInset, 3, 0);
+        c.weightx = last ? 1 : 0;
+        return c;
+    }
+
     /** A panel with a titled border, for a group of fields. */
     static JPanel titled(String title) {
         JPanel panel = new JPanel(new GridBagLayout());

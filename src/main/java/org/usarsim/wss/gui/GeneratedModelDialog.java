@@ -1,8 +1,6 @@
 package org.usarsim.wss.gui;
 
 import java.awt.Color;
-import java.awt.GridBagConstraints;
-import java.awt.Insets;
 import java.awt.Window;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -55,11 +53,11 @@ final class GeneratedModelDialog extends JDialog {
         int row = 0;
         for (Setting setting : declared) {
             JComponent field = field(setting, values.get(setting.key()));
-            rows.add(DialogParts.label(setting.label(), setting.help(), field), cell(0, row, 0, false));
-            rows.add(field, cell(1, row, 8, false));
+            rows.add(DialogParts.label(setting.label(), setting.help(), field), DialogParts.cell(0, row, 0, false));
+            rows.add(field, DialogParts.cell(1, row, 8, false));
             JLabel unit = new JLabel(setting.unit() == null ? "" : setting.unit());
             unit.setToolTipText(setting.help());
-            rows.add(unit, cell(2, row, 6, true));
+            rows.add(unit, DialogParts.cell(2, row, 6, true));
             row++;
         }
 
@@ -96,16 +94,6 @@ final class GeneratedModelDialog extends JDialog {
         }
         fields.put(setting.key(), field);
         return field;
-    }
-
-    private static GridBagConstraints cell(int x, int y, int leftInset, boolean last) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridx = x;
-        c.gridy = y;
-        c.anchor = GridBagConstraints.LINE_START;
-        c.insets = new Insets(3, leftInset, 3, 0);
-        c.weightx = last ? 1 : 0;
-        return c;
     }
 
     private void mark(JTextField field, boolean invalid) {

@@ -1,8 +1,6 @@
 package org.usarsim.wss.gui;
 
 import java.awt.Color;
-import java.awt.GridBagConstraints;
-import java.awt.Insets;
 import java.awt.Window;
 import java.util.function.Function;
 import javax.swing.JDialog;
@@ -72,21 +70,11 @@ final class RateLimitDialog extends JDialog {
             mark(field, problem(field) != null);
             message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
         }));
-        panel.add(DialogParts.label(label, help, field), cell(0, y, 0, false));
-        panel.add(field, cell(1, y, 8, false));
+        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
+        panel.add(field, DialogParts.cell(1, y, 8, false));
         JLabel units = new JLabel(unit);
         units.setToolTipText(help);
-        panel.add(units, cell(2, y, 6, true));
-    }
-
-    private static GridBagConstraints cell(int x, int y, int leftInset, boolean last) {
-        GridBagConstraints c = new GridBagConstraints();
-        c.gridx = x;
-        c.gridy = y;
-        c.anchor = GridBagConstraints.LINE_START;
-        c.insets = new Insets(3, leftInset, 3, 0);
-        c.weightx = last ? 1 : 0;
-        return c;
+        panel.add(units, DialogParts.cell(2, y, 6, true));
     }
 
     /** Why the field's value is refused ("Rate: ..."), or null when it is accepted. */

@@ -14,6 +14,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.LockSupport;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.CloseReason;
@@ -262,14 +263,7 @@ public final class Link implements Runnable, Connection {
                 }
                 sourceKey.interestOps(shapedInterest(ended, up, down, now));
                 targetKey.interestOps(shapedInterest(ended, down, up, now));
-                long wait = Math.min(up.flow.nanosUntilNext(now), down.flow.nanosUntilNext(now));
-                if (wait == 0) {
-                    selector.selectNow();
-                } else if (wait == Long.MAX_VALUE) {
-                    selector.select();
-                } else {
-                    selector.select(Math.max(1, TimeUnit.NANOSECONDS.toMillis(wait + 999_999)));
-                }
+                waitAtMost(Math.min(up.flow.nanosUntilNext(now), down.flow.nanosUntilNext(now)));
                 boolean sourceReadable = sourceKey.isValid() && selector.selectedKeys().contains(sourceKey) && sourceKey.isReadable();
                 boolean targetReadable = targetKey.isValid() && selector.selectedKeys().contains(targetKey) && targetKey.isReadable();
                 selector.selectedKeys().clear();
@@ -286,6 +280,25 @@ public final class Link implements Runnable, Connection {
         } finally {
             up.flow.close();
             down.flow.close();
+        }
+    }
+
+    /**
+     * Waits for the sockets, at most until something falls due: whole milliseconds on the
+     * selector (rounded down, so it wakes no later than due), and the last fraction of a
+     * millisecond parked, which the selector cannot wait for; rounding up instead made every hop
+     * up to a millisecond late.
+     */
+    private void waitAtMost(long nanos) throws IOException {
+        if (nanos == 0) {
+            selector.selectNow();
+        } else if (nanos == Long.MAX_VALUE) {
+            selector.select();
+        } else if (nanos >= 1_000_000) {
+            selector.select(TimeUnit.NANOSECONDS.toMillis(nanos));
+        } else {
+            LockSupport.parkNanos(nanos);
+            selector.selectNow();
         }
     }
 

@@ -54,18 +54,25 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         return ticks * (1_000_000_000L / TICKS_PER_SECOND);
     }
 
-    /**
-     * How long each of the server's link threads has waited for a CPU while runnable (the second
-     * figure of /proc/PID/task/TID/schedstat), in nanoseconds, by thread id.
-     */
+    /** Fields of /proc/PID/task/TID/schedstat: time on a CPU (ns), time waiting for one while runnable (ns), times run. */
+    static final int RUN_NANOS = 0;
+    static final int WAIT_NANOS = 1;
+    static final int TIMES_RUN = 2;
+
+    /** How long each of the server's link threads has waited for a CPU while runnable, in nanoseconds, by thread id. */
     static Map<String, Long> linkThreadsWaitNanos(long pid) throws IOException {
+        return linkThreads(pid, WAIT_NANOS);
+    }
+
+    /** One field of each of the server's link threads' schedstat ({@link #RUN_NANOS}, ...), by thread id. */
+    static Map<String, Long> linkThreads(long pid, int field) throws IOException {
         Map<String, Long> waits = new HashMap<>();
         try (Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
             for (Path task : tasks.toList()) {
                 if (comm(task).startsWith("link ")) {
                     try {
                         String[] fields = Files.readString(task.resolve("schedstat")).strip().split(" ");
-                        waits.put(task.getFileName().toString(), Long.parseLong(fields[1]));
+                        waits.put(task.getFileName().toString(), Long.parseLong(fields[field]));
                     } catch (IOException | RuntimeException e) {
                         // the thread ended while we looked, or the kernel keeps no schedstat
                     }
@@ -75,7 +82,7 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         return waits;
     }
 
-    /** The waits of {@link #linkThreadsWaitNanos} between two readings, added up over the threads in both. */
+    /** What a field of {@link #linkThreads} grew by between two readings, added up over the threads in both. */
     static long waitedBetween(Map<String, Long> before, Map<String, Long> after) {
         long total = 0;
         for (var entry : after.entrySet()) {

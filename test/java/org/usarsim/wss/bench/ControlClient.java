@@ -18,14 +18,31 @@ final class ControlClient implements AutoCloseable {
     private final InputStream in;
 
     ControlClient(int wssPort, String name, int acceptPort) throws IOException {
+        this(wssPort);
+        String reply = ask("INIT {Robot " + name + "} {Port " + acceptPort + "}");
+        if (!reply.equals("INITREPLY {Status OK}")) {
+            throw new IOException("INIT " + name + ": " + reply);
+        }
+    }
+
+    private ControlClient(int wssPort) throws IOException {
         socket = new Socket();
         socket.connect(new InetSocketAddress("127.0.0.1", wssPort), 5000);
         socket.setSoTimeout(10_000);
         socket.setTcpNoDelay(true);
         in = socket.getInputStream();
-        String reply = ask("INIT {Robot " + name + "} {Port " + acceptPort + "}");
-        if (!reply.equals("INITREPLY {Status OK}")) {
-            throw new IOException("INIT " + name + ": " + reply);
+    }
+
+    /** An operator's control connection from 127.0.0.1: no INIT, for FORCE. */
+    static ControlClient operator(int wssPort) throws IOException {
+        return new ControlClient(wssPort);
+    }
+
+    /** FORCE {Robot a} {Peer b} {State Up} {Rate rate} {Delay delayMs}: pins the pair's rate and delay. */
+    void forceUp(String a, String b, String rate, int delayMs) throws IOException {
+        String reply = ask("FORCE {Robot " + a + "} {Peer " + b + "} {State Up} {Rate " + rate + "} {Delay " + delayMs + "}");
+        if (!reply.equals("FORCEREPLY {Status OK}")) {
+            throw new IOException("FORCE " + a + " " + b + ": " + reply);
         }
     }
 

@@ -3,7 +3,9 @@ package org.usarsim.wss.bench;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.stream.Stream;
 
 /**
@@ -38,6 +40,58 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         try (Stream<Path> fds = Files.list(process.resolve("fd"))) {
             return new ProcessStats(threads, server, (int) fds.count(), rss);
         }
+    }
+
+    /** Clock ticks per second of /proc/PID/stat's times (USER_HZ: 100 on Linux for every architecture in use). */
+    private static final long TICKS_PER_SECOND = 100;
+
+    /** CPU time the process has used, user and system, in nanoseconds: utime + stime of /proc/PID/stat. */
+    static long cpuNanos(long pid) throws IOException {
+        String stat = Files.readString(Path.of("/proc", Long.toString(pid), "stat"));
+        // The name (field 2) is in parentheses and may hold spaces: count the fields after it.
+        String[] fields = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+        long ticks = Long.parseLong(fields[11]) + Long.parseLong(fields[12]); // fields 14 and 15: utime, stime
+        return ticks * (1_000_000_000L / TICKS_PER_SECOND);
+    }
+
+    /** Fields of /proc/PID/task/TID/schedstat: time on a CPU (ns), time waiting for one while runnable (ns), times run. */
+    static final int RUN_NANOS = 0;
+    static final int WAIT_NANOS = 1;
+    static final int TIMES_RUN = 2;
+
+    /** How long each of the server's link threads has waited for a CPU while runnable, in nanoseconds, by thread id. */
+    static Map<String, Long> linkThreadsWaitNanos(long pid) throws IOException {
+        return linkThreads(pid, WAIT_NANOS);
+    }
+
+    /** One field of each of the server's link threads' schedstat ({@link #RUN_NANOS}, ...), by thread id. */
+    static Map<String, Long> linkThreads(long pid, int field) throws IOException {
+        Map<String, Long> waits = new HashMap<>();
+        try (Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
+            for (Path task : tasks.toList()) {
+                if (comm(task).startsWith("link ")) {
+                    try {
+                        String[] fields = Files.readString(task.resolve("schedstat")).strip().split(" ");
+                        waits.put(task.getFileName().toString(), Long.parseLong(fields[field]));
+                    } catch (IOException | RuntimeException e) {
+                        // the thread ended while we looked, or the kernel keeps no schedstat
+                    }
+                }
+            }
+        }
+        return waits;
+    }
+
+    /** What a field of {@link #linkThreads} grew by between two readings, added up over the threads in both. */
+    static long waitedBetween(Map<String, Long> before, Map<String, Long> after) {
+        long total = 0;
+        for (var entry : after.entrySet()) {
+            Long then = before.get(entry.getKey());
+            if (then != null) {
+                total += entry.getValue() - then;
+            }
+        }
+        return total;
     }
 
     private static String comm(Path task) {

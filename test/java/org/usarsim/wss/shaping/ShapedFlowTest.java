@@ -99,31 +99,71 @@ class ShapedFlowTest {
     void aRateChangeReachesTheBytesStillWaiting() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
         long capacity = ShapedFlow.capacity(1_000_000, 0, CHUNK);
-        assertEquals(4596, capacity, "1 Mbit/s x 4 ms / 8 + a chunk");
+        assertEquals(5096, capacity, "1 Mbit/s x 8 ms / 8 + a chunk");
         Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
         lane.flow.setConditions(8_000_000, 0);
-        // Two grants of 250 bytes were taken at 1 Mbit/s (0-2 ms on the air, 2-4 ms reserved);
-        // the 4096 bytes still waiting go at 8 Mbit/s: 4.096 ms more. At 1 Mbit/s they would take 32.8.
-        links.runUntil(8_096_000 - 1);
+        // Four grants of 250 bytes were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked
+        // ahead); the 4096 bytes still waiting go at 8 Mbit/s: 4.096 ms more. At 1 Mbit/s they
+        // would take 32.8.
+        links.runUntil(12_096_000 - 1);
         assertTrue(lane.delivered < capacity);
-        links.runUntil(8_096_000);
+        links.runUntil(12_096_000);
         assertEquals(capacity, lane.delivered);
         assertEquals(lane.sent.getValue(), lane.got.getValue());
+    }
+
+    @Test
+    void aThreadThatWakesLateLosesNoRateItsGrantsAreBookedAhead() throws Exception {
+        long rate = 24_000_000;
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", 0), rate, 2, CHUNK);
+        Sink target = new Sink();
+        long now = 0;
+        long late = 3 * MS; // a busy machine: every wake-up 3 ms after it was due
+        while (now < 2 * SECOND) {
+            flow.accept(ByteBuffer.wrap(new byte[flow.room()]), now);
+            flow.writeTo(target, now);
+            long wait = flow.nanosUntilNext(now);
+            now += (wait == Long.MAX_VALUE ? 0 : wait) + late;
+        }
+        double expected = rate * 2 / 8.0;
+        assertTrue(target.bytes >= expected * 0.99, target.bytes + " bytes of " + expected + " in 2 s");
+    }
+
+    /** A target that takes everything. */
+    private static final class Sink implements java.nio.channels.WritableByteChannel {
+        long bytes;
+
+        @Override
+        public int write(ByteBuffer buffer) {
+            int count = buffer.remaining();
+            buffer.position(buffer.limit());
+            bytes += count;
+            return count;
+        }
+
+        @Override
+        public boolean isOpen() {
+            return true;
+        }
+
+        @Override
+        public void close() {
+        }
     }
 
     @Test
     void aDirectionNeverHoldsMoreThanItsCapacity() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
         Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
-        assertEquals(6_000_000 * 104 / 1000 / 8 + CHUNK, lane.flow.capacity(), "rate x (delay + 2 quanta) / 8 + a chunk");
+        assertEquals(6_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity(), "rate x (delay + 4 quanta) / 8 + a chunk");
         links.runFor(2 * SECOND);
         assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
         assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
 
         lane.flow.setConditions(1_000_000, 100);
-        assertEquals(1_000_000 * 104 / 1000 / 8 + CHUNK, lane.flow.capacity());
+        assertEquals(1_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity());
         assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
         assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
         lane.mostHeld = 0;

@@ -14,7 +14,7 @@ import java.util.Map;
  *
  * <p>A link direction asks for its bytes' airtime through its {@link Hop}, one {@link Grant} at
  * a time, each of at most {@link #QUANTUM_NS} of airtime. Reservations on a radio queue up one
- * after the other, so when every busy direction keeps at most one grant waiting (as
+ * after the other, so when every busy direction books the same few grants ahead (as
  * {@link ShapedFlow} does), the directions sharing a radio take turns in equal slices of TIME,
  * not of bytes: a slow far link and a fast near one each get their share, and neither starves.
  * A radio that has been idle starts the next grant at once; idle time is not saved up.

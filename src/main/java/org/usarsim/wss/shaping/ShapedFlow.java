@@ -11,22 +11,30 @@ import java.util.ArrayDeque;
  * step: it {@link #accept}s what it read (at most {@link #room()}), {@link #writeTo}s the target
  * what is due, and waits at most {@link #nanosUntilNext} before asking again.
  *
- * <p>Bytes go on the air in order, lazily: whenever the direction's last grant has started, the
- * bytes not yet on the air ask its {@link Airtime.Hop} for the next grant, at the rate the link
- * has at that moment, so a rate change reaches every byte not yet on the air at the next step
- * (a grant already reserved, at most {@link Airtime#QUANTUM_NS} of airtime, keeps its rate). So
- * a busy direction holds one grant on the air and at most one more waiting, and directions
- * sharing a radio take turns. Bytes may be written at their grant's end plus the delay: a chunk
+ * <p>Bytes go on the air in order, lazily: whenever the direction's last grant starts within
+ * {@link #LOOKAHEAD_NS}, the bytes not yet on the air ask its {@link Airtime.Hop} for the next
+ * grant, at the rate the link has at that moment, so a rate change reaches every byte not yet
+ * booked at the next step (grants already booked, at most a few milliseconds of airtime, keep
+ * their rate). So a busy direction holds one grant on the air and books at most two quanta
+ * ahead, and directions sharing a radio take turns. Bytes may be written at their grant's end plus the delay: a chunk
  * read at t over an idle radio is due at t + delay + its bytes x 8 / rate.
  *
  * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
- * memory is bounded by {@link #capacity()}: about rate x delay, plus two grants' worth (the one on
- * the air and the one waiting), plus one chunk; a direction that holds that much reads no more,
+ * memory is bounded by {@link #capacity()}: about rate x delay, plus four grants' worth (the one
+ * on the air, one starting, and two booked ahead), plus one chunk; a direction that holds that much reads no more,
  * and TCP's back-pressure reaches the sender.
  *
  * <p>Used by one thread; it never reads a clock nor blocks.
  */
 public final class ShapedFlow {
+
+    /**
+     * How far ahead a busy direction books its grants: the next is booked once the last one
+     * starts within two quanta (4 ms), so that a link thread woken a few milliseconds late (a
+     * busy machine) finds its radio's next grants already booked instead of an idle radio and
+     * lost airtime.
+     */
+    static final long LOOKAHEAD_NS = 2 * Airtime.QUANTUM_NS;
 
     private final Airtime.Hop hop;
     private final int chunkSize;
@@ -59,12 +67,12 @@ public final class ShapedFlow {
     }
 
     /**
-     * The bytes a direction may hold: rate x (delay + 2 x {@link Airtime#QUANTUM_NS}) / 8 + one
-     * chunk. Enough to keep the radio busy at that rate (bytes wait out the delay and their grants
+     * The bytes a direction may hold: rate x (delay + 2 x {@link Airtime#QUANTUM_NS} +
+     * {@link #LOOKAHEAD_NS}) / 8 + one chunk. Enough to keep the radio busy at that rate (bytes wait out the delay and their grants
      * while more are read), and no more.
      */
     public static long capacity(long bitsPerSecond, int delayMs, int chunkSize) {
-        return Bitrate.bytesIn(delayMs * 1_000_000L + 2 * Airtime.QUANTUM_NS, bitsPerSecond) + chunkSize;
+        return Bitrate.bytesIn(delayMs * 1_000_000L + 2 * Airtime.QUANTUM_NS + LOOKAHEAD_NS, bitsPerSecond) + chunkSize;
     }
 
     /**
@@ -173,7 +181,7 @@ public final class ShapedFlow {
             next = Math.max(0, releases.peekFirst()[1] - nowNs);
         }
         if (granted < received) {
-            next = Math.min(next, Math.max(0, lastStartNs - nowNs));
+            next = Math.min(next, Math.max(0, lastStartNs - LOOKAHEAD_NS - nowNs));
         }
         return next;
     }
@@ -185,7 +193,7 @@ public final class ShapedFlow {
 
     /** Takes grants while it is this direction's turn, then marks what has fallen due. */
     private void pump(long nowNs) {
-        while (granted < received && (!anyGrant || lastStartNs - nowNs <= 0)) {
+        while (granted < received && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)) {
             Airtime.Grant grant = hop.grant(bitsPerSecond, received - granted, nowNs);
             granted += grant.bytes();
             lastStartNs = grant.startNs();

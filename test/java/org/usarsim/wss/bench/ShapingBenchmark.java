@@ -261,8 +261,7 @@ public final class ShapingBenchmark {
             System.out.printf(Locale.ROOT, "| together | | | **%.1f %%** | 100 %% |%n", 100 * (shareB + shareC));
             System.out.printf(Locale.ROOT, "%nThe two link threads waited for a CPU %.0f ms per second (together).%n", waited);
             System.out.println();
-            System.out.println("The server's own airtime figure (HubSnapshot.RobotEntry.airtime) is not in the headless output;"
-                    + " the shares above are computed from the bytes the peers received.");
+            System.out.println("The shares above are computed from the bytes the peers received.");
         }
     }
 

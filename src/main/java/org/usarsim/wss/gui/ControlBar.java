@@ -10,10 +10,13 @@ import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
+import org.usarsim.wss.shaping.Bitrate;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The top of the window: "Listen on port:", "Enable Logging", Start / Stop, "Propagation Model:"
- * and "Configure". Named port, eventLog, start, model, configure.
+ * and "Configure", then what the link shaping of the next Start (or of the server that runs) is,
+ * and "Link shaping...". Named port, eventLog, start, model, configure, shapingSummary, shaping.
  */
 final class ControlBar extends JPanel {
 
@@ -25,6 +28,8 @@ final class ControlBar extends JPanel {
     final JButton start = new JButton("Start");
     final JComboBox<String> model;
     final JButton configure = new JButton("Configure");
+    final JLabel shapingSummary = new JLabel();
+    final JButton shaping = new JButton("Link shaping...");
 
     ControlBar(List<String> modelNames) {
         super(new GridBagLayout());
@@ -37,6 +42,9 @@ final class ControlBar extends JPanel {
         start.setName("start");
         model.setName("model");
         configure.setName("configure");
+        shapingSummary.setName("shapingSummary");
+        shaping.setName("shaping");
+        shaping.setToolTipText("Shape links like radio: rate and delay from the signal strength, shared airtime (docs/shaping.md)");
         GridBagConstraints c = new GridBagConstraints();
         c.insets = new Insets(3, 3, 3, 3);
         c.anchor = GridBagConstraints.WEST;
@@ -61,6 +69,28 @@ final class ControlBar extends JPanel {
         c.gridwidth = 1;
         c.gridx = 3;
         add(configure, c);
+        c.gridx = 0;
+        c.gridy = 2;
+        c.gridwidth = 3;
+        add(shapingSummary, c);
+        c.gridwidth = 1;
+        c.gridx = 3;
+        add(shaping, c);
+    }
+
+    /** Event thread. Says what link shaping the next Start uses (or the server that runs), in one line; the table in the tooltip. */
+    void showShaping(ShapingConfig config) {
+        if (!config.on()) {
+            shapingSummary.setText("Links not shaped");
+        } else {
+            String lowest = Bitrate.format(config.rates().lowestRate());
+            String top = Bitrate.format(config.rates().topRate());
+            String unit = top.substring(top.indexOf(' ')); // " Mbit/s": said once when both have it, "6 to 54 Mbit/s"
+            String rates = lowest.equals(top) ? top : (lowest.endsWith(unit) ? lowest.substring(0, lowest.indexOf(' ')) : lowest) + " to " + top;
+            shapingSummary.setText("Links shaped: " + rates + " by strength, " + config.delayMs() + " ms delay, "
+                    + (config.airtime() ? "shared airtime" : "airtime not shared"));
+        }
+        shapingSummary.setToolTipText("Rates by strength (dBm:rate): " + config.rates());
     }
 
     /** Event thread. Port, model and logging are locked unless stopped; Configure follows the model. */

@@ -91,6 +91,8 @@ public final class MainWindow {
         bar.start.addActionListener(e -> startOrStop());
         bar.model.addActionListener(e -> showState());
         bar.configure.addActionListener(e -> configure());
+        bar.shaping.addActionListener(e -> shaping());
+        bar.showShaping(ShapingValues.config(windowPreferences.shaping()));
         timer = new Timer(REFRESH_MS, e -> refresh());
         layOut();
         showState();
@@ -282,6 +284,13 @@ public final class MainWindow {
         PropagationModel model = selectedModel().model();
         if (ModelDialogs.show(frame, model, state == ControlBar.State.STOPPED, modelPreferences, nextRunValues.values(model))) {
             nextRunValues.entered(model);
+        }
+    }
+
+    /** "Link shaping...": the dialog, read-only unless stopped (as Configure's). */
+    private void shaping() {
+        if (LinkShapingDialog.show(frame, state == ControlBar.State.STOPPED, windowPreferences, windowPreferences.shaping())) {
+            bar.showShaping(ShapingValues.config(windowPreferences.shaping()));
         }
     }
 

@@ -1,6 +1,7 @@
 package org.usarsim.wss.gui;
 
 import java.awt.Rectangle;
+import java.util.Map;
 import java.util.prefs.BackingStoreException;
 import java.util.logging.Logger;
 import java.util.prefs.Preferences;
@@ -9,8 +10,9 @@ import org.usarsim.wss.protocol.ControlPort;
 
 /**
  * What the window remembers between runs, in {@code java.util.prefs}: the port, the model, "Enable
- * Logging" and the window's bounds, under {@code org/usarsim/wss/window} (tests pass a throw-away
- * node). The models' own settings are {@link ModelPreferences}'.
+ * Logging", the window's bounds and the "Link shaping" dialog's four {@code wss.shaping*} values
+ * (under their keys), under {@code org/usarsim/wss/window} (tests pass a throw-away node). The
+ * models' own settings are {@link ModelPreferences}'.
  */
 public final class WindowPreferences {
 
@@ -37,6 +39,49 @@ public final class WindowPreferences {
 
     public boolean eventLog() {
         return node.getBoolean("eventLog", false);
+    }
+
+    /**
+     * The link shaping values the dialog stored: each of the four keys with its stored value, or
+     * its default where none is stored, or where the stored one is refused (a hand-edited one,
+     * with a WARNING).
+     */
+    Map<String, String> shaping() {
+        Map<String, String> values = ShapingValues.defaults();
+        for (String key : ShapingValues.KEYS) {
+            String stored = node.get(key, null);
+            if (stored == null) {
+                continue;
+            }
+            String problem = ShapingValues.problem(key, stored);
+            if (problem == null) {
+                values.put(key, stored.strip());
+            } else {
+                LOG.warning("preferences " + node.absolutePath() + ": " + key + " = '" + stored + "' is refused (" + problem
+                        + "); using the default " + values.get(key));
+            }
+        }
+        return values;
+    }
+
+    /**
+     * Stores the link shaping values (stripped) and writes them out; keys not given keep what they had.
+     *
+     * @throws IllegalArgumentException when a key is not one of the four or a value is refused; nothing is stored then
+     * @throws BackingStoreException    when the preferences cannot be written
+     */
+    void storeShaping(Map<String, String> values) throws BackingStoreException {
+        for (Map.Entry<String, String> entry : values.entrySet()) {
+            if (!ShapingValues.KEYS.contains(entry.getKey())) {
+                throw new IllegalArgumentException(entry.getKey() + " is not a link shaping setting");
+            }
+            String problem = ShapingValues.problem(entry.getKey(), entry.getValue());
+            if (problem != null) {
+                throw new IllegalArgumentException(entry.getKey() + ": " + problem);
+            }
+        }
+        values.forEach((key, value) -> node.put(key, value.strip()));
+        node.flush();
     }
 
     /** The stored bounds, or null when none are (the first run). */

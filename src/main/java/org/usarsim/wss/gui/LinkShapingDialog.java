@@ -1,0 +1,149 @@
+package org.usarsim.wss.gui;
+
+import java.awt.Color;
+import java.awt.Dimension;
+import java.awt.GridBagConstraints;
+import java.awt.Window;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.prefs.BackingStoreException;
+import javax.swing.JCheckBox;
+import javax.swing.JComponent;
+import javax.swing.JDialog;
+import javax.swing.JLabel;
+import javax.swing.JPanel;
+import javax.swing.JTextField;
+import org.usarsim.wss.shaping.ShapingConfig;
+
+/**
+ * "Link shaping...": the four {@code wss.shaping*} settings (docs/shaping.md) for the window's
+ * next Start, laid out as the generated model dialog: shape links (a check box), the rate table,
+ * the delay, shared airtime (a check box), each field named by its key. A rate table or a delay
+ * that is refused turns its field red as it is typed, the reason in its tooltip; OK checks both
+ * with the same rules ({@link ShapingValues#problem}) and refuses with the first reason under the
+ * fields, else stores the values in the {@link WindowPreferences}. Read-only while a server runs
+ * (every field disabled, Close only). Modal; build and show it on the event thread.
+ */
+final class LinkShapingDialog extends JDialog {
+
+    static final String TITLE = "Link shaping";
+    static final String RATES_LABEL = "Rates by strength";
+    static final String DELAY_LABEL = "Delay (ms)";
+    private static final String RATES_HELP = "Steps dBm:rate from the strongest signal to the weakest, comma-separated:"
+            + " a pair whose strength is at or above a step's dBm gets its rate; below the last, the last."
+            + " A rate is bit/s with k for 1000 or M for 1000000 (wss.shaping.rates)";
+    private static final String DELAY_HELP = "Bytes reach the target no sooner than this after the WSS read them, plus their time on"
+            + " the air: whole milliseconds from " + ShapingConfig.MIN_DELAY_MS + " to " + ShapingConfig.MAX_DELAY_MS
+            + " (wss.shaping.delayMs)";
+
+    private final boolean editable;
+    private final WindowPreferences preferences;
+    private final JCheckBox shaping = new JCheckBox("Shape every link like radio");
+    private final JTextField rates = new JTextField(40);
+    private final JTextField delay = new JTextField(6);
+    private final JCheckBox airtime = new JCheckBox("A robot's links share its radio's airtime");
+    private final JLabel message = new JLabel(" ");
+    private final Color normalBackground = rates.getBackground();
+    private boolean saved;
+
+    /** Shows {@code values} (a value for each of the four keys); OK stores them in {@code preferences}. */
+    LinkShapingDialog(Window owner, boolean editable, WindowPreferences preferences, Map<String, String> values) {
+        super(owner, TITLE, ModalityType.APPLICATION_MODAL);
+        this.editable = editable;
+        this.preferences = preferences;
+        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
+
+        JPanel rows = DialogParts.titled(editable ? "For the next Start" : "Of the server that runs (Stop it to change them)");
+        box(rows, 0, "Link shaping", shaping, ShapingConfig.SHAPING, "on".equalsIgnoreCase(values.get(ShapingConfig.SHAPING)),
+                "Shape every link: rate and delay from the signal strength, a robot's airtime shared (wss.shaping, docs/shaping.md)");
+        field(rows, 1, RATES_LABEL, rates, ShapingConfig.RATES, values.get(ShapingConfig.RATES), "dBm:rate, strongest first",
+                RATES_HELP);
+        field(rows, 2, DELAY_LABEL, delay, ShapingConfig.DELAY_MS, values.get(ShapingConfig.DELAY_MS), "besides the airtime",
+                DELAY_HELP);
+        box(rows, 3, "Shared airtime", airtime, ShapingConfig.AIRTIME, Boolean.parseBoolean(values.get(ShapingConfig.AIRTIME)),
+                "Links sharing a robot share its radio's airtime, by time (wss.shaping.airtime)");
+
+        DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
+        // Three lines for a refusal: a rate table's repeats the table.
+        int lineHeight = message.getFontMetrics(message.getFont()).getHeight();
+        message.setPreferredSize(new Dimension(10, 3 * lineHeight + 2));
+        pack();
+        setMinimumSize(getSize());
+        setLocationRelativeTo(owner);
+    }
+
+    /** Shows the dialog and waits for it to close: whether OK stored the values. Event thread. */
+    static boolean show(Window owner, boolean editable, WindowPreferences preferences, Map<String, String> values) {
+        LinkShapingDialog dialog = new LinkShapingDialog(owner, editable, preferences, values);
+        dialog.setVisible(true);
+        return dialog.saved();
+    }
+
+    /** Whether OK stored the values. */
+    boolean saved() {
+        return saved;
+    }
+
+    private void box(JPanel panel, int y, String label, JCheckBox box, String key, boolean selected, String help) {
+        box.setName(key);
+        box.setToolTipText(help);
+        box.setSelected(selected);
+        box.setEnabled(editable);
+        panel.add(DialogParts.label(label, help, box), DialogParts.cell(0, y, 0, false));
+        GridBagConstraints c = DialogParts.cell(1, y, 4, true);
+        c.gridwidth = 2; // the field's and the unit's columns: a check box has no unit
+        panel.add(box, c);
+    }
+
+    private void field(JPanel panel, int y, String label, JTextField field, String key, String value, String unit, String help) {
+        field.setName(key);
+        field.setText(value);
+        field.setMinimumSize(field.getPreferredSize());
+        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
+            mark(field, help);
+            message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
+        }));
+        mark(field, help);
+        if (!editable) {
+            DialogParts.readOnly(field);
+        }
+        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
+        panel.add(field, DialogParts.cell(1, y, 8, false));
+        JLabel units = new JLabel(unit);
+        units.setToolTipText(help);
+        panel.add(units, DialogParts.cell(2, y, 6, true));
+    }
+
+    /** Red with the reason as its tooltip while its value is refused; else its help. */
+    private void mark(JTextField field, String help) {
+        String problem = ShapingValues.problem(field.getName(), field.getText());
+        field.setBackground(problem != null ? DialogParts.INVALID : normalBackground);
+        field.setToolTipText(problem != null ? problem : help);
+    }
+
+    private void ok() {
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put(ShapingConfig.SHAPING, shaping.isSelected() ? "on" : "off");
+        values.put(ShapingConfig.RATES, rates.getText().strip());
+        values.put(ShapingConfig.DELAY_MS, delay.getText().strip());
+        values.put(ShapingConfig.AIRTIME, String.valueOf(airtime.isSelected()));
+        String rateProblem = ShapingValues.problem(ShapingConfig.RATES, rates.getText());
+        String delayProblem = ShapingValues.problem(ShapingConfig.DELAY_MS, delay.getText());
+        if (rateProblem != null || delayProblem != null) {
+            boolean both = rateProblem != null && delayProblem != null;
+            DialogParts.showMessage(message, (rateProblem != null ? RATES_LABEL + ": " + rateProblem : DELAY_LABEL + ": " + delayProblem)
+                    + (both ? " (and 1 more marked)" : ""));
+            (rateProblem != null ? rates : delay).requestFocusInWindow();
+            return;
+        }
+        try {
+            preferences.storeShaping(values);
+        } catch (BackingStoreException | RuntimeException e) {
+            DialogParts.showMessage(message, "Cannot save the settings: " + e.getMessage());
+            return;
+        }
+        saved = true;
+        dispose();
+    }
+}

@@ -90,10 +90,11 @@ public final class MapScreenshot {
                 .forEach(key -> serverProperties.setProperty(key, properties.getProperty(key).strip()));
         serverProperties.setProperty("wss.bindAddress", "127.0.0.1");
         boolean shaped = "on".equalsIgnoreCase(serverProperties.getProperty("wss.shaping", "off"));
-        WindowServers application = new WindowServers(ConfigFile.of(serverProperties, "screenshot"));
+        ConfigFile serverConfig = ConfigFile.of(serverProperties, "screenshot");
+        WindowServers application = new WindowServers(serverConfig);
         AtomicReference<Servers.Running> running = new AtomicReference<>();
-        Servers servers = (port, runModel, values, eventLog, listener) -> {
-            Servers.Running run = application.start(port, runModel, values, eventLog, listener);
+        Servers servers = (port, runModel, values, eventLog, shaping, listener) -> {
+            Servers.Running run = application.start(port, runModel, values, eventLog, shaping, listener);
             running.set(run);
             return run;
         };
@@ -103,7 +104,8 @@ public final class MapScreenshot {
         SwingUtilities.invokeAndWait(() -> {
             JFrame window = MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                     new ModelPreferences(preferences.node("models")), windowLog,
-                    new Launch("0", model.name(), false, new ModelSettings(settings), true), () -> { }).frame();
+                    new Launch("0", model.name(), false, new ModelSettings(settings), serverConfig.shapingKeysSetBy(serverProperties), true), () -> { })
+                    .frame();
             window.setBounds(0, 0, 1100, 780);
             frame.set(window);
         });

@@ -222,10 +222,12 @@ class MapWindowTest {
         properties.setProperty("wss.bindAddress", "127.0.0.1");
         properties.setProperty("wss.eventLogDir", dir.toString());
         file.forEach(properties::setProperty);
-        WindowServers servers = new WindowServers(ConfigFile.of(properties, "test"));
+        ConfigFile config = ConfigFile.of(properties, "test");
+        WindowServers servers = new WindowServers(config);
+        // As --config gives them: the file's wss.shaping keys go over the window's stored link shaping.
         return onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(() -> model)), new WindowPreferences(preferences.node("window")),
                 new ModelPreferences(preferences.node("models")), windowLog,
-                new Launch("0", model.name(), false, settings, true), closed::countDown).frame());
+                new Launch("0", model.name(), false, settings, config.shapingKeysSetBy(properties), true), closed::countDown).frame());
     }
 
     private int controlPort() {

@@ -15,6 +15,8 @@ import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.RateTable;
+import org.usarsim.wss.shaping.ShapingConfig;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /**
@@ -30,7 +32,8 @@ class WindowServersForceTest {
         file.setProperty("wss.bindAddress", "127.0.0.1");
         file.setProperty("wss.force.down", "r1:r2");
         WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
-        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false, new WssEventListener() { });
+        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false,
+                ShapingConfig.OFF, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");
             r2.initAccepting("r2");
@@ -54,10 +57,10 @@ class WindowServersForceTest {
     void theWindowsPinnedRateReachesTheHub() throws Exception {
         Properties file = new Properties();
         file.setProperty("wss.bindAddress", "127.0.0.1");
-        file.setProperty("wss.shaping", "on");
         WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
+        ShapingConfig shaped = new ShapingConfig(true, RateTable.DEFAULT, ShapingConfig.DEFAULT_DELAY_MS, true); // the window's Link shaping
         Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false,
-                new WssEventListener() { });
+                shaped, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");
             r2.initAccepting("r2");

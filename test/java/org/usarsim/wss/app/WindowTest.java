@@ -336,8 +336,9 @@ class WindowTest {
     void withLinksShapedTheStatisticsShowEachPairsRateAndTheRobotsTheirAirtime() throws Exception {
         closeWindow();
         // r1 - r2 pinned at 2 Mbit/s by the file; r1 - r3 at the rate table's, for ScriptedModel's 0 dBm its top rate.
-        frame = openWindow(new Launch("0", "ScriptedModel", false, null, false), List.of(new NoopPropagationModel(), model),
-                Map.of("wss.shaping", "on", "wss.force.up", "r1:r2:2M"));
+        // As --config gives them: the file's wss.shaping keys go over the window's stored link shaping.
+        frame = openWindow(new Launch("0", "ScriptedModel", false, null, Map.of("wss.shaping", "on"), false),
+                List.of(new NoopPropagationModel(), model), Map.of("wss.shaping", "on", "wss.force.up", "r1:r2:2M"));
         int port = start();
         ExecutorService traffic = Executors.newFixedThreadPool(2);
         try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3");

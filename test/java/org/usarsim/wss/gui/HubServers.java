@@ -11,10 +11,12 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The window's {@link Servers} for tests and benchmarks in the test tree: a {@link Hub} of the
- * given configuration per start (the port field is not read: the configuration's port counts),
+ * given configuration per start (the port field and the window's link shaping are not read: the
+ * configuration's port and shaping count),
  * with the model's instance for the run, configured with the values, as the application's own
  * servers build one, without the event log.
  */
@@ -39,8 +41,8 @@ public final class HubServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
-            throws Exception {
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+            WssEventListener listener) throws Exception {
         PropagationModel instance = model.instanceForRun();
         instance.configure(values);
         Hub hub = new Hub(config, instance);

@@ -43,10 +43,13 @@ import org.usarsim.wss.protocol.ControlPort;
  */
 public final class ConfigFile {
 
-    /** The server's own settings. */
+    /** The link shaping keys, read together by ShapingConfig. */
+    private static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
+            ShapingConfig.AIRTIME);
     /** What wss.shaping.rates takes, in words. */
     private static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
+    /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
             Setting.integer("wss.port", "Control port", ControlPort.DEFAULT).from(0).to(65535).noun("a port number").note("0: any free port")
                     .help("The control port robots connect to; 0 lets the OS choose one, which the start line names"),
@@ -291,7 +294,7 @@ public final class ConfigFile {
     /** The shaping settings, checked together (docs/shaping.md). */
     private ShapingConfig shaping(String source) throws ConfigFileException {
         Map<String, String> shapingValues = new LinkedHashMap<>();
-        for (String key : List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS, ShapingConfig.AIRTIME)) {
+        for (String key : SHAPING_KEYS) {
             shapingValues.put(key, get(key));
         }
         try {
@@ -315,6 +318,21 @@ public final class ConfigFile {
         Map<String, String> set = new LinkedHashMap<>();
         file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
         return new ModelSettings(set);
+    }
+
+    /**
+     * The link shaping keys ({@code wss.shaping*}) that {@code file}, the properties this
+     * configuration was read from, sets, with their checked values: what the window puts over its
+     * stored link shaping.
+     */
+    Map<String, String> shapingKeysSetBy(Properties file) {
+        Map<String, String> set = new LinkedHashMap<>();
+        for (String key : SHAPING_KEYS) {
+            if (file.containsKey(key)) {
+                set.put(key, get(key));
+            }
+        }
+        return set;
     }
 
     /**

@@ -255,7 +255,7 @@ public final class Main {
         Launch launch = new Launch(file.containsKey("wss.port") ? configFile.get("wss.port") : null,
                 file.containsKey("wss.model") ? knownModel(catalog, configFile.modelName()).name() : null,
                 file.containsKey("wss.eventLog") ? configFile.eventLog() : null,
-                fromFile ? configFile.modelKeysSetBy(file) : null, start);
+                fromFile ? configFile.modelKeysSetBy(file) : null, fromFile ? configFile.shapingKeysSetBy(file) : null, start);
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
         WindowServers servers = new WindowServers(configFile);

@@ -11,10 +11,12 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The window's servers, built as headless mode builds its one ({@link Server}): the settings of
- * the --config file or the defaults, with the window's port and event log choice.
+ * the --config file or the defaults, with the window's port, event log choice and link shaping
+ * (the file's wss.force.up pins kept).
  */
 final class WindowServers implements Servers {
 
@@ -26,13 +28,14 @@ final class WindowServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
-            throws Server.StartFailure {
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+            WssEventListener listener) throws Server.StartFailure {
         String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }
-        HubConfig config = configFile.hubConfig().withControlPort(Integer.parseInt(port.strip()));
+        HubConfig file = configFile.hubConfig();
+        HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping, file.pins());
         Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null);
         server.hub().addListener(listener);
         current.set(server);

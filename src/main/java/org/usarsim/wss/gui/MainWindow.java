@@ -30,6 +30,7 @@ import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
@@ -64,6 +65,8 @@ public final class MainWindow {
     private final Runnable onClosed;
     /** What each model's next start uses, and its dialog shows: the stored settings, a --config file's over them. */
     private final NextRunValues nextRunValues;
+    /** The link shaping of the next start, which its dialog shows: the stored values, a --config file's over them. */
+    private final NextRunShaping nextRunShaping;
     private ControlBar.State state = ControlBar.State.STOPPED;
     private Servers.Running running;
     /** The port typed for the server that runs, shown again at Stop (the field shows the actual one meanwhile). */
@@ -79,6 +82,7 @@ public final class MainWindow {
         this.windowLog = windowLog;
         this.onClosed = onClosed;
         this.nextRunValues = new NextRunValues(modelPreferences, launch.modelValues());
+        this.nextRunShaping = new NextRunShaping(windowPreferences, launch.shapingValues());
         bar = new ControlBar(List.copyOf(models.keySet()));
         bar.port.setText(launch.port() != null ? launch.port() : windowPreferences.port());
         bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : windowPreferences.eventLog());
@@ -92,7 +96,7 @@ public final class MainWindow {
         bar.model.addActionListener(e -> showState());
         bar.configure.addActionListener(e -> configure());
         bar.shaping.addActionListener(e -> shaping());
-        bar.showShaping(ShapingValues.config(windowPreferences.shaping()));
+        bar.showShaping(nextRunShaping.config());
         timer = new Timer(REFRESH_MS, e -> refresh());
         layOut();
         showState();
@@ -216,11 +220,12 @@ public final class MainWindow {
         ModelProvider model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
         ModelSettings values = new ModelSettings(nextRunValues.values(model.model()));
+        ShapingConfig shaping = nextRunShaping.config();
         setState(ControlBar.State.STARTING);
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, values, eventLog, view);
+                return servers.start(port, model, values, eventLog, shaping, view);
             }
 
             @Override
@@ -290,7 +295,7 @@ public final class MainWindow {
     /** "Link shaping...": the dialog, read-only unless stopped (as Configure's). */
     private void shaping() {
         if (LinkShapingDialog.show(frame, state == ControlBar.State.STOPPED, windowPreferences, windowPreferences.shaping())) {
-            bar.showShaping(ShapingValues.config(windowPreferences.shaping()));
+            bar.showShaping(nextRunShaping.config());
         }
     }
 

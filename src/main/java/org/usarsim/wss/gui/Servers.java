@@ -7,6 +7,7 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * How the window starts a server: the same way headless mode does (the application supplies it),
@@ -17,14 +18,15 @@ public interface Servers {
     /**
      * Starts a server on that control port with a new instance of that model
      * ({@link ModelProvider#instanceForRun}) configured with {@code values}, the CSV event log when
-     * {@code eventLog}, and {@code listener} receiving its events from the first robot on. Slow (a
-     * model may connect to the simulator): never on the event thread.
+     * {@code eventLog}, its links shaped as {@code shaping} says (the window's "Link shaping"), and
+     * {@code listener} receiving its events from the first robot on. Slow (a model may connect to
+     * the simulator): never on the event thread.
      *
      * @throws Exception when it does not start; the message says why in one line, and nothing is
      *                   left listening
      */
-    Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, WssEventListener listener)
-            throws Exception;
+    Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+            WssEventListener listener) throws Exception;
 
     /** A server that runs. */
     interface Running {

@@ -294,7 +294,8 @@ public final class MainWindow {
 
     /** "Link shaping...": the dialog, read-only unless stopped (as Configure's). */
     private void shaping() {
-        if (LinkShapingDialog.show(frame, state == ControlBar.State.STOPPED, windowPreferences, windowPreferences.shaping())) {
+        if (LinkShapingDialog.show(frame, state == ControlBar.State.STOPPED, windowPreferences, nextRunShaping.values())) {
+            nextRunShaping.entered();
             bar.showShaping(nextRunShaping.config());
         }
     }

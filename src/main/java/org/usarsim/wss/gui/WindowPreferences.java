@@ -46,7 +46,7 @@ public final class WindowPreferences {
      * its default where none is stored, or where the stored one is refused (a hand-edited one,
      * with a WARNING).
      */
-    Map<String, String> shaping() {
+    public Map<String, String> shaping() {
         Map<String, String> values = ShapingValues.defaults();
         for (String key : ShapingValues.KEYS) {
             String stored = node.get(key, null);

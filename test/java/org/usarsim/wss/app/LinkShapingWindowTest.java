@@ -194,10 +194,10 @@ class LinkShapingWindowTest {
         type(dialog, RATES, " -50:11M, -90:2M ");
         assertFalse(refused(dialog, RATES));
         press(dialog, "ok");
-        assertEquals("<html>Delay (ms): soon is not a whole number of milliseconds</html>", message(dialog));
+        assertEquals("<html>Delay: soon is not a whole number of milliseconds</html>", message(dialog));
         type(dialog, DELAY, "10001");
         press(dialog, "ok");
-        assertEquals("<html>Delay (ms): 10001 is above 10000</html>", message(dialog));
+        assertEquals("<html>Delay: 10001 is above 10000</html>", message(dialog));
 
         // Good values, shaping on: OK stores them, and the window says what the next Start uses.
         type(dialog, DELAY, "5");

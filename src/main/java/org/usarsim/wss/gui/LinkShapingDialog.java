@@ -2,12 +2,13 @@ package org.usarsim.wss.gui;
 
 import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.GridBagConstraints;
+import java.awt.FlowLayout;
 import java.awt.Window;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.prefs.BackingStoreException;
+import javax.swing.BorderFactory;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
 import javax.swing.JDialog;
@@ -29,7 +30,7 @@ final class LinkShapingDialog extends JDialog {
 
     static final String TITLE = "Link shaping";
     static final String RATES_LABEL = "Rates by strength";
-    static final String DELAY_LABEL = "Delay (ms)";
+    static final String DELAY_LABEL = "Delay";
     private static final String RATES_HELP = "Steps dBm:rate from the strongest signal to the weakest, comma-separated:"
             + " a pair whose strength is at or above a step's dBm gets its rate; below the last, the last."
             + " A rate is bit/s with k for 1000 or M for 1000000 (wss.shaping.rates)";
@@ -59,7 +60,7 @@ final class LinkShapingDialog extends JDialog {
                 "Shape every link: rate and delay from the signal strength, a robot's airtime shared (wss.shaping, docs/shaping.md)");
         field(rows, 1, RATES_LABEL, rates, ShapingConfig.RATES, values.get(ShapingConfig.RATES), "dBm:rate, strongest first",
                 RATES_HELP);
-        field(rows, 2, DELAY_LABEL, delay, ShapingConfig.DELAY_MS, values.get(ShapingConfig.DELAY_MS), "besides the airtime",
+        field(rows, 2, DELAY_LABEL, delay, ShapingConfig.DELAY_MS, values.get(ShapingConfig.DELAY_MS), "ms, besides each byte's airtime",
                 DELAY_HELP);
         box(rows, 3, "Shared airtime", airtime, ShapingConfig.AIRTIME, Boolean.parseBoolean(values.get(ShapingConfig.AIRTIME)),
                 "Links sharing a robot share its radio's airtime, by time (wss.shaping.airtime)");
@@ -91,9 +92,7 @@ final class LinkShapingDialog extends JDialog {
         box.setSelected(selected);
         box.setEnabled(editable);
         panel.add(DialogParts.label(label, help, box), DialogParts.cell(0, y, 0, false));
-        GridBagConstraints c = DialogParts.cell(1, y, 4, true);
-        c.gridwidth = 2; // the field's and the unit's columns: a check box has no unit
-        panel.add(box, c);
+        panel.add(box, DialogParts.cell(1, y, 4, true));
     }
 
     private void field(JPanel panel, int y, String label, JTextField field, String key, String value, String unit, String help) {
@@ -108,11 +107,14 @@ final class LinkShapingDialog extends JDialog {
         if (!editable) {
             DialogParts.readOnly(field);
         }
-        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
-        panel.add(field, DialogParts.cell(1, y, 8, false));
         JLabel units = new JLabel(unit);
         units.setToolTipText(help);
-        panel.add(units, DialogParts.cell(2, y, 6, true));
+        units.setBorder(BorderFactory.createEmptyBorder(0, 6, 0, 0));
+        JPanel beside = new JPanel(new FlowLayout(FlowLayout.LEADING, 0, 0)); // the unit right after a short field too
+        beside.add(field);
+        beside.add(units);
+        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
+        panel.add(beside, DialogParts.cell(1, y, 8, true));
     }
 
     /** Red with the reason as its tooltip while its value is refused; else its help. */

@@ -96,7 +96,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.outbox = new Outbox(events);
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         this.core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot(),
-                config.shaping());
+                config.maxPortsPerAddress(), config.shaping());
         this.airtime = config.shaping().airtime() ? Airtime.shared() : Airtime.unshared();
         this.sampler = config.shaping().on() ? new Sampler(this::measure) : null;
         this.keepAlive = KeepAlive.within(config.deadPeerSeconds());

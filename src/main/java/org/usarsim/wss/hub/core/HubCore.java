@@ -55,6 +55,7 @@ public final class HubCore {
     private final String modelName;
     private final boolean matchSourceAddress;
     private final int maxPortsPerRobot;
+    private final int maxPortsPerAddress;
     private final Map<String, RegisteredRobot> robots = new HashMap<>();
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
@@ -92,10 +93,17 @@ public final class HubCore {
     /** @param shaping how links are shaped (docs/shaping.md) */
     public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot,
             ShapingConfig shaping) {
+        this(modelName, matchSourceAddress, portMemorySeconds, maxPortsPerRobot, Integer.MAX_VALUE, shaping);
+    }
+
+    /** @param maxPortsPerAddress the most WSS ports the robots registered from one address may hold as source, together */
+    public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot,
+            int maxPortsPerAddress, ShapingConfig shaping) {
         this.shaping = shaping;
         this.modelName = modelName;
         this.matchSourceAddress = matchSourceAddress;
         this.maxPortsPerRobot = maxPortsPerRobot;
+        this.maxPortsPerAddress = maxPortsPerAddress;
         this.memory = new PortMemory(portMemorySeconds);
     }
 
@@ -239,10 +247,18 @@ public final class HubCore {
             }
             return new DnsResult(DnsOutcome.OK, port.number, key, false);
         }
-        long held = ports.fromCount(from);
+        InetAddress address = robots.get(from).address();
+        int held = ports.fromCount(from);
         if (held >= maxPortsPerRobot) {
-            out.add(new HubEvent.Warned("DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
+            out.add(new HubEvent.Warned("DNS beyond the port limit", address, from + " holds " + held
                     + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key));
+            return DnsResult.of(DnsOutcome.NO_PORT);
+        }
+        long heldFromAddress = heldFrom(address);
+        if (heldFromAddress >= maxPortsPerAddress) {
+            out.add(new HubEvent.Warned("DNS beyond the address limit", address, "the robots registered from "
+                    + address.getHostAddress() + " hold " + heldFromAddress
+                    + " WSS ports as source, the most wss.maxPortsPerAddress allows; no new one for " + key));
             return DnsResult.of(DnsOutcome.NO_PORT);
         }
         if (newNumber < 0) {
@@ -258,6 +274,21 @@ public final class HubCore {
         out.add(new HubEvent.Said(Level.INFO, "allocated " + port + (listens ? "" : ", not listening")));
         out.add(new HubEvent.PortAllocated(key, port.number, listens));
         return new DnsResult(DnsOutcome.OK, port.number, key, true);
+    }
+
+    /**
+     * The WSS ports held as source by the robots registered from the address now: what
+     * wss.maxPortsPerAddress caps, so that one client cannot take every descriptor by registering
+     * many names. Ports of robots that left are not counted: they are bounded by wss.portMemory.
+     */
+    private long heldFrom(InetAddress address) {
+        long held = 0;
+        for (RegisteredRobot robot : robots.values()) {
+            if (robot.address().equals(address)) {
+                held += ports.fromCount(robot.name());
+            }
+        }
+        return held;
     }
 
     /** A DNS's port could not be bound: said as the WARNING its client caused. */

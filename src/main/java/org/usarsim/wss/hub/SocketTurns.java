@@ -9,6 +9,8 @@ final class SocketTurns {
 
     private long taken;
     private long done;
+    /** The thread whose turn it is, or null between turns. */
+    private Thread inTurn;
 
     /** Under the hub's lock. @return the new turn's number */
     synchronized long take() {
@@ -28,10 +30,17 @@ final class SocketTurns {
         if (interrupted) {
             Thread.currentThread().interrupt();
         }
+        inTurn = Thread.currentThread();
     }
 
     synchronized void done(long turn) {
         done = turn;
+        inTurn = null;
         notifyAll();
+    }
+
+    /** Whether the calling thread is doing its turn's socket work now. */
+    synchronized boolean heldByCurrentThread() {
+        return inTurn == Thread.currentThread();
     }
 }

@@ -279,7 +279,8 @@ public final class HubCore {
     /**
      * The WSS ports held as source by the robots registered from the address now: what
      * wss.maxPortsPerAddress caps, so that one client cannot take every descriptor by registering
-     * many names. Ports of robots that left are not counted: they are bounded by wss.portMemory.
+     * many names. Ports of robots that left are not counted: they give their descriptors back when
+     * descriptors run short ({@link #giveBackRemembered}).
      */
     private long heldFrom(InetAddress address) {
         long held = 0;
@@ -650,7 +651,7 @@ public final class HubCore {
      * Gives back the numbers of a gone robot's WSS ports, as source and as target, but those with
      * open connections, which are forgotten when their last connection closes.
      */
-    private void forgetPortsOf(String name, long nowNs, Changes out) {
+    private int forgetPortsOf(String name, long nowNs, Changes out) {
         int forgotten = 0;
         boolean kept = false;
         for (WssPort port : ports.of(name)) {
@@ -676,5 +677,33 @@ public final class HubCore {
                 && stats.get(RobotPair.of(way.from(), way.to())) == null);
         measured.keySet().retainAll(conditions.keySet());
         said.retainAll(conditions.keySet());
+        return forgotten;
+    }
+
+    /**
+     * Descriptors ran short: the remembered ports of robots that left are given back, the robot
+     * gone longest first, a whole robot at a time, until at least {@code atLeast} were (or none is
+     * left to give), whatever wss.portMemory says. A robot that is here never loses a port so.
+     *
+     * @return how many ports were given back
+     */
+    public int giveBackRemembered(int atLeast, long nowNs, Changes out) {
+        int given = 0;
+        int of = 0;
+        for (String name : memory.longestGoneFirst()) {
+            if (given >= atLeast) {
+                break;
+            }
+            if (!robots.containsKey(name)) {
+                int forgotten = forgetPortsOf(name, nowNs, out);
+                given += forgotten;
+                of += forgotten > 0 ? 1 : 0;
+            }
+        }
+        if (given > 0) {
+            out.add(new HubEvent.Said(Level.INFO, "descriptors ran short: gave back " + given + " remembered WSS port"
+                    + (given == 1 ? "" : "s") + " of " + of + " robot" + (of == 1 ? "" : "s") + " that left, the longest gone first"));
+        }
+        return given;
     }
 }

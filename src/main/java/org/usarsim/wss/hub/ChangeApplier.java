@@ -78,7 +78,7 @@ final class ChangeApplier {
         if (tasks.isEmpty() && !out.hasSocketWork()) {
             return new Applying(out, tasks, 0);
         }
-        return new Applying(out, tasks, turns.take());
+        return new Applying(out, tasks, turns.take(() -> socketWork(out, tasks)));
     }
 
     /**
@@ -117,19 +117,19 @@ final class ChangeApplier {
     void apply(Applying applying) {
         Changes changes = applying.changes();
         if (applying.turn() > 0) {
-            turns.await(applying.turn());
-            try {
-                Closes closes = selector.closes();
-                applying.portTasks().forEach(task -> portWork(task, closes));
-                closes.await(); // every port this step stopped refuses connections now
-                changes.closes().forEach(close -> close.link().close(close.reason()));
-                changes.sessionsToClose().forEach(RobotSession::close);
-            } finally {
-                turns.done(applying.turn());
-            }
+            turns.complete(applying.turn());
         }
         changes.forgetLater().forEach(later -> forgetTimer.schedule(later.robot(), later.afterNs()));
         outbox.deliver();
+    }
+
+    /** A step's socket work, in its turn (on whichever thread does the turns then). */
+    private void socketWork(Changes changes, List<PortTask> tasks) {
+        Closes closes = selector.closes();
+        tasks.forEach(task -> portWork(task, closes));
+        closes.await(); // every port this step stopped refuses connections now
+        changes.closes().forEach(close -> close.link().close(close.reason()));
+        changes.sessionsToClose().forEach(RobotSession::close);
     }
 
     /**

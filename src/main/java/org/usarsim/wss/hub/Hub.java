@@ -305,6 +305,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
      * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
      * first). A new port's number and its listening socket are bound first, without the lock,
      * then allocated under it: a port that cannot listen is not allocated (Could.Not.Allocate.Port).
+     * The socket is bound before the hub knows whether the port is new, so that a new port (every
+     * DNS of a mesh forming) takes the lock once; a DNS of a port that exists closes it unused.
      * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
      */
     @Override
@@ -317,7 +319,16 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             Map<OrderedPair, Measurement> measurements = answers.measure(List.of(RobotPair.of(from, to)));
             step(out -> core.measured(measurements, out));
         }
-        HubCore.DnsResult result = dns(from, to, targetPort, allowed, null);
+        ServerSocketChannel ahead;
+        try {
+            ahead = PortSockets.bindNew(config.bindAddress());
+        } catch (IOException e) {
+            ahead = null; // out of descriptors, say: asked again below if the port is new
+        }
+        HubCore.DnsResult result = dns(from, to, targetPort, allowed, ahead);
+        if (!result.numberUsed()) {
+            Closing.quietly(ahead); // the port exists, or the DNS is refused
+        }
         if (result.outcome() != HubCore.DnsOutcome.NEEDS_NUMBER) {
             return result;
         }

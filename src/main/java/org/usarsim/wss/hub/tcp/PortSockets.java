@@ -222,7 +222,16 @@ public final class PortSockets {
         }
     }
 
+    /**
+     * SO_REUSEPORT on, SO_REUSEADDR off (the JDK sets it on a ServerSocketChannel by default): with
+     * it, a socket of any process that sets SO_REUSEADDR could bind the number while only the
+     * placeholder holds it, and Linux's bind(0) searches for a free number 17 times slower (2.3 s
+     * against 0.13 s for 10,000 listening sockets here).
+     */
     private static void share(NetworkChannel channel) throws IOException {
+        if (SHARE != StandardSocketOptions.SO_REUSEADDR) {
+            channel.setOption(StandardSocketOptions.SO_REUSEADDR, false);
+        }
         channel.setOption(SHARE, true);
     }
 

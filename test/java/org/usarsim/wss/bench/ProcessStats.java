@@ -14,7 +14,7 @@ import java.util.stream.Stream;
 record ProcessStats(int threads, int serverThreads, int descriptors, long residentKiB) {
 
     /** How the server names its threads (a thread's name in /proc is cut at 15 characters). */
-    private static final List<String> SERVER_THREADS = List.of("link ", "wss-port ", "control ", "wss-control");
+    private static final List<String> SERVER_THREADS = List.of("link ", "wss-port", "control ", "wss-control");
 
     static ProcessStats of(long pid) throws IOException {
         Path process = Path.of("/proc", Long.toString(pid));
@@ -38,6 +38,13 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         try (Stream<Path> fds = Files.list(process.resolve("fd"))) {
             return new ProcessStats(threads, server, (int) fds.count(), rss);
         }
+    }
+
+    /** The process's CPU time so far (user and system), in seconds. */
+    static double cpuSeconds(long pid) throws IOException {
+        String stat = Files.readString(Path.of("/proc", Long.toString(pid), "stat"));
+        String[] fields = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+        return (Long.parseLong(fields[11]) + Long.parseLong(fields[12])) / 100.0; // utime, stime in clock ticks (USER_HZ 100)
     }
 
     private static String comm(Path task) {

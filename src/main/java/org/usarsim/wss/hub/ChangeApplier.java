@@ -149,10 +149,7 @@ final class ChangeApplier {
     private void portWork(PortTask task, Closes closes) {
         Changes.PortAction action = task.action();
         switch (action.work()) {
-            case LISTEN -> {
-                closes.await(); // a port stopped earlier in the step is closed before any listens again
-                listen(task, closes);
-            }
+            case LISTEN -> listen(task, closes); // a port stopped earlier in the step is closed before it listens again (PortSockets)
             case STOP -> task.sockets().stop(closes);
             case RELEASE -> task.sockets().release(closes);
         }

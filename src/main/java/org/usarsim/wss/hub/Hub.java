@@ -6,10 +6,12 @@ import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.OptionalDouble;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
@@ -518,6 +520,21 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         boolean[] changed = new boolean[1];
         step(out -> changed[0] = core.resumePair(pair, clock.getAsLong(), out));
         return changed[0];
+    }
+
+    /** Every pair's break or resume in one step: their ports stop (or listen again) together, in one turn. */
+    @Override
+    public Set<RobotPair> applyLinkStates(Map<RobotPair, Boolean> inRange) {
+        Set<RobotPair> changed = new LinkedHashSet<>();
+        step(out -> {
+            long now = clock.getAsLong();
+            inRange.forEach((pair, live) -> {
+                if (live ? core.resumePair(pair, now, out) : core.breakPair(pair, now, out)) {
+                    changed.add(pair);
+                }
+            });
+        });
+        return changed;
     }
 
     @Override

@@ -20,8 +20,10 @@ import org.usarsim.wss.hub.core.WssPort;
  * selector has run after it ({@link #awaitClosed}).
  *
  * <p>A departure drains it first ({@link #beginDrain}): the hub connects to the port itself, the
- * selector's thread accepts until that marker, then closes the socket, and the hand-over thread
- * says the drain ended once it has handed every connection before the marker to the hub.
+ * selector's thread accepts until that marker, then accepts no more (the socket stays open and
+ * holds the number until the departure stops the port, which resets whatever came after), and the
+ * hand-over thread says the drain ended once it has handed every connection before the marker to
+ * the hub.
  */
 public final class PortListener {
 
@@ -33,8 +35,10 @@ public final class PortListener {
     final ServerSocketChannel channel;
     /** Its key in the selector; only the selector's thread reads or writes it. */
     SelectionKey key;
-    /** Asked to close (a stop, a release, or the drain's marker reached); the selector's thread closes it. */
+    /** Asked to close (a stop or a release); the selector's thread closes it. */
     private volatile boolean closing;
+    /** The drain's marker was reached: accepting no more. Only the selector's thread writes it. */
+    private volatile boolean drained;
     /** Counted down once the socket is really closed (the selector ran after the close). */
     private final CountDownLatch closed = new CountDownLatch(1);
     /** Counted down once the hand-over thread handed every connection this listener accepted to the hub. */
@@ -72,6 +76,24 @@ public final class PortListener {
         closing = true;
         closed.countDown();
         Closing.quietly(marker());
+    }
+
+    /**
+     * On the selector's thread: the drain's marker was accepted (and reset), so everything before
+     * it is queued for the hub; this listener accepts no more. The hub's own end of the marker
+     * is closed now (the reset reached it: no TIME_WAIT is left).
+     */
+    void drained() {
+        drained = true;
+        if (key != null) {
+            key.cancel();
+        }
+        Closing.quietly(marker());
+    }
+
+    /** Whether the drain's marker was reached: it accepts no more, and waits for the port to stop. */
+    boolean isDrained() {
+        return drained;
     }
 
     /** On the hand-over thread: every connection accepted before the close has been handed to the hub. */

@@ -221,7 +221,7 @@ public final class PortSelector implements AutoCloseable {
     /** A port has a connection waiting: accept, and queue them for the hand-over. */
     private void ready(SelectionKey key) {
         PortListener listener = (PortListener) key.attachment();
-        if (!key.isValid() || listener.isClosing()) {
+        if (!key.isValid() || listener.isClosing() || listener.isDrained()) {
             return;
         }
         for (int i = 0; i < ACCEPTS_PER_TURN; i++) {
@@ -243,9 +243,13 @@ public final class PortSelector implements AutoCloseable {
                 return;
             }
             if (listener.isMarker(connection)) {
-                // Everything completed before the drain began is queued: stop here.
+                // Everything completed before the drain began is queued: accept no more. The socket
+                // holds the number until the departure stops the port (which resets what came since).
                 PortListener.reset(connection);
-                closeListener(listener);
+                heldBack.remove(key);
+                paused.remove(key);
+                listener.drained();
+                handOver.ended(listener);
                 return;
             }
             handOver.accepted(listener, connection);

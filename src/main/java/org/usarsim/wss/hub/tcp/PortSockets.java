@@ -155,21 +155,14 @@ public final class PortSockets {
 
     /**
      * Begins a departure's drain: the connections the kernel already completed are handed over,
-     * then the listener closes ({@link PortListener#beginDrain}); the placeholder is bound first,
-     * so that the number stays held when it does.
+     * then the listener accepts no more ({@link PortListener#beginDrain}); it keeps the number
+     * until the departure stops the port.
      *
      * @return the listener draining, to wait for; null when there is none (the stop closes it)
      */
     public synchronized PortListener beginDrain() {
         if (released || listener == null || listener.isClosing()) {
             return null;
-        }
-        if (placeholder == null) {
-            try {
-                placeholder = bindPlaceholder(address);
-            } catch (IOException e) {
-                return null; // no descriptor for it: the stop holds the number as it can
-            }
         }
         InetAddress reach = address.getAddress().isAnyLocalAddress() ? InetAddress.getLoopbackAddress() : address.getAddress();
         return listener.beginDrain(reach) ? listener : null;

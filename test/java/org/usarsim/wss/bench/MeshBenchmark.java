@@ -57,6 +57,7 @@ public final class MeshBenchmark {
         int every = 1;
         long rate = 64 * 1024;
         int warmUp = 0;
+        String classes = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--only" -> only = args[++i];
@@ -67,6 +68,7 @@ public final class MeshBenchmark {
                 case "--every" -> every = Integer.parseInt(args[++i]);
                 case "--rate" -> rate = Long.parseLong(args[++i]);
                 case "--warmup" -> warmUp = Integer.parseInt(args[++i]);
+                case "--classes" -> classes = args[++i];
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
@@ -74,10 +76,10 @@ public final class MeshBenchmark {
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), only, robots,
                 java.time.LocalDateTime.now());
         switch (only) {
-            case "dns" -> dns(robots, limit, warmUp);
+            case "dns" -> dns(robots, limit, warmUp, classes);
             case "break" -> breaks(robots, rounds);
             case "traffic" -> traffic(robots, limit, every, rate, seconds);
-            case "churn" -> churn(robots, limit == 0 ? 1024 : limit);
+            case "churn" -> churn(robots, limit == 0 ? 1024 : limit, classes);
             default -> throw new IllegalArgumentException("unknown section " + only);
         }
         System.exit(0);
@@ -90,9 +92,20 @@ public final class MeshBenchmark {
 
     // ---- dns ----
 
-    private static void dns(int robots, int limit, int warmUp) throws Exception {
-        try (WssProcess wss = limit > 0 ? WssProcess.startWithDescriptorLimit(limit, perAddress(robots))
-                : WssProcess.start(perAddress(robots))) {
+    /** This build's classes, or another build's ({@code --classes}: a build before this change knows no wss.maxPortsPerAddress). */
+    private static WssProcess wss(String classes, int limit, String... properties) throws Exception {
+        if (classes == null) {
+            String own = java.nio.file.Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().toURI())
+                    .toString();
+            return WssProcess.start(own, limit, properties);
+        }
+        System.out.println("  the WSS from " + classes);
+        return WssProcess.start(classes, limit, java.util.Arrays.stream(properties)
+                .filter(property -> !property.startsWith("wss.maxPortsPerAddress")).toArray(String[]::new));
+    }
+
+    private static void dns(int robots, int limit, int warmUp, String classes) throws Exception {
+        try (WssProcess wss = wss(classes, limit, perAddress(robots))) {
             System.out.printf("  descriptor limit of the WSS: %s; wss.maxPortsPerAddress: %s%n", limit > 0 ? limit : "the shell's",
                     perAddress(robots));
             row("at start", ProcessStats.of(wss.pid()));
@@ -335,8 +348,7 @@ public final class MeshBenchmark {
     // ---- traffic ----
 
     private static void traffic(int robots, int limit, int every, long rate, int seconds) throws Exception {
-        try (WssProcess wss = limit > 0 ? WssProcess.startWithDescriptorLimit(limit, perAddress(robots))
-                : WssProcess.start(perAddress(robots))) {
+        try (WssProcess wss = wss(null, limit, perAddress(robots))) {
             MeshStreams streams = new MeshStreams(rate);
             List<Integer> accepting = new ArrayList<>();
             for (int i = 0; i < robots; i++) {
@@ -347,6 +359,7 @@ public final class MeshBenchmark {
             Mesh mesh = askAll(clients);
             System.out.printf(Locale.ROOT, "  the mesh: %d DNS in %.2f s, %d answered%n", mesh.asked(), mesh.seconds(), mesh.answered());
             int pair = 0;
+            long opened = System.nanoTime();
             for (int i = 0; i < robots; i++) {
                 for (int j = i + 1; j < robots; j++) {
                     if (pair++ % every == 0) {
@@ -354,15 +367,26 @@ public final class MeshBenchmark {
                     }
                 }
             }
-            System.out.printf("  %d of the %d pairs hold a connection, %d bytes a second each%n", streams.streams(), pair, rate);
+            int arrived = streams.awaitArrived(120);
+            System.out.printf(Locale.ROOT, "  %d of the %d pairs hold a connection, %d bytes a second each; all forwarded to their"
+                    + " targets %.1f s after the first was opened (%d of them)%n", streams.streams(), pair, rate,
+                    (System.nanoTime() - opened) / 1e9, arrived);
             GetssProbe probe = new GetssProbe(clients);
+            double serverCpu = ProcessStats.cpuSeconds(wss.pid());
+            double ownCpu = ProcessStats.cpuSeconds(ProcessHandle.current().pid());
+            long started = System.nanoTime();
             streams.startWriting();
             probe.start();
             Thread.sleep(TimeUnit.SECONDS.toMillis(seconds) / 2);
             ProcessStats during = ProcessStats.of(wss.pid());
             Thread.sleep(TimeUnit.SECONDS.toMillis(seconds) / 2);
             probe.stop();
+            double wall = (System.nanoTime() - started) / 1e9;
             row("during the streams", during);
+            System.out.printf(Locale.ROOT, "  CPU during the %.1f s of streams: the WSS %.1f s (%.2f cores), the robots %.1f s (%.2f cores)%n",
+                    wall, ProcessStats.cpuSeconds(wss.pid()) - serverCpu, (ProcessStats.cpuSeconds(wss.pid()) - serverCpu) / wall,
+                    ProcessStats.cpuSeconds(ProcessHandle.current().pid()) - ownCpu,
+                    (ProcessStats.cpuSeconds(ProcessHandle.current().pid()) - ownCpu) / wall);
             MeshStreams.Outcome outcome = streams.finish(30);
             System.out.printf(Locale.ROOT, "  streams: %d, written %.1f MB (%.1f MB due at the rate), received %.1f MB; whole %d,"
                     + " damaged %d, unfinished %d%n", outcome.streams(), outcome.written() / 1e6, outcome.dueBytes() / 1e6,
@@ -376,8 +400,8 @@ public final class MeshBenchmark {
 
     // ---- churn ----
 
-    private static void churn(int robots, int limit) throws Exception {
-        try (WssProcess wss = WssProcess.startWithDescriptorLimit(limit, "wss.logLevel=INFO");
+    private static void churn(int robots, int limit, String classes) throws Exception {
+        try (WssProcess wss = wss(classes, limit, "wss.logLevel=INFO");
              java.net.ServerSocket baseAccepts = new java.net.ServerSocket(0, 50, java.net.InetAddress.getByName("127.0.0.1"))) {
             System.out.printf("  descriptor limit of the WSS: %d; wss.portMemory: the default (600 s)%n", limit);
             baseAccepts.setSoTimeout(5000);

@@ -58,6 +58,7 @@ final class MeshStreams {
     private final List<Sender> senders = new ArrayList<>();
     private final Map<Integer, Receiver> receivers = new ConcurrentHashMap<>();
     private final ByteBuffer readBuffer = ByteBuffer.allocateDirect(64 * 1024);
+    private final java.util.concurrent.atomic.AtomicInteger arrived = new java.util.concurrent.atomic.AtomicInteger();
     private volatile boolean writing = true;
     private volatile boolean reading = true;
     private Thread writer;
@@ -94,6 +95,15 @@ final class MeshStreams {
 
     int streams() {
         return senders.size();
+    }
+
+    /** Waits until the WSS has connected every stream to its target (at most {@code seconds}). @return how many it has */
+    int awaitArrived(int seconds) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        while (arrived.get() < senders.size() && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        return arrived.get();
     }
 
     void startWriting() {
@@ -156,6 +166,7 @@ final class MeshStreams {
             if (key.isAcceptable()) {
                 SocketChannel accepted;
                 while ((accepted = ((ServerSocketChannel) key.channel()).accept()) != null) {
+                    arrived.incrementAndGet();
                     accepted.configureBlocking(false);
                     accepted.register(selector, SelectionKey.OP_READ, new Receiver());
                 }

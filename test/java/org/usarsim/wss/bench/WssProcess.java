@@ -56,7 +56,7 @@ final class WssProcess implements AutoCloseable {
     }
 
     /** @param descriptors the process's limit of open descriptors; 0 keeps the shell's */
-    private static WssProcess start(String classpath, int descriptors, String... properties) throws IOException, InterruptedException {
+    static WssProcess start(String classpath, int descriptors, String... properties) throws IOException, InterruptedException {
         Path config = Files.createTempFile("wss-bench", ".properties");
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));

@@ -46,6 +46,8 @@ final class ChangeApplier {
     private final Map<WssPort, PortSockets> sockets = new HashMap<>();
     /** Ports allocated by the step being taken that do not listen: their sockets, bound listening, stop in its turn. */
     private final List<PortTask> settling = new ArrayList<>();
+    /** Ports allocated by the step being taken that listen already: their LISTEN is done. */
+    private final java.util.Set<WssPort> listenedNow = new java.util.HashSet<>();
 
     ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Switchboard switchboard, PortSelector selector,
             ListenFailure listenFailure) {
@@ -58,13 +60,22 @@ final class ChangeApplier {
 
     /**
      * Under the hub's lock, before the step is {@link #taken}: the sockets of a port the core just
-     * allocated, bound listening by the DNS; a port allocated not listening stops in the step's turn.
+     * allocated, bound listening by the DNS. A port allocated listening starts accepting at once:
+     * its socket only joins the selector (a queue and a wake-up, no I/O on the socket), nothing of
+     * an earlier step can concern a port that did not exist, and every later step comes after; so
+     * a DNS takes no turn (a mesh forming takes 9,900 in a row). A port allocated not listening
+     * stops in the step's turn.
+     *
+     * @throws IOException when the port cannot start accepting: the core must be told it does not listen
      */
-    void put(WssPort port, PortSockets portSockets) {
+    void put(WssPort port, PortSockets portSockets) throws IOException {
         sockets.put(port, portSockets);
         if (!port.listening()) {
             settling.add(new PortTask(new Changes.PortAction(Changes.PortWork.STOP, port, port.epoch()), portSockets));
+            return;
         }
+        listenedNow.add(port);
+        portSockets.listen(port.epoch(), null);
     }
 
     /** Under the hub's lock: the port's sockets, or null. */
@@ -100,12 +111,16 @@ final class ChangeApplier {
         List<PortTask> tasks = new ArrayList<>(settling);
         settling.clear();
         for (Changes.PortAction action : out.portActions()) {
+            if (action.work() == Changes.PortWork.LISTEN && listenedNow.contains(action.port())) {
+                continue;
+            }
             PortSockets portSockets = action.work() == Changes.PortWork.RELEASE ? sockets.remove(action.port())
                     : sockets.get(action.port());
             if (portSockets != null) {
                 tasks.add(new PortTask(action, portSockets));
             }
         }
+        listenedNow.clear();
         return tasks;
     }
 
@@ -146,12 +161,19 @@ final class ChangeApplier {
         }
     }
 
+    /**
+     * One port's work. Not a switch on the enum: that compiles to a class of its own, loaded at its
+     * first use, and the first stop may come when descriptors have run out (loading a class from a
+     * directory of classes takes one).
+     */
     private void portWork(PortTask task, Closes closes) {
-        Changes.PortAction action = task.action();
-        switch (action.work()) {
-            case LISTEN -> listen(task, closes); // a port stopped earlier in the step is closed before it listens again (PortSockets)
-            case STOP -> task.sockets().stop(closes);
-            case RELEASE -> task.sockets().release(closes);
+        Changes.PortWork work = task.action().work();
+        if (work == Changes.PortWork.LISTEN) {
+            listen(task, closes); // a port stopped earlier in the step is closed before it listens again (PortSockets)
+        } else if (work == Changes.PortWork.STOP) {
+            task.sockets().stop(closes);
+        } else {
+            task.sockets().release(closes);
         }
     }
 

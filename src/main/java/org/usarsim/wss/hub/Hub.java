@@ -29,6 +29,7 @@ import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.hub.tcp.ControlListener;
+import org.usarsim.wss.hub.tcp.Closes;
 import org.usarsim.wss.hub.tcp.ControlSession;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
@@ -282,6 +283,12 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
+        // Drained, they stop now, together: once the robot is gone, a connect to them is refused. The
+        // departure's step stops them in its turn too (nothing left to do then); stopping is the
+        // same whenever it is done, and a port that listens again later is a new listening.
+        Closes closes = portSelector.closes();
+        toDrain.forEach(sockets -> sockets.stop(closes));
+        closes.await();
         step(out -> {
             core.left(name, session, clock.getAsLong(), out);
             lock.notifyAll();
@@ -323,6 +330,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         }
         ServerSocketChannel ahead;
         try {
+            portSelector.start(); // once: not under the lock, where a new port joins it
             ahead = PortSockets.bindNew(config.bindAddress());
         } catch (IOException e) {
             ahead = null; // out of descriptors, say: asked again below if the port is new
@@ -375,7 +383,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             result = core.dns(from, to, targetPort, allowed, number, clock.getAsLong(), out);
             if (result.numberUsed()) {
                 WssPort port = core.port(result.key());
-                applier.put(port, PortSockets.adopt(port, config.bindAddress(), portSelector, bound));
+                try {
+                    applier.put(port, PortSockets.adopt(port, config.bindAddress(), portSelector, bound));
+                } catch (IOException e) {
+                    core.couldNotListen(port, port.epoch(), e.getMessage(), out);
+                }
             }
             applying = applier.taken(out);
         }

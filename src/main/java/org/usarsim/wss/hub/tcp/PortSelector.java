@@ -62,6 +62,11 @@ public final class PortSelector implements AutoCloseable {
         this.handOver = new HandOver(switchboard, this);
     }
 
+    /** Opens the selector and starts its threads, unless done: before the first port listens. */
+    public void start() throws IOException {
+        opened();
+    }
+
     /** The listeners a step closes: handed to the selector's thread at once and waited for once. */
     public Closes closes() {
         return new Closes(this);
@@ -244,7 +249,7 @@ public final class PortSelector implements AutoCloseable {
             }
             if (listener.isMarker(connection)) {
                 // Everything completed before the drain began is queued: accept no more. The socket
-                // holds the number until the departure stops the port (which resets what came since).
+                // holds the number until the departure stops the port, at once (Hub.deregister).
                 PortListener.reset(connection);
                 heldBack.remove(key);
                 paused.remove(key);

@@ -92,7 +92,8 @@ public final class PortSockets {
     /**
      * Listens on the port's number, with a listener of the core's {@code epoch}. A listener
      * closed before must be closed for real first: two listening sockets on one number would share
-     * its connections.
+     * its connections. A new port's first listening only joins the selector (the hub does it under
+     * its lock; {@code closes} may then be null).
      *
      * @throws IOException when the number cannot be listened on (no descriptor left, say: the hub
      *                     may give some back and try once more)
@@ -156,7 +157,7 @@ public final class PortSockets {
     /**
      * Begins a departure's drain: the connections the kernel already completed are handed over,
      * then the listener accepts no more ({@link PortListener#beginDrain}); it keeps the number
-     * until the departure stops the port.
+     * until the departure stops the port, at once ({@link #stop}, before the robot is gone).
      *
      * @return the listener draining, to wait for; null when there is none (the stop closes it)
      */

@@ -45,6 +45,7 @@ class ConfigFileTest {
             Map.entry("wss.pluginDir", ""),
             Map.entry("wss.portMemory", "600"),
             Map.entry("wss.maxPortsPerRobot", "1000"),
+            Map.entry("wss.maxPortsPerAddress", "10000"),
             Map.entry("wss.deadPeerSeconds", "30"),
             Map.entry("wss.statsInterval", "0"),
             Map.entry("wss.operators", "127.0.0.1"),

@@ -16,7 +16,8 @@ import org.usarsim.wss.hub.TestRobot;
 
 /**
  * The real server under a limit of 256 open descriptors: a DNS that finds no descriptor left
- * gets Could.Not.Allocate.Port, and the server goes on.
+ * gets Could.Not.Allocate.Port, and the server goes on; remembered ports of robots that left never
+ * cost a robot that is here its port.
  */
 class DescriptorLimitTest {
 
@@ -83,6 +84,41 @@ class DescriptorLimitTest {
                 r4.init("R4", 5000);
                 assertTrue(r4.dns("R3", 0) > 0);
             }
+        } catch (Exception | AssertionError e) {
+            throw new AssertionError("server output: " + server.stdoutSoFar() + server.stderr(), e);
+        } finally {
+            server.kill();
+        }
+    }
+
+    /**
+     * Robots with ever new names come, ask a port, send through it and leave, with the default
+     * port memory (600 s): their remembered ports would fill the descriptors after about 200
+     * robots. None is refused: the remembered ports of the robots gone longest are given back.
+     */
+    @Test
+    void rememberedPortsNeverCostARobotThatIsHereItsPort() throws Exception {
+        Path config = dir.resolve("wss.properties");
+        Files.writeString(config, "wss.port = 0\nwss.bindAddress = 127.0.0.1\n", StandardCharsets.UTF_8);
+        ServerProcess server = ServerProcess.startWithDescriptorLimit(LIMIT, "--headless", "--config", config.toString());
+        int robots = 2 * LIMIT;
+        try {
+            int port = Integer.parseInt(server.awaitListening().group(1));
+            try (TestRobot base = new TestRobot(port, "127.0.0.1")) {
+                ServerSocket baseAccepts = base.initAccepting("Base");
+                for (int i = 0; i < robots; i++) {
+                    try (TestRobot robot = new TestRobot(port, "127.0.0.1")) {
+                        robot.init("Fresh" + i, 5000);
+                        try (Socket data = robot.connect(robot.dns("Base", 0)); Socket arrived = baseAccepts.accept()) {
+                            Sockets.send(data, "robot " + i + "\n");
+                            assertEquals("robot " + i + "\n", Sockets.readLine(arrived), "through Fresh" + i + "'s port");
+                        }
+                    }
+                }
+                assertEquals("SS {Robot Fresh0} {Strength NaN} {Error Robot.Does.Not.Exist}", base.ask("GETSS {Robot Fresh0}"),
+                        "Base's control connection goes on");
+            }
+            server.awaitLine(line -> line.contains("descriptors ran short: gave back "));
         } catch (Exception | AssertionError e) {
             throw new AssertionError("server output: " + server.stdoutSoFar() + server.stderr(), e);
         } finally {

@@ -16,7 +16,7 @@ import java.util.stream.Stream;
 record ProcessStats(int threads, int serverThreads, int descriptors, long residentKiB) {
 
     /** How the server names its threads (a thread's name in /proc is cut at 15 characters). */
-    private static final List<String> SERVER_THREADS = List.of("link ", "wss-port ", "control ", "wss-control");
+    private static final List<String> SERVER_THREADS = List.of("link ", "wss-port", "control ", "wss-control");
 
     static ProcessStats of(long pid) throws IOException {
         Path process = Path.of("/proc", Long.toString(pid));
@@ -92,6 +92,11 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
             }
         }
         return total;
+    }
+
+    /** The process's CPU time so far (user and system), in seconds. */
+    static double cpuSeconds(long pid) throws IOException {
+        return cpuNanos(pid) / 1e9;
     }
 
     private static String comm(Path task) {

@@ -38,7 +38,11 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  *
  * <pre>
  * xvfb-run -a java -cp target/classes:target/test-classes org.usarsim.wss.bench.WindowBenchmark [--seconds 30] [--robots 200]
+ * xvfb-run -a java -cp target/classes:target/test-classes org.usarsim.wss.bench.WindowBenchmark --mesh 100 [--seconds 30]
  * </pre>
+ *
+ * <p>With {@code --mesh n}: n robots in full mesh, and the ports table sorted and filtered while
+ * the probe runs ({@link #meshInTheWindow}).
  */
 public final class WindowBenchmark {
 
@@ -50,24 +54,25 @@ public final class WindowBenchmark {
         int seconds = 30;
         int robots = 200;
         int runs = 1;
+        int mesh = 0;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
                 case "--robots" -> robots = Integer.parseInt(args[++i]);
                 case "--runs" -> runs = Integer.parseInt(args[++i]);
+                case "--mesh" -> mesh = Integer.parseInt(args[++i]);
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
+        }
+        if (mesh > 0) {
+            quietLog();
+            meshInTheWindow(mesh, seconds);
+            System.exit(0);
         }
         System.out.printf("WSS window benchmark: %d cores, %s, %d robots, %d s each run, %s%n",
                 Runtime.getRuntime().availableProcessors(), System.getProperty("java.vm.name") + " " + System.getProperty("java.version"),
                 robots, seconds, java.time.LocalDateTime.now());
-        // The server's log as headless mode writes it (to standard output; here to nowhere), in both runs.
-        java.util.logging.Logger root = java.util.logging.Logger.getLogger("");
-        for (java.util.logging.Handler handler : root.getHandlers()) {
-            root.removeHandler(handler);
-        }
-        root.addHandler(new java.util.logging.StreamHandler(OutputStream.nullOutputStream(), new java.util.logging.SimpleFormatter()));
-        root.setLevel(java.util.logging.Level.INFO);
+        quietLog();
         // Alternating, so that neither always runs on a warmer JVM or a busier machine.
         List<Double> headless = new ArrayList<>();
         List<Double> window = new ArrayList<>();
@@ -83,6 +88,127 @@ public final class WindowBenchmark {
         System.out.printf(Locale.ROOT, "%nconnections per second, median of %d runs: headless %.0f, window open %.0f (window/headless %.2f)%n",
                 runs, median(headless), median(window), median(window) / median(headless));
         System.exit(0);
+    }
+
+    /** The server's log as headless mode writes it (to standard output; here to nowhere). */
+    private static void quietLog() {
+        java.util.logging.Logger root = java.util.logging.Logger.getLogger("");
+        for (java.util.logging.Handler handler : root.getHandlers()) {
+            root.removeHandler(handler);
+        }
+        root.addHandler(new java.util.logging.StreamHandler(OutputStream.nullOutputStream(), new java.util.logging.SimpleFormatter()));
+        root.setLevel(java.util.logging.Level.INFO);
+    }
+
+    /**
+     * The window with robots in full mesh (issue 18): n robots register and every one asks DNS
+     * for every other, so the ports table holds n(n-1) rows and the statistics table n(n-1)/2;
+     * then, for the given time, the ports table is sorted by each column in turn (both ways) and
+     * filtered (a pattern typed, then cleared) every 250 ms, as a person would, while a probe
+     * measures the event thread's round trip.
+     */
+    private static void meshInTheWindow(int robots, int seconds) throws Exception {
+        Preferences preferences = Preferences.userRoot().node("wss-bench-" + System.nanoTime());
+        WindowLog windowLog = new WindowLog();
+        java.util.logging.Logger.getLogger("").addHandler(windowLog);
+        HubServers servers = new HubServers(config().withMaxPortsPerAddress(Math.max(HubConfig.MAX_PORTS_PER_ADDRESS, robots * (robots - 1))));
+        List<Hub> hubs = servers.hubs();
+        CountDownLatch closed = new CountDownLatch(1);
+        MainWindow[] window = new MainWindow[1];
+        SwingUtilities.invokeAndWait(() -> window[0] = MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new)),
+                new WindowPreferences(preferences), new ModelPreferences(preferences.node("models")), windowLog,
+                new Launch("0", null, false, null, true), closed::countDown));
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+        while (hubs.isEmpty() && System.nanoTime() < deadline) {
+            Thread.sleep(10);
+        }
+        Hub hub = hubs.get(0);
+        Probe forming = new Probe();
+        forming.start();
+        for (int i = 0; i < robots; i++) {
+            REGISTERED.add(new ControlClient(hub.controlPort(), "R" + i, 5000));
+        }
+        long start = System.nanoTime();
+        List<Thread> asking = new ArrayList<>();
+        for (int i = 0; i < robots; i++) {
+            ControlClient client = REGISTERED.get(i);
+            int from = i;
+            Thread thread = new Thread(() -> {
+                for (int to = 0; to < robots; to++) {
+                    if (to != from) {
+                        try {
+                            client.dns("R" + to);
+                        } catch (IOException e) {
+                            System.out.println("  DNS refused: " + e.getMessage());
+                        }
+                    }
+                }
+            });
+            thread.start();
+            asking.add(thread);
+        }
+        for (Thread thread : asking) {
+            thread.join();
+        }
+        int ports = robots * (robots - 1);
+        JTable table = onEdt(() -> find(window[0].frame().getContentPane(), "ports"));
+        while (onEdt(() -> table.getModel().getRowCount()) < ports) {
+            Thread.sleep(20);
+        }
+        forming.stop();
+        System.out.printf(Locale.ROOT, "%n%d robots, %d DNS in the window's hub, the table showing all %d ports %.1f s after the first DNS%n",
+                robots, ports, ports, (System.nanoTime() - start) / 1e9);
+        System.out.println("  event thread while the mesh formed: " + forming.summary());
+
+        javax.swing.JTextField filter = onEdt(() -> findField(window[0].frame().getContentPane(), "portsFilter"));
+        List<String> patterns = List.of("R1*", "R4? R7", "R9* R1?", "r5 r");
+        Probe probe = new Probe();
+        List<Long> sortMs = new ArrayList<>();
+        List<Long> filterMs = new ArrayList<>();
+        probe.start();
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        int round = 0;
+        while (System.nanoTime() < end) {
+            int column = round % table.getColumnCount();
+            long sortStart = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> table.getRowSorter().toggleSortOrder(column));
+            sortMs.add((System.nanoTime() - sortStart) / 1_000_000);
+            Thread.sleep(250);
+            String pattern = round % 2 == 0 ? patterns.get(round / 2 % patterns.size()) : "";
+            long filterStart = System.nanoTime();
+            SwingUtilities.invokeAndWait(() -> filter.setText(pattern));
+            filterMs.add((System.nanoTime() - filterStart) / 1_000_000);
+            Thread.sleep(250);
+            round++;
+        }
+        probe.stop();
+        int shown = onEdt(() -> table.getRowCount());
+        System.out.printf(Locale.ROOT, "  %d sorts (ms: median %d, max %d) and %d filters (ms: median %d, max %d) of the %d ports in %d s;"
+                + " %d rows shown at the end%n", sortMs.size(), sortMs.stream().sorted().toList().get(sortMs.size() / 2),
+                sortMs.stream().mapToLong(Long::longValue).max().orElse(0), filterMs.size(),
+                filterMs.stream().sorted().toList().get(filterMs.size() / 2), filterMs.stream().mapToLong(Long::longValue).max().orElse(0),
+                ports, seconds, shown);
+        System.out.println("  event thread meanwhile: " + probe.summary());
+        closeRobots();
+        SwingUtilities.invokeLater(() -> window[0].frame().dispatchEvent(
+                new java.awt.event.WindowEvent(window[0].frame(), java.awt.event.WindowEvent.WINDOW_CLOSING)));
+        closed.await(10, TimeUnit.SECONDS);
+        preferences.removeNode();
+    }
+
+    private static javax.swing.JTextField findField(java.awt.Container container, String name) {
+        for (java.awt.Component child : container.getComponents()) {
+            if (child instanceof javax.swing.JTextField field && name.equals(field.getName())) {
+                return field;
+            }
+            if (child instanceof java.awt.Container inner) {
+                javax.swing.JTextField found = findField(inner, name);
+                if (found != null) {
+                    return found;
+                }
+            }
+        }
+        return null;
     }
 
     private static double median(List<Double> values) {

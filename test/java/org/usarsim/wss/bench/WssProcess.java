@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collections;
 import java.util.List;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
@@ -21,10 +22,20 @@ final class WssProcess implements AutoCloseable {
 
     final Process process;
     final int controlPort;
+    /** Every line the server wrote so far. */
+    private final List<String> lines;
 
-    private WssProcess(Process process, int controlPort) {
+    private WssProcess(Process process, int controlPort, List<String> lines) {
         this.process = process;
         this.controlPort = controlPort;
+        this.lines = lines;
+    }
+
+    /** How many lines the server wrote so far that contain the text. */
+    long linesContaining(String text) {
+        synchronized (lines) {
+            return lines.stream().filter(line -> line.contains(text)).count();
+        }
     }
 
     /** Starts the server from the compiled classes with these extra properties. */
@@ -35,19 +46,36 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from another build (a wss.jar, or a classes folder) with these extra properties. */
     static WssProcess startFrom(String classpath, String... properties) throws IOException, InterruptedException {
+        return start(classpath, 0, properties);
+    }
+
+    /** Starts the server from the compiled classes under {@code ulimit -n descriptors}, with these extra properties. */
+    static WssProcess startWithDescriptorLimit(int descriptors, String... properties) throws IOException, InterruptedException {
+        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
+        return start(classes, descriptors, properties);
+    }
+
+    /** @param descriptors the process's limit of open descriptors; 0 keeps the shell's */
+    static WssProcess start(String classpath, int descriptors, String... properties) throws IOException, InterruptedException {
         Path config = Files.createTempFile("wss-bench", ".properties");
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));
         Files.write(config, lines);
-        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classpath, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString())
-                .redirectErrorStream(true).start();
+        List<String> command = new ArrayList<>();
+        if (descriptors > 0) {
+            command.addAll(List.of("bash", "-c", "ulimit -n " + descriptors + " && exec \"$@\"", "bash"));
+        }
+        command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", classpath, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString()));
+        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
+        List<String> all = Collections.synchronizedList(new ArrayList<>());
         Thread reader = new Thread(() -> {
             try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = in.readLine()) != null) {
                     out.add(line);
+                    all.add(line);
                     if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
                         System.err.println("  [wss] " + line);
                     }
@@ -64,7 +92,7 @@ final class WssProcess implements AutoCloseable {
             if (line != null) {
                 Matcher matcher = LISTENING.matcher(line);
                 if (matcher.find()) {
-                    return new WssProcess(process, Integer.parseInt(matcher.group(1)));
+                    return new WssProcess(process, Integer.parseInt(matcher.group(1)), all);
                 }
             }
             if (!process.isAlive()) {

@@ -2,7 +2,7 @@ package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.usarsim.wss.hub.Sockets.portThreads;
+import static org.usarsim.wss.hub.Sockets.listeningSockets;
 
 import java.io.IOException;
 import java.io.InputStream;
@@ -168,8 +168,8 @@ class BreakResumeStormTest {
             long threadsAfter = Wait.settle("the server's threads return to their level", BreakResumeStormTest::serverThreads,
                     n -> n <= threadsBefore);
             assertTrue(threadsAfter <= threadsBefore, "server threads before " + threadsBefore + ", after " + threadsAfter);
-            assertEquals(1, portThreads(toR1), "one accepting thread for R2 -> R1");
-            assertEquals(1, portThreads(toR2), "one accepting thread for R1 -> R2");
+            assertEquals(1, listeningSockets(toR1), "one listening socket for R2 -> R1");
+            assertEquals(1, listeningSockets(toR2), "one listening socket for R1 -> R2");
             long descriptorsAfter = Wait.settle("descriptors return to their level", Sockets::openDescriptors,
                     n -> n <= descriptorsBefore);
             assertTrue(descriptorsAfter <= descriptorsBefore + 2,
@@ -278,9 +278,9 @@ class BreakResumeStormTest {
     }
 
 
-    /** The server's own threads: links, WSS port listeners, control connections. */
+    /** The server's own threads: links, the WSS ports' selector and hand-over, control connections. */
     private static long serverThreads() {
         return Thread.getAllStackTraces().keySet().stream().map(Thread::getName)
-                .filter(n -> n.startsWith("link ") || n.startsWith("wss-port ") || n.startsWith("control ")).count();
+                .filter(n -> n.startsWith("link ") || n.startsWith("wss-port-accept") || n.startsWith("wss-port-handover") || n.startsWith("control ")).count();
     }
 }

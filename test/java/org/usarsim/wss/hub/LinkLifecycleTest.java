@@ -3,7 +3,7 @@ package org.usarsim.wss.hub;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
 import static org.usarsim.wss.hub.Sockets.linkThreads;
-import static org.usarsim.wss.hub.Sockets.portThreads;
+import static org.usarsim.wss.hub.Sockets.listeningSockets;
 import static org.usarsim.wss.hub.Sockets.randomBytes;
 import static org.usarsim.wss.hub.Sockets.readExactly;
 import static org.usarsim.wss.hub.Sockets.readExactlyBytes;
@@ -236,7 +236,7 @@ class LinkLifecycleTest {
         assertGreeted(r1, r2, r2ToR1First, r2ToR1Second, r1ToR2, "after the race");
         assertFalse(links.resumeConnectionsForPair("R1", "R2"), "after the race nothing is left to resume");
         for (int port : new int[] {r2ToR1First, r2ToR1Second, r1ToR2}) {
-            Wait.until("one accepting thread for WSS port " + port, () -> portThreads(port) == 1);
+            Wait.until("one listening socket on WSS port " + port, () -> listeningSockets(port) == 1);
         }
     }
 
@@ -610,7 +610,7 @@ class LinkLifecycleTest {
         shortConnection(r2, port, r1Accepts, 300);
 
         Wait.until("every link thread ended", () -> linkThreads() == 0);
-        Wait.until("one accepting thread for the WSS port", () -> portThreads(port) == 1);
+        Wait.until("one listening socket on the WSS port", () -> listeningSockets(port) == 1);
         long after = Wait.settle("descriptors return to their level", Sockets::openDescriptors,
                 n -> n <= before + 5);
         assertTrue(after <= before + 5, "open descriptors before " + before + ", after " + after);

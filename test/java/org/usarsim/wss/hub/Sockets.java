@@ -89,10 +89,26 @@ public final class Sockets {
         assertEquals(-1, read, what + ": end of stream");
     }
 
-    /** Threads accepting on a WSS port. */
-    public static long portThreads(int port) {
-        String name = "wss-port " + port;
-        return Thread.getAllStackTraces().keySet().stream().filter(t -> t.getName().equals(name)).count();
+    /**
+     * Sockets listening on the port number, in this process's network namespace (/proc/net/tcp and
+     * tcp6, state 0A): a WSS port that listens has exactly one.
+     */
+    public static long listeningSockets(int port) {
+        String local = String.format(":%04X ", port);
+        long count = 0;
+        for (String table : List.of("/proc/net/tcp", "/proc/net/tcp6")) {
+            try {
+                for (String line : Files.readAllLines(Path.of(table))) {
+                    String[] fields = line.trim().split("\\s+");
+                    if (fields.length > 3 && (fields[1] + " ").endsWith(local) && fields[3].equals("0A")) {
+                        count++;
+                    }
+                }
+            } catch (IOException e) {
+                throw new AssertionError("cannot read " + table, e);
+            }
+        }
+        return count;
     }
 
     /** This process's open descriptors. */

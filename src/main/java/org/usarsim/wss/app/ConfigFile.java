@@ -73,6 +73,8 @@ public final class ConfigFile {
                     .help("How long the WSS ports of a robot that left keep their numbers"),
             Setting.integer("wss.maxPortsPerRobot", "WSS ports per robot", 1000).from(1).to(1_000_000)
                     .help("The most WSS ports one robot may hold as source"),
+            Setting.integer("wss.maxPortsPerAddress", "WSS ports per address", HubConfig.MAX_PORTS_PER_ADDRESS).from(1).to(10_000_000)
+                    .help("The most WSS ports the robots registered from one IP address may hold as source, together"),
             Setting.integer("wss.deadPeerSeconds", "Dead peer detection", 30).from(0).to(86400).unit("s")
                     .note("0: the OS's keepalive")
                     .help("Within how long keepalive finds a robot whose machine vanished"),
@@ -285,7 +287,8 @@ public final class ConfigFile {
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
                     Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
                     Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
-                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins());
+                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins())
+                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")));
         } catch (UnknownHostException | ConfigFileException e) {
             throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.* and wss.shaping.* were checked", e);
         }

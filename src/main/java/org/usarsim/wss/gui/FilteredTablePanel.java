@@ -32,7 +32,7 @@ class FilteredTablePanel<T> extends JPanel {
         table = new JTable(model);
         table.setName(name);
         table.setFillsViewportHeight(true);
-        TableRowSorter<TableModel> sorter = new TableRowSorter<>(model);
+        TableRowSorter<TableModel> sorter = model.sorter();
         table.setRowSorter(sorter);
         JTextField filter = new JTextField();
         filter.setName(name + "Filter");

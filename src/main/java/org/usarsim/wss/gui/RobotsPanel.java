@@ -26,7 +26,7 @@ final class RobotsPanel extends JPanel {
         super(new BorderLayout(0, 4));
         JTable table = new JTable(model);
         table.setName("robots");
-        table.setAutoCreateRowSorter(true);
+        table.setRowSorter(model.sorter());
         table.setFillsViewportHeight(true);
         add(new JLabel("Connected Robots"), BorderLayout.NORTH);
         add(new JScrollPane(table), BorderLayout.CENTER);

@@ -3,6 +3,8 @@ package org.usarsim.wss.gui;
 import java.util.List;
 import java.util.function.Function;
 import javax.swing.table.AbstractTableModel;
+import javax.swing.table.TableModel;
+import javax.swing.table.TableRowSorter;
 
 /** A table of immutable rows, replaced as a whole from the read model; only a real change repaints. */
 final class RowsModel<T> extends AbstractTableModel {
@@ -24,6 +26,17 @@ final class RowsModel<T> extends AbstractTableModel {
             rows = List.copyOf(newRows);
             fireTableDataChanged();
         }
+    }
+
+    /** A sorter of this table: text columns in {@link NameOrder}, the others by their values. */
+    TableRowSorter<TableModel> sorter() {
+        TableRowSorter<TableModel> sorter = new TableRowSorter<>(this);
+        for (int column = 0; column < columns.size(); column++) {
+            if (columns.get(column).type() == String.class) {
+                sorter.setComparator(column, NameOrder.INSTANCE);
+            }
+        }
+        return sorter;
     }
 
     /** The row at this index of the model (not of a sorted or filtered view). */

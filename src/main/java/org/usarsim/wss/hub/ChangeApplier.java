@@ -8,6 +8,9 @@ import java.util.Map;
 import org.usarsim.wss.hub.core.Changes;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.core.WssPort;
+import org.usarsim.wss.hub.tcp.Closes;
+import org.usarsim.wss.hub.tcp.Descriptors;
+import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.hub.tcp.Switchboard;
 
@@ -15,8 +18,9 @@ import org.usarsim.wss.hub.tcp.Switchboard;
  * Applies what a step of the core decided: under the hub's lock the step's events are numbered
  * in the {@link Outbox} and its port work resolved to the ports' sockets and given a turn
  * ({@link #taken}); after the lock the socket work is done in the order of the turns, the port
- * memory's timers set, and the events delivered ({@link #apply}). Holds the sockets of each port
- * the core holds (guarded by the hub's lock).
+ * memory's timers set, and the events delivered ({@link #apply}). The listening sockets a step
+ * stops are handed to the {@link PortSelector}'s thread together and waited for once
+ * ({@link Closes}). Holds the sockets of each port the core holds (guarded by the hub's lock).
  */
 final class ChangeApplier {
 
@@ -37,19 +41,41 @@ final class ChangeApplier {
     private final ForgetTimer forgetTimer;
     private final Switchboard switchboard;
     private final ListenFailure listenFailure;
+    private final PortSelector selector;
     private final SocketTurns turns = new SocketTurns();
     private final Map<WssPort, PortSockets> sockets = new HashMap<>();
+    /** Ports allocated by the step being taken that do not listen: their sockets, bound listening, stop in its turn. */
+    private final List<PortTask> settling = new ArrayList<>();
+    /** Ports allocated by the step being taken that listen already: their LISTEN is done. */
+    private final java.util.Set<WssPort> listenedNow = new java.util.HashSet<>();
 
-    ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Switchboard switchboard, ListenFailure listenFailure) {
+    ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Switchboard switchboard, PortSelector selector,
+            ListenFailure listenFailure) {
         this.outbox = outbox;
         this.forgetTimer = forgetTimer;
         this.switchboard = switchboard;
+        this.selector = selector;
         this.listenFailure = listenFailure;
     }
 
-    /** Under the hub's lock: the sockets of a port the core just allocated. */
-    void put(WssPort port, PortSockets portSockets) {
+    /**
+     * Under the hub's lock, before the step is {@link #taken}: the sockets of a port the core just
+     * allocated, bound listening by the DNS. A port allocated listening starts accepting at once:
+     * its socket only joins the selector (a queue and a wake-up, no I/O on the socket), nothing of
+     * an earlier step can concern a port that did not exist, and every later step comes after; so
+     * a DNS takes no turn (a mesh forming takes 9,900 in a row). A port allocated not listening
+     * stops in the step's turn.
+     *
+     * @throws IOException when the port cannot start accepting: the core must be told it does not listen
+     */
+    void put(WssPort port, PortSockets portSockets) throws IOException {
         sockets.put(port, portSockets);
+        if (!port.listening()) {
+            settling.add(new PortTask(new Changes.PortAction(Changes.PortWork.STOP, port, port.epoch()), portSockets));
+            return;
+        }
+        listenedNow.add(port);
+        portSockets.listen(port.epoch(), null);
     }
 
     /** Under the hub's lock: the port's sockets, or null. */
@@ -59,19 +85,43 @@ final class ChangeApplier {
 
     /** Under the hub's lock: the step's events are numbered in the outbox, its port work resolved and given a turn. */
     Applying taken(Changes out) {
-        outbox.append(out.events());
-        if (!out.hasSocketWork()) {
-            return new Applying(out, List.of(), 0);
+        List<PortTask> tasks = resolved(out);
+        if (tasks.isEmpty() && !out.hasSocketWork()) {
+            return new Applying(out, tasks, 0);
         }
-        List<PortTask> tasks = new ArrayList<>();
+        return new Applying(out, tasks, turns.take(() -> socketWork(out, tasks)));
+    }
+
+    /**
+     * Under the hub's lock, for a step that only gives ports back (descriptors ran short): no turn.
+     * A port given back is done with: whatever work of earlier steps is still to come for it does
+     * nothing ({@link PortSockets}), so its release need not wait for them, and may be applied from
+     * inside another step's turn.
+     */
+    Applying takenOutOfTurn(Changes out) {
+        if (out.portActions().stream().anyMatch(action -> action.work() != Changes.PortWork.RELEASE) || !out.closes().isEmpty()
+                || !out.sessionsToClose().isEmpty()) {
+            throw new IllegalStateException("only releases are applied out of turn");
+        }
+        return new Applying(out, resolved(out), 0);
+    }
+
+    private List<PortTask> resolved(Changes out) {
+        outbox.append(out.events());
+        List<PortTask> tasks = new ArrayList<>(settling);
+        settling.clear();
         for (Changes.PortAction action : out.portActions()) {
+            if (action.work() == Changes.PortWork.LISTEN && listenedNow.contains(action.port())) {
+                continue;
+            }
             PortSockets portSockets = action.work() == Changes.PortWork.RELEASE ? sockets.remove(action.port())
                     : sockets.get(action.port());
             if (portSockets != null) {
                 tasks.add(new PortTask(action, portSockets));
             }
         }
-        return new Applying(out, tasks, turns.take());
+        listenedNow.clear();
+        return tasks;
     }
 
     /**
@@ -82,31 +132,67 @@ final class ChangeApplier {
     void apply(Applying applying) {
         Changes changes = applying.changes();
         if (applying.turn() > 0) {
-            turns.await(applying.turn());
-            try {
-                applying.portTasks().forEach(this::portWork);
-                changes.closes().forEach(close -> close.link().close(close.reason()));
-                changes.sessionsToClose().forEach(RobotSession::close);
-            } finally {
-                turns.done(applying.turn());
-            }
+            turns.complete(applying.turn());
         }
         changes.forgetLater().forEach(later -> forgetTimer.schedule(later.robot(), later.afterNs()));
         outbox.deliver();
     }
 
-    private void portWork(PortTask task) {
+    /** A step's socket work, in its turn (on whichever thread does the turns then). */
+    private void socketWork(Changes changes, List<PortTask> tasks) {
+        Closes closes = selector.closes();
+        tasks.forEach(task -> portWork(task, closes));
+        closes.await(); // every port this step stopped refuses connections now
+        changes.closes().forEach(close -> close.link().close(close.reason()));
+        changes.sessionsToClose().forEach(RobotSession::close);
+    }
+
+    /**
+     * After the lock, from any thread, inside another step's turn too: gives the ports back
+     * ({@link #takenOutOfTurn}). The events are delivered unless this thread is in a turn, where
+     * a listener's own change would wait for that very turn: the turn's step delivers them.
+     */
+    void applyOutOfTurn(Applying applying) {
+        Closes closes = selector.closes();
+        applying.portTasks().forEach(task -> task.sockets().release(closes));
+        closes.await();
+        if (!turns.heldByCurrentThread()) {
+            outbox.deliver();
+        }
+    }
+
+    /**
+     * One port's work. Not a switch on the enum: that compiles to a class of its own, loaded at its
+     * first use, and the first stop may come when descriptors have run out (loading a class from a
+     * directory of classes takes one).
+     */
+    private void portWork(PortTask task, Closes closes) {
+        Changes.PortWork work = task.action().work();
+        if (work == Changes.PortWork.LISTEN) {
+            listen(task, closes); // a port stopped earlier in the step is closed before it listens again (PortSockets)
+        } else if (work == Changes.PortWork.STOP) {
+            task.sockets().stop(closes);
+        } else {
+            task.sockets().release(closes);
+        }
+    }
+
+    /** Out of descriptors, remembered ports of robots that left give theirs back and it is tried once more. */
+    private void listen(PortTask task, Closes closes) {
         Changes.PortAction action = task.action();
-        switch (action.work()) {
-            case LISTEN -> {
+        try {
+            task.sockets().listen(action.epoch(), closes);
+        } catch (IOException e) {
+            if (Descriptors.ranOut(e) && switchboard.descriptorsShort()) {
                 try {
-                    task.sockets().listen(switchboard, action.epoch());
-                } catch (IOException e) {
-                    listenFailure.failed(action, e);
+                    task.sockets().listen(action.epoch(), closes);
+                    return;
+                } catch (IOException again) {
+                    listenFailure.failed(action, again);
+                    return;
                 }
             }
-            case STOP -> task.sockets().stopListening();
-            case RELEASE -> task.sockets().release();
+            listenFailure.failed(action, e);
         }
     }
 }

@@ -6,10 +6,12 @@ import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.OptionalDouble;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
@@ -27,10 +29,13 @@ import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.hub.tcp.ControlListener;
+import org.usarsim.wss.hub.tcp.Closes;
 import org.usarsim.wss.hub.tcp.ControlSession;
+import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
 import org.usarsim.wss.hub.tcp.PortListener;
+import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.hub.tcp.Shaping;
 import org.usarsim.wss.hub.tcp.SocketBuffers;
@@ -60,6 +65,20 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
     /** How long a departure waits for its ports to hand over the connections already completed. */
     private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
+    /**
+     * How many remembered ports of robots that left are given back, at least, each time
+     * descriptors run short: room for a few robots' arrivals and connections before the next time.
+     */
+    private static final int GIVE_BACK_AT_LEAST = 64;
+
+    static {
+        // Loaded now, while a descriptor is free: they are used when descriptors have run out
+        // (to say so, and to give some back), and loading a class from a directory of classes takes one.
+        Descriptors.ranOut(new IOException());
+        HubEvent.class.getPermittedSubclasses();
+        WarningLimiter.class.getDeclaredClasses();
+        Changes.class.getDeclaredClasses();
+    }
 
     private final HubConfig config;
     private final PropagationModel model;
@@ -74,6 +93,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     private final Outbox outbox;
     private final ForgetTimer forgetTimer = new ForgetTimer(this::forgetIfGone);
     private final ChangeApplier applier;
+    /** Every listening WSS port, on one thread. */
+    private final PortSelector portSelector;
     private final KeepAlive keepAlive;
     /** The robots' radios, when links are shaped (docs/shaping.md). */
     private final Airtime airtime;
@@ -96,25 +117,14 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         this.outbox = new Outbox(events);
         this.socketBuffers = SocketBuffers.of(config.socketBuffer());
         this.core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot(),
-                config.shaping());
+                config.maxPortsPerAddress(), config.shaping());
         this.airtime = config.shaping().airtime() ? Airtime.shared() : Airtime.unshared();
         this.sampler = config.shaping().on() ? new Sampler(this::measure) : null;
         this.keepAlive = KeepAlive.within(config.deadPeerSeconds());
-        this.applier = new ChangeApplier(outbox, forgetTimer, this,
+        this.portSelector = new PortSelector(this);
+        this.applier = new ChangeApplier(outbox, forgetTimer, this, portSelector,
                 (action, e) -> step(out -> core.couldNotListen(action.port(), action.epoch(), e.getMessage(), out)));
         events.add(new EventLogger(warnings));
-        loadFailurePaths();
-    }
-
-    /**
-     * Loads the classes the hub needs when something fails, before anything can: out of
-     * descriptors, a class read from a folder (the tests' class path) cannot be loaded, and the
-     * session that met the failure would die of it instead of answering Could.Not.Allocate.Port.
-     */
-    private static void loadFailurePaths() {
-        HubEvent.class.getPermittedSubclasses();
-        WarningLimiter.class.getDeclaredClasses();
-        Changes.class.getDeclaredClasses();
     }
 
     public void addListener(WssEventListener listener) {
@@ -182,6 +192,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             sampler.close();
         }
         step(core::close);
+        portSelector.close();
         warnings.close();
         LOG.info("WSS stopped");
     }
@@ -274,6 +285,12 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
         long deadline = System.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
+        // Drained, they stop now, together: once the robot is gone, a connect to them is refused. The
+        // departure's step stops them in its turn too (nothing left to do then); stopping is the
+        // same whenever it is done, and a port that listens again later is a new listening.
+        Closes closes = portSelector.closes();
+        toDrain.forEach(sockets -> sockets.stop(closes));
+        closes.await();
         step(out -> {
             core.left(name, session, clock.getAsLong(), out);
             lock.notifyAll();
@@ -299,6 +316,8 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
      * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
      * first). A new port's number and its listening socket are bound first, without the lock,
      * then allocated under it: a port that cannot listen is not allocated (Could.Not.Allocate.Port).
+     * The socket is bound before the hub knows whether the port is new, so that a new port (every
+     * DNS of a mesh forming) takes the lock once; a DNS of a port that exists closes it unused.
      * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
      */
     @Override
@@ -311,26 +330,44 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
             Map<OrderedPair, Measurement> measurements = answers.measure(List.of(RobotPair.of(from, to)));
             step(out -> core.measured(measurements, out));
         }
-        HubCore.DnsResult result = dns(from, to, targetPort, allowed, null, null);
+        ServerSocketChannel ahead;
+        try {
+            portSelector.start(); // once: not under the lock, where a new port joins it
+            ahead = PortSockets.bindNew(config.bindAddress());
+        } catch (IOException e) {
+            ahead = null; // out of descriptors, say: asked again below if the port is new
+        }
+        HubCore.DnsResult result = dns(from, to, targetPort, allowed, ahead);
+        if (!result.numberUsed()) {
+            Closing.quietly(ahead); // the port exists, or the DNS is refused
+        }
         if (result.outcome() != HubCore.DnsOutcome.NEEDS_NUMBER) {
             return result;
         }
-        SocketChannel placeholder = null;
-        ServerSocketChannel listening;
+        ServerSocketChannel bound;
         try {
-            placeholder = PortSockets.hold(config.bindAddress());
-            listening = PortSockets.bindListening(config.bindAddress(), PortSockets.numberOf(placeholder));
+            bound = bindNewPort();
         } catch (IOException e) {
-            Closing.quietly(placeholder);
             step(out -> core.couldNotAllocate(result.key(), e.getMessage(), out));
             return new HubCore.DnsResult(HubCore.DnsOutcome.NO_PORT, -1, result.key(), false);
         }
-        HubCore.DnsResult allocated = dns(from, to, targetPort, allowed, placeholder, listening);
+        HubCore.DnsResult allocated = dns(from, to, targetPort, allowed, bound);
         if (!allocated.numberUsed()) {
-            Closing.quietly(listening); // another DNS allocated the port meanwhile, or the robots left
-            Closing.quietly(placeholder);
+            Closing.quietly(bound); // another DNS allocated the port meanwhile, or the robots left
         }
         return allocated;
+    }
+
+    /** A new port's listening socket; out of descriptors, remembered ports of robots that left give theirs back first. */
+    private ServerSocketChannel bindNewPort() throws IOException {
+        try {
+            return PortSockets.bindNew(config.bindAddress());
+        } catch (IOException e) {
+            if (Descriptors.ranOut(e) && descriptorsShort()) {
+                return PortSockets.bindNew(config.bindAddress());
+            }
+            throw e;
+        }
     }
 
     private boolean bothRegistered(String a, String b) {
@@ -339,17 +376,20 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         }
     }
 
-    private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, SocketChannel placeholder,
-            ServerSocketChannel listening) {
+    private HubCore.DnsResult dns(String from, String to, int targetPort, boolean allowed, ServerSocketChannel bound) {
         Changes out = new Changes();
         HubCore.DnsResult result;
         ChangeApplier.Applying applying;
         synchronized (lock) {
-            int number = placeholder == null ? -1 : PortSockets.numberOf(placeholder);
+            int number = bound == null ? -1 : PortSockets.numberOf(bound);
             result = core.dns(from, to, targetPort, allowed, number, clock.getAsLong(), out);
             if (result.numberUsed()) {
                 WssPort port = core.port(result.key());
-                applier.put(port, PortSockets.adopt(port, config.bindAddress(), placeholder, listening));
+                try {
+                    applier.put(port, PortSockets.adopt(port, config.bindAddress(), portSelector, bound));
+                } catch (IOException e) {
+                    core.couldNotListen(port, port.epoch(), e.getMessage(), out);
+                }
             }
             applying = applier.taken(out);
         }
@@ -390,9 +430,7 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         }
         Link link;
         try {
-            Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock) : null;
-            link = new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(),
-                    shaping);
+            link = newLink(port, socket, admission);
         } catch (IOException e) {
             warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
@@ -419,6 +457,21 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         }
     }
 
+    /** The link's sockets; out of descriptors, remembered ports of robots that left give theirs back first. */
+    private Link newLink(WssPort port, SocketChannel socket, HubCore.Admission admission) throws IOException {
+        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock) : null;
+        try {
+            return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(),
+                    shaping);
+        } catch (IOException e) {
+            if (Descriptors.ranOut(e) && descriptorsShort()) {
+                return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events,
+                        admission.stats(), shaping);
+            }
+            throw e;
+        }
+    }
+
     private void refuse(WssPort port, SocketChannel socket, InetAddress peer, String refusal) {
         warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
         Closing.quietly(socket);
@@ -436,6 +489,24 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     @Override
     public void linkEnded(Link link, boolean wasEstablished) {
         step(out -> core.linkEnded(link.port(), link, wasEstablished, clock.getAsLong(), out));
+    }
+
+    /**
+     * Descriptors ran short: remembered ports of robots that left are given back, the longest gone
+     * first, before anyone here is refused. Their sockets are closed at once, even from inside
+     * another step's turn (a port given back is done with).
+     */
+    @Override
+    public boolean descriptorsShort() {
+        Changes out = new Changes();
+        ChangeApplier.Applying applying;
+        int given;
+        synchronized (lock) {
+            given = core.giveBackRemembered(GIVE_BACK_AT_LEAST, clock.getAsLong(), out);
+            applying = applier.takenOutOfTurn(out);
+        }
+        applier.applyOutOfTurn(applying);
+        return given > 0;
     }
 
     @Override
@@ -468,6 +539,21 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         boolean[] changed = new boolean[1];
         step(out -> changed[0] = core.resumePair(pair, clock.getAsLong(), out));
         return changed[0];
+    }
+
+    /** Every pair's break or resume in one step: their ports stop (or listen again) together, in one turn. */
+    @Override
+    public Set<RobotPair> applyLinkStates(Map<RobotPair, Boolean> inRange) {
+        Set<RobotPair> changed = new LinkedHashSet<>();
+        step(out -> {
+            long now = clock.getAsLong();
+            inRange.forEach((pair, live) -> {
+                if (live ? core.resumePair(pair, now, out) : core.breakPair(pair, now, out)) {
+                    changed.add(pair);
+                }
+            });
+        });
+        return changed;
     }
 
     @Override

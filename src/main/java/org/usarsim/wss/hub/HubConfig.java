@@ -24,6 +24,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * @param portMemorySeconds  how long the WSS ports of a robot that left keep their numbers:
  *                           0 forgets them as it leaves, -1 never
  * @param maxPortsPerRobot   the most WSS ports one robot may hold as source
+ * @param maxPortsPerAddress the most WSS ports the robots registered from one address may hold as source, together
  * @param deadPeerSeconds    within how many seconds TCP keepalive finds a peer that vanished,
  *                           on control connections and links; 0 leaves keepalive to the OS
  * @param operators          the addresses whose control connections may use the operator command (FORCE)
@@ -32,8 +33,15 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * @param shaping            how links are shaped (wss.shaping and its keys, docs/shaping.md)
  */
 public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-        boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
+        boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int maxPortsPerAddress, int deadPeerSeconds,
         Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
+
+    /**
+     * wss.maxPortsPerAddress's default: a full mesh of 100 robots simulated on one computer asks
+     * for 9,900 WSS ports from its one address, and must fit; at one descriptor a port, 10,000 is
+     * half of a 20,000-descriptor limit, so one client cannot take them all.
+     */
+    public static final int MAX_PORTS_PER_ADDRESS = 10_000;
 
     /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
     private static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
@@ -53,12 +61,12 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
         Objects.requireNonNull(shaping, "shaping");
     }
 
-    /** Links not shaped, no rate pinned. */
+    /** Links not shaped, no rate pinned, wss.maxPortsPerAddress at its default. */
     public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
             boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
             Set<InetAddress> operators, Map<RobotPair, Force> forced) {
         this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, operators, forced, Map.of(), ShapingConfig.OFF);
+                maxPortsPerRobot, MAX_PORTS_PER_ADDRESS, deadPeerSeconds, operators, forced, Map.of(), ShapingConfig.OFF);
     }
 
     /** The operator at 127.0.0.1 only, and no pair forced. */
@@ -71,12 +79,18 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */
     public HubConfig withControlPort(int port) {
         return new HubConfig(bindAddress, port, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
+    }
+
+    /** The same, with another cap on the WSS ports of the robots of one address. */
+    public HubConfig withMaxPortsPerAddress(int ports) {
+        return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, ports, deadPeerSeconds, operators, forced, pins, shaping);
     }
 
     /** The same, with links shaped so (and these rates pinned from the start). */
     public HubConfig withShaping(ShapingConfig shaping, Map<RobotPair, RatePin> pins) {
         return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
     }
 }

@@ -16,7 +16,7 @@ import java.util.logging.Logger;
  * <ul>
  * <li>an accept that fails while the socket is open (out of descriptors, say) is reported by
  * {@link #acceptFailed}, and the loop tries again after {@link #PAUSE_MS}, so that clients can
- * connect again once it passes;</li>
+ * connect again once it passes (at once when {@link #acceptFailed} removed the cause);</li>
  * <li>a connection that {@link #serve} cannot take (its thread cannot start: an OutOfMemoryError
  * "unable to create native thread") is closed alone, with a WARNING, and the loop goes on;</li>
  * <li>a VirtualMachineError other than an OutOfMemoryError leaves the JVM in doubt: the socket
@@ -76,8 +76,13 @@ public abstract class AcceptLoop implements Runnable {
      */
     protected abstract void serve(SocketChannel connection);
 
-    /** Reports an accept that failed while the socket is open; the loop then pauses and tries again. */
-    protected abstract void acceptFailed(IOException e);
+    /**
+     * Reports an accept that failed while the socket is open, or removes its cause.
+     *
+     * @return true when the cause is gone (descriptors were given back): the loop tries again at
+     *         once; false: it pauses first
+     */
+    protected abstract boolean acceptFailed(IOException e);
 
     @Override
     public void run() {
@@ -89,8 +94,9 @@ public abstract class AcceptLoop implements Runnable {
                 if (!server.isOpen()) {
                     return;
                 }
-                acceptFailed(e);
-                pause();
+                if (!acceptFailed(e)) {
+                    pause();
+                }
                 continue;
             }
             try {

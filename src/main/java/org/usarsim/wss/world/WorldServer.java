@@ -145,9 +145,10 @@ public final class WorldServer implements AutoCloseable {
         }
 
         @Override
-        protected void acceptFailed(IOException e) {
+        protected boolean acceptFailed(IOException e) {
             // Out of descriptors, say: clients must still be able to connect once it passes.
             LOG.log(Level.SEVERE, "accepting a client failed, trying again: " + e, e);
+            return false;
         }
     }
 }

@@ -219,6 +219,74 @@ class HubCoreTest {
         assertEquals(new PairCondition(PairState.BROKEN, 0, 0), core.conditions().get(new OrderedPair("A", "B")));
     }
 
+    @Test
+    void theRobotsOfOneAddressHoldAtMostMaxPortsPerAddressTogetherAndThoseThatLeftDoNotCount() throws Exception {
+        HubCore capped = new HubCore("TestModel", true, 600, 1000, 3, ShapingConfig.OFF);
+        InetAddress swarm = InetAddress.getByName("10.0.0.1");
+        InetAddress other = InetAddress.getByName("10.0.0.2");
+        RobotSession s1 = () -> { };
+        RobotSession s2 = () -> { };
+        capped.register(new RegisteredRobot("S1", swarm, List.of(5000), s1), now, new Changes());
+        capped.register(new RegisteredRobot("S2", swarm, List.of(5000), s2), now, new Changes());
+        capped.register(new RegisteredRobot("T1", other, List.of(5000, 5001, 5002), () -> { }), now, new Changes());
+        capped.register(new RegisteredRobot("T2", other, List.of(5000), () -> { }), now, new Changes());
+        int number = 40001;
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5000, true, number++, now, new Changes()).outcome());
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, number++, now, new Changes()).outcome());
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S2", "T2", 0, true, number++, now, new Changes()).outcome());
+
+        Changes refused = new Changes();
+        assertEquals(HubCore.DnsOutcome.NO_PORT, capped.dns("S2", "T1", 0, true, number++, now, refused).outcome(),
+                "a fourth port from the swarm's address, by another name: answered as the robot cap is");
+        assertEquals(List.of(new HubEvent.Warned("DNS beyond the address limit", swarm, "the robots registered from 10.0.0.1 hold 3"
+                + " WSS ports as source, the most wss.maxPortsPerAddress allows; no new one for S2 -> T1:5000")), refused.events());
+        assertTrue(refused.portActions().isEmpty());
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, -1, now, new Changes()).outcome(),
+                "a port it holds is answered still");
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("T1", "S1", 0, true, number++, now, new Changes()).outcome(),
+                "another address is not affected");
+
+        capped.beginLeaving("S1", s1);
+        capped.left("S1", s1, now, new Changes());
+        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S2", "T1", 0, true, number, now, new Changes()).outcome(),
+                "the ports of a robot that left do not count against its address");
+    }
+
+    @Test
+    void whenDescriptorsRunShortTheRememberedPortsOfTheRobotGoneLongestAreGivenBackFirstAndNeverAPresentRobots() {
+        HubCore forever = new HubCore("TestModel", true, -1, 1000); // -1: never forgotten by time, still given back
+        RobotSession base = () -> { };
+        forever.register(robot("Base", base, 5000), now, new Changes());
+        List<String> gone = List.of("G1", "G2", "G3");
+        int number = 40001;
+        for (String name : gone) {
+            RobotSession session = () -> { };
+            forever.register(robot(name, session, 5000), now, new Changes());
+            forever.dns(name, "Base", 0, true, number++, now, new Changes());
+            forever.dns("Base", name, 0, true, number++, now, new Changes());
+            forever.beginLeaving(name, session);
+            Changes left = new Changes();
+            forever.left(name, session, now, left);
+            assertTrue(left.forgetLater().isEmpty(), "-1: no timer");
+            now += SECOND;
+        }
+        RobotSession back = () -> { };
+        forever.register(robot("G4", back, 5000), now, new Changes());
+        forever.dns("G4", "Base", 0, true, number, now, new Changes());
+
+        Changes first = new Changes();
+        assertEquals(2, forever.giveBackRemembered(1, now, first), "a whole robot at a time: G1's two ports");
+        assertEquals(List.of(Changes.PortWork.RELEASE, Changes.PortWork.RELEASE), works(first));
+        assertTrue(first.portActions().stream().allMatch(action -> action.port().key.pair().contains("G1")), first.portActions().toString());
+        assertTrue(first.events().contains(new HubEvent.Said(java.util.logging.Level.INFO,
+                "descriptors ran short: gave back 2 remembered WSS ports of 1 robot that left, the longest gone first")), first.events().toString());
+
+        Changes rest = new Changes();
+        assertEquals(4, forever.giveBackRemembered(100, now, rest), "then G2's and G3's, and nothing of Base's or G4's");
+        assertEquals(List.of(new PortKey("G4", "Base", 5000)), forever.ports().stream().map(port -> port.key).toList());
+        assertEquals(0, forever.giveBackRemembered(100, now, new Changes()), "nothing left to give");
+    }
+
     private void registerBoth() {
         assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now, new Changes()));
         assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("B", sessionB, 6000), now, new Changes()));

@@ -45,6 +45,7 @@ class PortsTest {
         assertEquals(List.of(), List.copyOf(ports.all()));
         assertEquals(List.of(), ports.of("A"));
         assertEquals(List.of(), ports.between(RobotPair.of("A", "C")));
+        assertEquals(0, ports.fromCount("A"));
     }
 
     @Test

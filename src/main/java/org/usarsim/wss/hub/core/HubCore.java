@@ -54,6 +54,7 @@ public final class HubCore {
     private final String modelName;
     private final boolean matchSourceAddress;
     private final int maxPortsPerRobot;
+    private final int maxPortsPerAddress;
     private final Map<String, RegisteredRobot> robots = new HashMap<>();
     private final Ports ports = new Ports();
     /** Pairs the model broke and has not resumed. */
@@ -91,10 +92,17 @@ public final class HubCore {
     /** @param shaping how links are shaped (docs/shaping.md) */
     public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot,
             ShapingConfig shaping) {
+        this(modelName, matchSourceAddress, portMemorySeconds, maxPortsPerRobot, Integer.MAX_VALUE, shaping);
+    }
+
+    /** @param maxPortsPerAddress the most WSS ports the robots registered from one address may hold as source, together */
+    public HubCore(String modelName, boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot,
+            int maxPortsPerAddress, ShapingConfig shaping) {
         this.shaping = shaping;
         this.modelName = modelName;
         this.matchSourceAddress = matchSourceAddress;
         this.maxPortsPerRobot = maxPortsPerRobot;
+        this.maxPortsPerAddress = maxPortsPerAddress;
         this.memory = new PortMemory(portMemorySeconds);
     }
 
@@ -238,10 +246,18 @@ public final class HubCore {
             }
             return new DnsResult(DnsOutcome.OK, port.number, key, false);
         }
-        long held = ports.fromCount(from);
+        InetAddress address = robots.get(from).address();
+        int held = ports.fromCount(from);
         if (held >= maxPortsPerRobot) {
-            out.add(new HubEvent.Warned("DNS beyond the port limit", robots.get(from).address(), from + " holds " + held
+            out.add(new HubEvent.Warned("DNS beyond the port limit", address, from + " holds " + held
                     + " WSS ports as source, the most wss.maxPortsPerRobot allows; no new one for " + key));
+            return DnsResult.of(DnsOutcome.NO_PORT);
+        }
+        long heldFromAddress = heldFrom(address);
+        if (heldFromAddress >= maxPortsPerAddress) {
+            out.add(new HubEvent.Warned("DNS beyond the address limit", address, "the robots registered from "
+                    + address.getHostAddress() + " hold " + heldFromAddress
+                    + " WSS ports as source, the most wss.maxPortsPerAddress allows; no new one for " + key));
             return DnsResult.of(DnsOutcome.NO_PORT);
         }
         if (newNumber < 0) {
@@ -257,6 +273,22 @@ public final class HubCore {
         out.add(new HubEvent.Said(Level.INFO, "allocated " + port + (listens ? "" : ", not listening")));
         out.add(new HubEvent.PortAllocated(key, port.number, listens));
         return new DnsResult(DnsOutcome.OK, port.number, key, true);
+    }
+
+    /**
+     * The WSS ports held as source by the robots registered from the address now: what
+     * wss.maxPortsPerAddress caps, so that one client cannot take every descriptor by registering
+     * many names. Ports of robots that left are not counted: they give their descriptors back when
+     * descriptors run short ({@link #giveBackRemembered}).
+     */
+    private long heldFrom(InetAddress address) {
+        long held = 0;
+        for (RegisteredRobot robot : robots.values()) {
+            if (robot.address().equals(address)) {
+                held += ports.fromCount(robot.name());
+            }
+        }
+        return held;
     }
 
     /** A DNS's port could not be bound: said as the WARNING its client caused. */
@@ -618,7 +650,7 @@ public final class HubCore {
      * Gives back the numbers of a gone robot's WSS ports, as source and as target, but those with
      * open connections, which are forgotten when their last connection closes.
      */
-    private void forgetPortsOf(String name, long nowNs, Changes out) {
+    private int forgetPortsOf(String name, long nowNs, Changes out) {
         int forgotten = 0;
         boolean kept = false;
         for (WssPort port : ports.of(name)) {
@@ -644,5 +676,33 @@ public final class HubCore {
                 && stats.get(RobotPair.of(way.from(), way.to())) == null);
         measured.keySet().retainAll(conditions.keySet());
         said.retainAll(conditions.keySet());
+        return forgotten;
+    }
+
+    /**
+     * Descriptors ran short: the remembered ports of robots that left are given back, the robot
+     * gone longest first, a whole robot at a time, until at least {@code atLeast} were (or none is
+     * left to give), whatever wss.portMemory says. A robot that is here never loses a port so.
+     *
+     * @return how many ports were given back
+     */
+    public int giveBackRemembered(int atLeast, long nowNs, Changes out) {
+        int given = 0;
+        int of = 0;
+        for (String name : memory.longestGoneFirst()) {
+            if (given >= atLeast) {
+                break;
+            }
+            if (!robots.containsKey(name)) {
+                int forgotten = forgetPortsOf(name, nowNs, out);
+                given += forgotten;
+                of += forgotten > 0 ? 1 : 0;
+            }
+        }
+        if (given > 0) {
+            out.add(new HubEvent.Said(Level.INFO, "descriptors ran short: gave back " + given + " remembered WSS port"
+                    + (given == 1 ? "" : "s") + " of " + of + " robot" + (of == 1 ? "" : "s") + " that left, the longest gone first"));
+        }
+        return given;
     }
 }

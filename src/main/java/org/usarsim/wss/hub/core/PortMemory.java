@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub.core;
 
-import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
@@ -8,7 +9,9 @@ import java.util.concurrent.TimeUnit;
  * How long the WSS ports of a robot that left keep their numbers ({@code wss.portMemory}): when
  * each robot left, and whether that is long enough ago. A pure rule: the time comes in with each
  * call; the timer that asks again once the time may have passed is the hub's (the core says when,
- * {@link Changes#forgetLater}).
+ * {@link Changes#forgetLater}). It keeps the robots in the order they left, so that when
+ * descriptors run short the ports of the one gone longest are given back first, whatever the
+ * setting (for ever too).
  */
 final class PortMemory {
 
@@ -17,8 +20,8 @@ final class PortMemory {
 
     private final long memoryNs;
     private final boolean forever;
-    /** When each robot that left and still has ports left. */
-    private final Map<String, Long> goneSince = new HashMap<>();
+    /** When each robot that left and still has ports left, the one gone longest first. */
+    private final Map<String, Long> goneSince = new LinkedHashMap<>();
 
     PortMemory(int seconds) {
         this.forever = seconds == FOREVER;
@@ -37,11 +40,14 @@ final class PortMemory {
 
     /** A robot left. @return true when its ports are to be forgotten now (wss.portMemory = 0) */
     boolean left(String robot, long nowNs) {
-        if (forever) {
-            return false;
-        }
+        goneSince.remove(robot); // to the end: it is the one gone least long now
         goneSince.put(robot, nowNs);
-        return memoryNs == 0;
+        return !forever && memoryNs == 0;
+    }
+
+    /** The robots that left and still have ports, the one gone longest first. */
+    List<String> longestGoneFirst() {
+        return List.copyOf(goneSince.keySet());
     }
 
     /** A robot registered again, or its ports were all forgotten: nothing to remember about its departure. */
@@ -52,7 +58,7 @@ final class PortMemory {
     /** Whether the robot has been gone at least as long as ports are remembered. */
     boolean expired(String robot, long nowNs) {
         Long since = goneSince.get(robot);
-        return since != null && nowNs - since >= memoryNs;
+        return !forever && since != null && nowNs - since >= memoryNs;
     }
 
     /** Whole seconds since the robot left (0 when it has not). */

@@ -21,6 +21,8 @@ final class Ports {
     private final Map<PortKey, WssPort> byKey = new LinkedHashMap<>();
     private final Map<RobotPair, Set<WssPort>> byPair = new HashMap<>();
     private final Map<String, Set<WssPort>> byRobot = new HashMap<>();
+    /** How many ports each robot is the source of (kept with the indexes: a DNS asks it every time). */
+    private final Map<String, Integer> fromCounts = new HashMap<>();
 
     WssPort get(PortKey key) {
         return byKey.get(key);
@@ -34,6 +36,7 @@ final class Ports {
         byPair.computeIfAbsent(key.pair(), p -> new LinkedHashSet<>()).add(port);
         byRobot.computeIfAbsent(key.from(), r -> new LinkedHashSet<>()).add(port);
         byRobot.computeIfAbsent(key.to(), r -> new LinkedHashSet<>()).add(port);
+        fromCounts.merge(key.from(), 1, Integer::sum);
     }
 
     void remove(WssPort port) {
@@ -42,6 +45,7 @@ final class Ports {
             removeFrom(byPair, key.pair(), port);
             removeFrom(byRobot, key.from(), port);
             removeFrom(byRobot, key.to(), port);
+            fromCounts.computeIfPresent(key.from(), (robot, count) -> count == 1 ? null : count - 1);
         }
     }
 
@@ -69,13 +73,14 @@ final class Ports {
     }
 
     /** How many ports have the robot as source. */
-    long fromCount(String robot) {
-        return byRobot.getOrDefault(robot, Set.of()).stream().filter(port -> port.key.from().equals(robot)).count();
+    int fromCount(String robot) {
+        return fromCounts.getOrDefault(robot, 0);
     }
 
     void clear() {
         byKey.clear();
         byPair.clear();
         byRobot.clear();
+        fromCounts.clear();
     }
 }

@@ -78,9 +78,14 @@ public final class ControlListener extends AcceptLoop {
     }
 
     @Override
-    protected void acceptFailed(IOException e) {
-        // Out of descriptors, say: robots must still be able to connect once it passes.
+    protected boolean acceptFailed(IOException e) {
+        // Out of descriptors: remembered ports of robots that left give theirs back first.
+        if (Descriptors.ranOut(e) && switchboard.descriptorsShort()) {
+            return true;
+        }
+        // Otherwise robots must still be able to connect once it passes.
         LOG.log(Level.SEVERE, "accepting a control connection failed, trying again: " + e, e);
+        return false;
     }
 
     @Override

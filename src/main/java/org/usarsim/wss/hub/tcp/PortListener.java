@@ -4,100 +4,119 @@ import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.StandardSocketOptions;
+import java.nio.channels.SelectionKey;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.WssPort;
-import org.usarsim.wss.net.AcceptLoop;
 
 /**
- * A WSS port while it listens: a blocking server socket and the thread that accepts on it and
- * hands each connection to the hub. Closing it stops the listening at once: a blocking channel's
- * socket is released by close() itself, whereas one registered with a Selector is released only
- * when that selector next runs, which would let a connect through after a break. The loop and
- * its policy for failures are {@link AcceptLoop}'s; what is a WSS port's own (the close that waits
- * for accept() to return, the drain) is here.
+ * One listening of a WSS port: its listening socket, the core's epoch it listens with, and its
+ * key in the {@link PortSelector}. It is closed on the selector's thread, the only one that
+ * touches its key: a channel registered with a Selector is really closed (its descriptor given
+ * back, its accept queue reset) only when that selector next runs, so a close is done once the
+ * selector has run after it ({@link #awaitClosed}).
+ *
+ * <p>A departure drains it first ({@link #beginDrain}): the hub connects to the port itself, the
+ * selector's thread accepts until that marker, then accepts no more (the socket stays open and
+ * holds the number until the departure stops the port, which resets whatever came after), and the
+ * hand-over thread says the drain ended once it has handed every connection before the marker to
+ * the hub.
  */
-public final class PortListener extends AcceptLoop {
+public final class PortListener {
 
     private static final Logger LOG = Logger.getLogger(PortListener.class.getName());
-    private static final int BACKLOG = 128;
-    private static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(1);
 
-    private final Switchboard switchboard;
-    private final WssPort port;
-    /** Which listening of the port this is (the core's epoch): a connection it accepts after the port stopped is refused. */
-    private final int epoch;
-    /** The thread is inside accept(), where it holds the socket open. */
-    private boolean inAccept;
-    /** The hub's own connection that marks the end of what is drained (see {@link #beginDrain}). */
+    final WssPort port;
+    /** Which listening of the port this is (the core's epoch): a connection it accepted after the port stopped is refused. */
+    final int epoch;
+    final ServerSocketChannel channel;
+    /** Its key in the selector; only the selector's thread reads or writes it. */
+    SelectionKey key;
+    /** Asked to close (a stop or a release); the selector's thread closes it. */
+    private volatile boolean closing;
+    /** The drain's marker was reached: accepting no more. Only the selector's thread writes it. */
+    private volatile boolean drained;
+    /** Counted down once the socket is really closed (the selector ran after the close). */
+    private final CountDownLatch closed = new CountDownLatch(1);
+    /** Counted down once the hand-over thread handed every connection this listener accepted to the hub. */
+    private final CountDownLatch ended = new CountDownLatch(1);
+    /** The local address of the hub's own connection that marks the end of a drain; null when not draining. */
+    private volatile InetSocketAddress markerAddress;
     private SocketChannel marker;
-    private InetSocketAddress markerAddress;
-    /** The thread has stopped: it will hand the hub no more connections. */
-    private boolean ended;
 
-    PortListener(Switchboard switchboard, WssPort port, int epoch, ServerSocketChannel channel) {
-        super(channel, LOG, port.toString(), "a connection on " + port + " from");
-        this.switchboard = switchboard;
+    PortListener(WssPort port, int epoch, ServerSocketChannel channel) {
         this.port = port;
         this.epoch = epoch;
+        this.channel = channel;
     }
 
-    /** A blocking server socket bound to the address (port 0: the OS chooses). */
-    static ServerSocketChannel bind(InetSocketAddress address) throws IOException {
-        return AcceptLoop.bind(address, BACKLOG);
+    /** Whether its close was asked for (it may not be done yet: {@link #isClosed}). */
+    boolean isClosing() {
+        return closing;
     }
 
-    void start() {
-        Thread thread = new Thread(this, "wss-port " + port.number);
-        thread.setDaemon(true);
-        thread.start();
+    boolean isClosed() {
+        return closed.getCount() == 0;
+    }
+
+    /** On the selector's thread: closes the channel; it is really closed once the selector has run again ({@link #closedNow}). */
+    void close() {
+        closing = true;
+        if (key != null) {
+            key.cancel();
+        }
+        Closing.quietly(channel);
+    }
+
+    /** On the selector's thread, once it ran after {@link #close}: the socket no longer listens. */
+    void closedNow() {
+        closing = true;
+        closed.countDown();
+        Closing.quietly(marker());
     }
 
     /**
-     * Stops listening, and returns once the socket no longer listens. Closing a channel whose
-     * thread is blocked in accept() only signals that thread; the socket is released when its
-     * accept() returns, so wait for that (it does not need the hub's lock, so this may be called
-     * under it).
+     * On the selector's thread: the drain's marker was accepted (and reset), so everything before
+     * it is queued for the hub; this listener accepts no more. The hub's own end of the marker
+     * is closed now (the reset reached it: no TIME_WAIT is left).
      */
-    void close() {
-        Closing.quietly(server);
-        if (!await(() -> !inAccept, System.nanoTime() + CLOSE_WAIT_NS)) {
-            LOG.warning(port + ": the accepting thread did not stop in time");
+    void drained() {
+        drained = true;
+        if (key != null) {
+            key.cancel();
         }
+        Closing.quietly(marker());
     }
 
-    /** Waits on this listener's monitor until the condition holds or the deadline (System.nanoTime()) passes. */
-    private synchronized boolean await(BooleanSupplier condition, long deadline) {
-        while (!condition.getAsBoolean()) {
-            long left = deadline - System.nanoTime();
-            if (left <= 0) {
-                return false;
-            }
-            try {
-                TimeUnit.NANOSECONDS.timedWait(this, left);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return false;
-            }
-        }
-        return true;
+    /** Whether the drain's marker was reached: it accepts no more, and waits for the port to stop. */
+    boolean isDrained() {
+        return drained;
+    }
+
+    /** On the hand-over thread: every connection accepted before the close has been handed to the hub. */
+    void ended() {
+        ended.countDown();
+    }
+
+    /** Waits until the socket no longer listens, at most until the deadline (System.nanoTime()). @return whether it is closed */
+    boolean awaitClosed(long deadline) {
+        return await(closed, deadline);
     }
 
     /**
      * Starts stopping the way a robot's departure stops a port: every connection the kernel has
-     * already completed is handed to the hub, then the socket closes. A socket that closes
-     * throws away its accept queue, and the thread blocked in accept() can only be woken by a
-     * connection or a close; so the hub connects to the port itself, and the thread, taking
-     * connections in the order they were completed, stops at that one ({@link #awaitEnd}).
+     * already completed is handed to the hub, then the socket closes. The accept queue is first
+     * in, first out, so the hub connects to the port itself and the selector's thread stops at
+     * that connection ({@link #awaitEnd}).
      *
      * @param address where the port is reached from this machine
-     * @return false when the hub's own connection could not be started; close() then stops the port
+     * @return false when the hub's own connection could not be started; the stop then closes the port
      */
     synchronized boolean beginDrain(InetAddress address) {
-        if (marker != null || ended || !server.isOpen()) {
+        if (marker != null || closing) {
             return marker != null;
         }
         SocketChannel connection = null;
@@ -105,33 +124,37 @@ public final class PortListener extends AcceptLoop {
             connection = SocketChannel.open();
             connection.configureBlocking(false);
             connection.bind(new InetSocketAddress(address, 0)); // its address is known before the connect completes
-            connection.connect(new InetSocketAddress(address, port.number));
             markerAddress = (InetSocketAddress) connection.getLocalAddress();
+            connection.connect(new InetSocketAddress(address, port.number));
             marker = connection;
             return true;
         } catch (IOException e) {
             LOG.fine(() -> port + ": could not drain before stopping: " + e);
+            markerAddress = null;
             Closing.quietly(connection);
             return false;
         }
     }
 
-    /** Waits until the thread has stopped, or until the deadline (System.nanoTime()). */
-    public void awaitEnd(long deadline) {
-        if (!await(() -> ended, deadline)) {
-            LOG.fine(() -> port + ": did not drain in time");
-        }
+    private synchronized SocketChannel marker() {
+        return marker;
     }
 
-    private synchronized boolean isMarker(SocketChannel socket) {
+    /** Whether the connection is the hub's own that ends a drain. */
+    boolean isMarker(SocketChannel socket) {
+        InetSocketAddress address = markerAddress;
+        if (address == null) {
+            return false;
+        }
         try {
-            return markerAddress != null && markerAddress.equals(socket.getRemoteAddress());
+            return address.equals(socket.getRemoteAddress());
         } catch (IOException e) {
             return false;
         }
     }
 
-    private static void resetQuietly(SocketChannel socket) {
+    /** Closes the drain's marker, accepted: a reset rather than a close leaves no TIME_WAIT on the port's number. */
+    static void reset(SocketChannel socket) {
         try {
             socket.setOption(StandardSocketOptions.SO_LINGER, 0);
         } catch (IOException e) {
@@ -140,58 +163,24 @@ public final class PortListener extends AcceptLoop {
         Closing.quietly(socket);
     }
 
-    private synchronized void end() {
-        ended = true;
-        Closing.quietly(marker);
-        notifyAll();
-    }
-
-    private synchronized void accepting(boolean now) {
-        inAccept = now;
-        if (!now) {
-            notifyAll();
+    /** Waits until the drain ended (or the listener closed and its connections were handed over), or until the deadline (System.nanoTime()). */
+    public void awaitEnd(long deadline) {
+        if (!await(ended, deadline)) {
+            LOG.fine(() -> port + ": did not drain in time");
         }
     }
 
-    @Override
-    public void run() {
+    private static boolean await(CountDownLatch latch, long deadline) {
         try {
-            super.run();
-        } finally {
-            end();
+            return latch.await(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return latch.getCount() == 0;
         }
     }
 
     @Override
-    protected SocketChannel accept() throws IOException {
-        accepting(true);
-        try {
-            return super.accept();
-        } finally {
-            accepting(false);
-        }
-    }
-
-    @Override
-    protected void serve(SocketChannel socket) {
-        if (isMarker(socket)) {
-            // Everything completed before the drain began is handed over: stop here. A reset
-            // rather than a close leaves no TIME_WAIT on the port's number.
-            resetQuietly(socket);
-            Closing.quietly(server);
-            return;
-        }
-        switchboard.accepted(port, epoch, socket);
-    }
-
-    @Override
-    protected void acceptFailed(IOException e) {
-        // Out of descriptors, say: the port still listens, so try again in a moment.
-        switchboard.warn(LOG, "failed accepts", server.socket().getInetAddress(), port + ": accept failed, trying again: " + e, null);
-    }
-
-    @Override
-    protected void warnDropped(InetAddress peer, String message, Throwable e) {
-        switchboard.warn(LOG, "connections not served", peer, message, e);
+    public String toString() {
+        return port + " (listening " + epoch + ")";
     }
 }

@@ -56,6 +56,15 @@ public interface Switchboard {
     /** The link's thread is ending. */
     void linkEnded(Link link, boolean wasEstablished);
 
+    /**
+     * Descriptors ran short (a bind or an accept failed with "Too many open files"): the hub
+     * forgets remembered ports of robots that left, the longest gone first, before it refuses a
+     * robot that is here. Never called under the hub's lock nor on the selector's thread.
+     *
+     * @return true when some were given back: try once more
+     */
+    boolean descriptorsShort();
+
     /** How control connections and links find a peer that vanished. */
     KeepAlive keepAlive();
 

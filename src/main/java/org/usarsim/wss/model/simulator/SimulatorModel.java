@@ -2,10 +2,12 @@ package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -380,14 +382,19 @@ public abstract class SimulatorModel implements PropagationModel {
                     SimulatorModel.this::strength);
             // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
             snapshot = decision.snapshot();
+            // Every pair's state in one go: a robot that drove out of range of many stops all their ports together.
+            Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
+            decision.links().forEach(link -> inRange.put(link.pair(), link.live()));
+            Set<RobotPair> changed = hub.applyLinkStates(inRange);
             for (PollStep.Link link : decision.links()) {
                 RobotPair pair = link.pair();
+                if (!changed.contains(pair)) {
+                    continue;
+                }
                 if (link.live()) {
-                    if (hub.resumeConnectionsForPair(pair.first(), pair.second())) {
-                        log.fine(pair + " in range: " + link.strength() + " dBm");
-                        listener.connectionInRange(pair.first(), pair.second());
-                    }
-                } else if (hub.breakConnectionsForPair(pair.first(), pair.second())) {
+                    log.fine(pair + " in range: " + link.strength() + " dBm");
+                    listener.connectionInRange(pair.first(), pair.second());
+                } else {
                     log.fine(pair + " out of range: " + link.strength() + " dBm at " + metres(link.distance()));
                     listener.connectionOutOfRange(pair.first(), pair.second(), link.strength(), link.distance());
                 }

@@ -17,7 +17,8 @@ import org.usarsim.wss.model.RobotPair;
  */
 final class ModelAnswers {
 
-    private static final Logger LOG = Logger.getLogger(Hub.class.getName());
+    /** The hub's log: its model failures are the hub's lines. */
+    private static final Logger LOG = Logger.getLogger("org.usarsim.wss.hub.Hub");
 
     private final PropagationModel model;
 

@@ -29,7 +29,7 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 new RowsModel.Column<>("Up %", Double.class, pair -> Math.round(pair.upShare() * 1000) / 10.0),
                 new RowsModel.Column<>("Last close", String.class, pair -> pair.lastClose() == null ? "" : pair.lastClose())));
         // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Rate x2, Conns, Breaks, Resumes, Up %, Last close
-        preferredWidths(60, 60, 80, 60, 60, 70, 70, 60, 60, 75, 75, 45, 50, 60, 45, 125);
+        preferredWidths(57, 57, 75, 60, 55, 78, 78, 60, 60, 70, 70, 50, 55, 70, 45, 115);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
     }

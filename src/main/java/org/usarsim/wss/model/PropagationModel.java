@@ -130,4 +130,12 @@ public interface PropagationModel {
     default double cutoff() {
         return Double.NaN;
     }
+
+    /**
+     * The replay's controls when the model replays a recording (docs/replay.md): the window shows
+     * its time bar, the operator's {@code REPLAY} command moves it. Empty (the default) otherwise.
+     */
+    default Optional<Replay> replay() {
+        return Optional.empty();
+    }
 }

@@ -58,4 +58,11 @@ public interface WssEventListener {
     /** An operator gave the forced pair (names in ascending order) back to the model. */
     default void pairReleased(String first, String second) {
     }
+
+    /**
+     * A simulator model polled the simulator: what it learned and decided (docs/replay.md; the
+     * recording writes it). Sent after the poll's kicks, before its breaks and resumes are applied.
+     */
+    default void polled(ModelPoll poll) {
+    }
 }

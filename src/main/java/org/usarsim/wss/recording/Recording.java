@@ -1,0 +1,49 @@
+package org.usarsim.wss.recording;
+
+import java.util.List;
+import org.usarsim.wss.model.Wall;
+
+/**
+ * A recording as read (docs/replay.md): its header, its polls in the order of their times, its
+ * walls as they changed, and every other entry in the order written. What the reader had to skip
+ * is said: whether the file was cut short (no {@code end}: a crashed run), how many lines had a
+ * keyword this version does not know, how many could not be read.
+ */
+public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls> walls, List<Entry> events,
+        long durationMillis, boolean cutShort, int unknownLines, int unreadableLines, String firstProblem) {
+
+    public Recording {
+        polls = List.copyOf(polls);
+        walls = List.copyOf(walls);
+        events = List.copyOf(events);
+    }
+
+    /** The index of the last poll at or before {@code millis}; -1 before the first. */
+    public int pollIndexAt(long millis) {
+        int low = 0;
+        int high = polls.size() - 1;
+        int found = -1;
+        while (low <= high) {
+            int middle = (low + high) >>> 1;
+            if (polls.get(middle).millis() <= millis) {
+                found = middle;
+                low = middle + 1;
+            } else {
+                high = middle - 1;
+            }
+        }
+        return found;
+    }
+
+    /** The walls known at {@code millis}: the last set given at or before it; none before the first. */
+    public List<Wall> wallsAt(long millis) {
+        List<Wall> known = List.of();
+        for (Entry.Walls set : walls) {
+            if (set.millis() > millis) {
+                break;
+            }
+            known = set.walls();
+        }
+        return known;
+    }
+}

@@ -13,7 +13,7 @@ public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls>
         long durationMillis, boolean cutShort, int unknownLines, int unreadableLines, String firstProblem) {
 
     public Recording {
-        polls = List.copyOf(polls);
+        polls = polls instanceof LazyPolls ? polls : List.copyOf(polls);
         walls = List.copyOf(walls);
         events = List.copyOf(events);
     }
@@ -25,7 +25,7 @@ public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls>
         int found = -1;
         while (low <= high) {
             int middle = (low + high) >>> 1;
-            if (polls.get(middle).millis() <= millis) {
+            if (pollMillis(middle) <= millis) {
                 found = middle;
                 low = middle + 1;
             } else {
@@ -33,6 +33,11 @@ public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls>
             }
         }
         return found;
+    }
+
+    /** The poll's time (without reading its rows). */
+    public long pollMillis(int index) {
+        return polls instanceof LazyPolls lazy ? lazy.millis(index) : polls.get(index).millis();
     }
 
     /** The walls known at {@code millis}: the last set given at or before it; none before the first. */

@@ -77,6 +77,9 @@ public final class RelayBenchmark {
         if (only == null || only.equals("counting")) {
             benchmark.counting(baseline);
         }
+        if (only == null || only.equals("record")) {
+            benchmark.recording();
+        }
         benchmark.killChildren();
         System.exit(0);
     }
@@ -234,6 +237,88 @@ public final class RelayBenchmark {
                 }
                 System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns),
                         ratios(ratios), median(ratios));
+            }
+        }
+    }
+
+    // ---- recording: the same streams with wss.record off and on ----
+
+    /**
+     * The stream through a WSS whose DistanceOnly model polls a world server of 12 robots 5 times a
+     * second, all 12 registered (so every poll writes 12 robot and 66 pair rows), with
+     * {@code wss.record} off and on, alternating which goes first (issue 17, docs/performance.md).
+     */
+    private void recording() throws Exception {
+        Path dir = Files.createTempDirectory("wss-bench-record");
+        Path world = dir.resolve("twelve.world");
+        List<String> lines = new ArrayList<>(List.of("robot Sink 0,0,0", "robot Source 1,0,0"));
+        for (int i = 1; i <= 10; i++) {
+            lines.add("robot Idle" + i + " " + (i * 3) + ",5,0");
+            lines.add("path Idle" + i + " speed 1 loop " + (i * 3) + ",25");
+        }
+        Files.write(dir.resolve("twelve.world"), lines);
+        Path file = dir.resolve("run.rec");
+        System.out.printf("%n## Recording: throughput with wss.record off and on (DistanceOnly polling 12 robots every 200 ms;"
+                + " iperf3, %d s, %d pairs, alternating which goes first)%n%n", seconds, runs);
+        try (org.usarsim.wss.world.WorldServer simulator = org.usarsim.wss.world.WorldServer.start(world,
+                java.net.InetAddress.getLoopbackAddress(), 0)) {
+            String[] model = {"wss.model=DistanceOnlyPropagationModel", "usarsim.port=" + simulator.port(), "usarsim.interval=200",
+                "distance.cutoff=-200"};
+            try (WssProcess off = WssProcess.start(model);
+                    WssProcess on = WssProcess.start(concat(model, "wss.record=" + file));
+                    Idle offIdle = new Idle(off.controlPort);
+                    Idle onIdle = new Idle(on.controlPort)) {
+                iperfThroughWss(off, 1); // unmeasured: both servers warm
+                iperfThroughWss(on, 1);
+                System.out.println("| links at once | record off MB/s (median) | record on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
+                System.out.println("|---|---|---|---|---|");
+                double[] offRuns = new double[runs];
+                double[] onRuns = new double[runs];
+                double[] ratios = new double[runs];
+                for (int run = 0; run < runs; run++) {
+                    if (run % 2 == 0) {
+                        offRuns[run] = iperfThroughWss(off, 1);
+                        onRuns[run] = iperfThroughWss(on, 1);
+                    } else {
+                        onRuns[run] = iperfThroughWss(on, 1);
+                        offRuns[run] = iperfThroughWss(off, 1);
+                    }
+                    ratios[run] = onRuns[run] / offRuns[run];
+                }
+                System.out.printf(Locale.ROOT, "| 1 | %.0f | %.0f | %s | **%.2fx** |%n", median(offRuns), median(onRuns), ratios(ratios),
+                        median(ratios));
+            }
+            System.out.printf(Locale.ROOT, "%n  the recording: %,d bytes%n", Files.size(file));
+        } finally {
+            try (var files = Files.list(dir)) {
+                for (Path path : files.toList()) {
+                    Files.delete(path);
+                }
+            }
+            Files.delete(dir);
+        }
+    }
+
+    private static String[] concat(String[] some, String more) {
+        String[] all = java.util.Arrays.copyOf(some, some.length + 1);
+        all[some.length] = more;
+        return all;
+    }
+
+    /** The ten idle robots of the recording's world, registered while the streams run. */
+    private static final class Idle implements AutoCloseable {
+        private final List<ControlClient> robots = new ArrayList<>();
+
+        Idle(int controlPort) throws IOException {
+            for (int i = 1; i <= 10; i++) {
+                robots.add(new ControlClient(controlPort, "Idle" + i, 1));
+            }
+        }
+
+        @Override
+        public void close() throws IOException {
+            for (ControlClient robot : robots) {
+                robot.close();
             }
         }
     }

@@ -70,7 +70,7 @@ public final class WorldServer implements AutoCloseable {
         acceptor.start();
     }
 
-    int port() {
+    public int port() {
         return server.socket().getLocalPort();
     }
 

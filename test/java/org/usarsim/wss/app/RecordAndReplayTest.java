@@ -1,0 +1,229 @@
+package org.usarsim.wss.app;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+import static org.junit.jupiter.api.Assertions.fail;
+
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.LocalTime;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.model.ModelPoll;
+import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.protocol.Replies;
+import org.usarsim.wss.recording.Entry;
+import org.usarsim.wss.recording.Recording;
+import org.usarsim.wss.recording.RecordingReader;
+import org.usarsim.wss.world.WorldServer;
+
+/**
+ * Issue 17's "faithful": a minute of {@code docs/examples/building.world} with the Obstacle model
+ * and its four robots, recorded by the real server; then the recording replayed by another
+ * server, with no simulator, to the same four robots. The two CSV event logs hold the same breaks
+ * and resumes in the same order, each within one poll interval (1 s, the example's) of its
+ * recorded time; every GETSS during the replay equals the recorded strength of the poll the
+ * replay was at.
+ */
+@Timeout(value = 240, unit = TimeUnit.SECONDS)
+class RecordAndReplayTest {
+
+    private static final List<String> ROBOTS = List.of("Operator", "Explorer", "Mapper", "Scout");
+    private static final long POLL_INTERVAL_MS = 1000;
+    private static final Pattern LOG_TIME = Pattern.compile("^\\d{4}-\\d\\d-\\d\\d (\\d\\d:\\d\\d:\\d\\d\\.\\d{3}) ");
+    private static final Pattern REPLAY_TIME = Pattern.compile("\\{Time ([0-9.]+)\\}");
+
+    @TempDir
+    Path dir;
+
+    private WorldServer world;
+    private final List<ServerProcess> servers = new ArrayList<>();
+
+    @AfterEach
+    void stop() throws Exception {
+        for (ServerProcess server : servers) {
+            server.kill();
+        }
+        if (world != null) {
+            world.close();
+        }
+    }
+
+    /** One break or resume as a CSV event log has it, at ms from its server's start. */
+    private record Change(String type, RobotPair pair, long millis) {
+    }
+
+    @Test
+    void aReplayHasTheRecordedBreaksAndResumesAndStrengths() throws Exception {
+        world = WorldServer.start(Path.of("docs/examples/building.world"), InetAddress.getByName("127.0.0.1"), 0);
+        Path recording = dir.resolve("building.rec");
+        Path recordedLogs = dir.resolve("recorded");
+        ServerProcess recorder = start(Map.of("usarsim.port", String.valueOf(world.port()), "wss.record", recording.toString(),
+                "wss.eventLogDir", recordedLogs.toString()));
+        long recordedStart = startedAt(recorder, "ObstaclePropagationModel polls the simulator");
+        int port = Integer.parseInt(recorder.awaitListening().group(1));
+        runRobots(port, null);
+        recorder.sigterm();
+        assertEquals(0, recorder.awaitExit());
+        Recording recorded = RecordingReader.read(recording);
+        assertFalse(recorded.cutShort(), "a clean stop ends the recording");
+        assertTrue(recorded.polls().size() >= 55, recorded.polls().size() + " polls in a minute at 1 s");
+
+        Path replayedLogs = dir.resolve("replayed");
+        world.close();
+        world = null; // no simulator from here on
+        ServerProcess replayer = start(Map.of("wss.model", "ReplayPropagationModel", "replay.file", recording.toString(),
+                "wss.operators", "127.0.0.1", "wss.eventLogDir", replayedLogs.toString()));
+        long replayedStart = startedAt(replayer, "replaying");
+        port = Integer.parseInt(replayer.awaitListening().group(1));
+        int checked = runRobots(port, recorded);
+        replayer.sigterm();
+        assertEquals(0, replayer.awaitExit());
+
+        List<Change> before = changes(recordedLogs, recordedStart);
+        List<Change> after = changes(replayedLogs, replayedStart);
+        assertTrue(before.size() >= 2, "the minute has breaks and resumes: " + before);
+        assertEquals(before.stream().map(c -> c.type() + " " + c.pair()).toList(),
+                after.stream().map(c -> c.type() + " " + c.pair()).toList(), "the same breaks and resumes in the same order");
+        for (int i = 0; i < before.size(); i++) {
+            long apart = Math.abs(after.get(i).millis() - before.get(i).millis());
+            assertTrue(apart <= POLL_INTERVAL_MS, before.get(i) + " replayed as " + after.get(i) + ": " + apart + " ms apart");
+        }
+        assertTrue(checked >= 50, checked + " GETSS checked against the recording");
+    }
+
+    private ServerProcess start(Map<String, String> settings) throws Exception {
+        List<String> lines = new ArrayList<>(Files.readAllLines(Path.of("docs/examples/building.properties")));
+        lines.add("wss.port = 0");
+        lines.add("wss.bindAddress = 127.0.0.1");
+        lines.add("wss.eventLog = true");
+        settings.forEach((key, value) -> lines.add(key + " = " + value.replace("\\", "\\\\")));
+        Path config = Files.write(dir.resolve("wss-" + servers.size() + ".properties"), lines);
+        ServerProcess server = ServerProcess.start("--headless", "--config", config.toString());
+        servers.add(server);
+        return server;
+    }
+
+    /** The time of day (ms) of the server's log line that says its model started. */
+    private static long startedAt(ServerProcess server, String words) throws InterruptedException {
+        String line = server.awaitLine(text -> text.contains(words));
+        Matcher matcher = LOG_TIME.matcher(line);
+        assertTrue(matcher.find(), line);
+        return LocalTime.parse(matcher.group(1)).toNanoOfDay() / 1_000_000;
+    }
+
+    /**
+     * The four robots register and stay until Scout's battery runs out (60 s: the model kicks it);
+     * with {@code recorded}, Operator asks GETSS of the others all along, each between two
+     * {@code REPLAY} questions, and each answer must be the recorded strength of a poll the
+     * replay was at meanwhile. Returns how many were checked.
+     */
+    private int runRobots(int port, Recording recorded) throws Exception {
+        List<TestRobot> robots = new ArrayList<>();
+        int checked = 0;
+        try (Socket operatorSocket = recorded == null ? null : new Socket("127.0.0.1", port)) {
+            for (String name : ROBOTS) {
+                TestRobot robot = new TestRobot(port, "127.0.0.1");
+                robot.init(name, 5000);
+                robots.add(robot);
+            }
+            TestRobot scout = robots.get(3);
+            BufferedReader operatorIn = operatorSocket == null ? null
+                    : new BufferedReader(new InputStreamReader(operatorSocket.getInputStream(), StandardCharsets.UTF_8));
+            PrintWriter operatorOut = operatorSocket == null ? null
+                    : new PrintWriter(operatorSocket.getOutputStream(), true, StandardCharsets.UTF_8);
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(100);
+            while (!closedByPeer(scout)) {
+                if (System.nanoTime() > deadline) {
+                    fail("Scout was not kicked at the end of its battery");
+                }
+                if (recorded != null) {
+                    for (String peer : List.of("Explorer", "Mapper", "Scout")) {
+                        double t0 = replayTime(operatorOut, operatorIn);
+                        String answer = robots.get(0).ask("GETSS {Robot " + peer + "}");
+                        double t1 = replayTime(operatorOut, operatorIn);
+                        if (answer.contains("Robot.Does.Not.Exist")) {
+                            continue; // Scout, kicked meanwhile
+                        }
+                        assertRecorded(recorded, peer, answer, t0, t1);
+                        checked++;
+                    }
+                }
+            }
+        } finally {
+            for (TestRobot robot : robots) {
+                robot.close();
+            }
+        }
+        return checked;
+    }
+
+    private static boolean closedByPeer(TestRobot robot) throws Exception {
+        robot.control.setSoTimeout(100);
+        try {
+            return robot.control.getInputStream().read() < 0;
+        } catch (java.net.SocketTimeoutException e) {
+            return false;
+        } catch (java.io.IOException e) {
+            return true;
+        }
+    }
+
+    private static double replayTime(PrintWriter out, BufferedReader in) throws Exception {
+        out.print("REPLAY\r\n");
+        out.flush();
+        String reply = in.readLine();
+        Matcher matcher = REPLAY_TIME.matcher(reply);
+        assertTrue(reply.startsWith("REPLAYREPLY {Status OK}") && matcher.find(), reply);
+        return Double.parseDouble(matcher.group(1));
+    }
+
+    /** The answer is the strength of Operator to the peer in one of the polls the replay was at between t0 and t1 (seconds). */
+    private static void assertRecorded(Recording recorded, String peer, String answer, double t0, double t1) {
+        int from = Math.max(0, recorded.pollIndexAt((long) Math.floor(t0 * 1000)));
+        int to = Math.max(0, recorded.pollIndexAt((long) Math.ceil(t1 * 1000)));
+        List<String> possible = new ArrayList<>();
+        for (int i = from; i <= to; i++) {
+            Entry.Poll poll = recorded.polls().get(i);
+            RobotPair pair = RobotPair.of("Operator", peer);
+            double strength = poll.pairs().stream().filter(p -> p.first().equals(pair.first()) && p.second().equals(pair.second()))
+                    .mapToDouble(ModelPoll.Pair::strength).findFirst().orElse(Double.NaN);
+            possible.add(Replies.signal(peer, strength));
+        }
+        assertTrue(possible.contains(answer), "GETSS " + peer + " at " + t0 + "-" + t1 + " s answered " + answer + "; recorded: "
+                + possible);
+    }
+
+    /** The OUT_OF_RANGE and IN_RANGE lines of the one CSV event log in {@code logs}, at ms from {@code start} (time of day). */
+    private static List<Change> changes(Path logs, long start) throws Exception {
+        Path log;
+        try (var files = Files.list(logs)) {
+            log = files.filter(file -> file.getFileName().toString().startsWith("log-")).findFirst().orElseThrow();
+        }
+        List<Change> changes = new ArrayList<>();
+        for (String line : Files.readAllLines(log)) {
+            String[] fields = line.split(",");
+            if (fields[0].equals("OUT_OF_RANGE") || fields[0].equals("IN_RANGE")) {
+                long millis = LocalTime.parse(fields[1]).toNanoOfDay() / 1_000_000 - start;
+                changes.add(new Change(fields[0], RobotPair.of(fields[2], fields[3]), Math.floorMod(millis, 86_400_000L)));
+            }
+        }
+        return changes;
+    }
+}

@@ -196,8 +196,9 @@ class RecordAndReplayTest {
 
     /** The answer is the strength of Operator to the peer in one of the polls the replay was at between t0 and t1 (seconds). */
     private static void assertRecorded(Recording recorded, String peer, String answer, double t0, double t1) {
-        int from = Math.max(0, recorded.pollIndexAt((long) Math.floor(t0 * 1000)));
-        int to = Math.max(0, recorded.pollIndexAt((long) Math.ceil(t1 * 1000)));
+        // REPLAY says the time to a tenth of a second at least: the polls within that of either end count too.
+        int from = Math.max(0, recorded.pollIndexAt((long) Math.floor(t0 * 1000) - 100));
+        int to = Math.max(0, recorded.pollIndexAt((long) Math.ceil(t1 * 1000) + 100));
         List<String> possible = new ArrayList<>();
         for (int i = from; i <= to; i++) {
             Entry.Poll poll = recorded.polls().get(i);

@@ -15,6 +15,13 @@ public final class FakeReplay implements Replay {
     private double time;
     private double speed = 1;
     private boolean playing = true;
+    private volatile java.util.function.DoubleConsumer onJump = seconds -> { };
+    /** Applies the jumps in order, off the caller's thread. */
+    private final java.util.concurrent.Executor applier = java.util.concurrent.Executors.newSingleThreadExecutor(task -> {
+        Thread thread = new Thread(task, "fake-replay-jump");
+        thread.setDaemon(true);
+        return thread;
+    });
 
     public FakeReplay(double durationSeconds) {
         this.duration = durationSeconds;
@@ -23,6 +30,15 @@ public final class FakeReplay implements Replay {
     /** The calls so far, in order. */
     public synchronized List<String> calls() {
         return List.copyOf(calls);
+    }
+
+    /**
+     * What a jump does besides moving the time (a replay model breaks and resumes pairs as
+     * recorded at the new time): run on a thread of the fake's own, in order,, as a replay
+     * model applies a jump on its own thread.
+     */
+    public void onJump(java.util.function.DoubleConsumer action) {
+        onJump = action;
     }
 
     /** Moves the replay's time as playing would. */
@@ -78,5 +94,7 @@ public final class FakeReplay implements Replay {
         }
         calls.add("jump " + seconds);
         time = seconds;
+        java.util.function.DoubleConsumer action = onJump;
+        applier.execute(() -> action.accept(seconds));
     }
 }

@@ -30,7 +30,17 @@ import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
+import java.util.Optional;
+import org.usarsim.wss.model.DialogLayout;
+import org.usarsim.wss.model.FakeReplay;
+import org.usarsim.wss.model.LinkQuality;
 import org.usarsim.wss.model.ModelProvider;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.Position;
+import org.usarsim.wss.model.Replay;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.Wall;
+import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
@@ -45,7 +55,10 @@ import org.usarsim.wss.world.WorldServer;
  * KEY=VALUE after them goes over the file's; the file's server keys ({@code wss.shaping},
  * {@code wss.force.up}, ...; not the port, model or address) apply to the window's server. With
  * {@code wss.shaping=on} every robot also asks a DNS of every other, so that the hub shapes every
- * pair and the map draws each line as wide as its rate.
+ * pair and the map draws each line as wide as its rate. With {@code screenshot.replay=TIME/DURATION}
+ * the model also offers a replay's controls (a {@link FakeReplay} standing at TIME of DURATION
+ * seconds, at 1x, playing), so that the window shows its time bar (docs/images/replay-bar.png,
+ * taken before the replay model existed).
  *
  *     xvfb-run -a -s "-screen 0 1280x900x24" java -cp target/classes:target/test-classes \
  *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png [KEY=VALUE...]
@@ -65,6 +78,7 @@ public final class MapScreenshot {
             String[] keyValue = args[i].split("=", 2);
             properties.setProperty(keyValue[0], keyValue[1]);
         }
+        String fakeReplay = (String) properties.remove("screenshot.replay");
         long millis = (long) (Double.parseDouble(args[2]) * 1000);
         String selected = args[3];
         Path out = Path.of(args[4]);
@@ -75,8 +89,9 @@ public final class MapScreenshot {
         }
         WorldServer world = WorldServer.start(worldFile, InetAddress.getByName("127.0.0.1"), simulatorPort);
         long started = System.nanoTime();
-        PropagationModel model = properties.getProperty("wss.model").contains("Obstacle")
+        PropagationModel simulatorModel = properties.getProperty("wss.model").contains("Obstacle")
                 ? new ObstaclePropagationModel() : new DistanceOnlyPropagationModel();
+        PropagationModel model = fakeReplay == null ? simulatorModel : new Replaying(simulatorModel, fakeReplay(fakeReplay));
         Map<String, String> settings = new HashMap<>(Setting.defaults(model.settings()));
         properties.stringPropertyNames().stream().filter(key -> !key.startsWith("wss."))
                 .forEach(key -> settings.put(key, properties.getProperty(key).strip()));
@@ -155,6 +170,110 @@ public final class MapScreenshot {
         world.close();
         preferences.removeNode();
         System.exit(0);
+    }
+
+    /** A fake replay standing at TIME of DURATION seconds ({@code TIME/DURATION}). */
+    private static FakeReplay fakeReplay(String timeAndDuration) {
+        String[] parts = timeAndDuration.split("/");
+        FakeReplay replay = new FakeReplay(Double.parseDouble(parts[1]));
+        replay.time(Double.parseDouble(parts[0]));
+        return replay;
+    }
+
+    /** A model as it is, offering a replay's controls besides. */
+    private static final class Replaying implements PropagationModel {
+        private final PropagationModel model;
+        private final Replay replay;
+
+        Replaying(PropagationModel model, Replay replay) {
+            this.model = model;
+            this.replay = replay;
+        }
+
+        @Override
+        public Optional<Replay> replay() {
+            return Optional.of(replay);
+        }
+
+        @Override
+        public String name() {
+            return model.name();
+        }
+
+        @Override
+        public List<Setting> settings() {
+            return model.settings();
+        }
+
+        @Override
+        public void configure(ModelSettings settings) {
+            model.configure(settings);
+        }
+
+        @Override
+        public void setRobotLinkModel(RobotLinkModel linkModel) {
+            model.setRobotLinkModel(linkModel);
+        }
+
+        @Override
+        public void setEventListener(WssEventListener listener) {
+            model.setEventListener(listener);
+        }
+
+        @Override
+        public void start() throws ModelStartException {
+            model.start();
+        }
+
+        @Override
+        public void shutdown() {
+            model.shutdown();
+        }
+
+        @Override
+        public boolean isActive() {
+            return model.isActive();
+        }
+
+        @Override
+        public DialogLayout dialogLayout() {
+            return model.dialogLayout();
+        }
+
+        @Override
+        public double getSignalStrengthForPair(String from, String to) {
+            return model.getSignalStrengthForPair(from, to);
+        }
+
+        @Override
+        public boolean connectionIsPossibleForPair(String from, String to) {
+            return model.connectionIsPossibleForPair(from, to);
+        }
+
+        @Override
+        public Optional<LinkQuality> linkQualityForPair(String from, String to) {
+            return model.linkQualityForPair(from, to);
+        }
+
+        @Override
+        public Optional<Position> positionOf(String robot) {
+            return model.positionOf(robot);
+        }
+
+        @Override
+        public double rangeFor(String from, String to) {
+            return model.rangeFor(from, to);
+        }
+
+        @Override
+        public List<Wall> walls() {
+            return model.walls();
+        }
+
+        @Override
+        public double cutoff() {
+            return model.cutoff();
+        }
     }
 
     private static String readLine(InputStream in) throws IOException {

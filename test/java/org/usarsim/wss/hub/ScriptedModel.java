@@ -20,6 +20,8 @@ public final class ScriptedModel implements PropagationModel {
     private volatile WssEventListener events;
     private volatile boolean active;
     private volatile String startFailure;
+    /** The replay controls {@link #replay()} gives; null: none, as a model that replays nothing. */
+    private volatile org.usarsim.wss.model.Replay replay;
     /** How many times a strength was asked (GETSS, the snapshot, the shaping's sampler). */
     private final java.util.concurrent.atomic.AtomicLong strengthsAsked = new java.util.concurrent.atomic.AtomicLong();
 
@@ -44,6 +46,16 @@ public final class ScriptedModel implements PropagationModel {
 
     long strengthsAsked() {
         return strengthsAsked.get();
+    }
+
+    /** From now on the model replays: {@link #replay()} gives these controls (null: none again). */
+    public void replaying(org.usarsim.wss.model.Replay controls) {
+        replay = controls;
+    }
+
+    @Override
+    public java.util.Optional<org.usarsim.wss.model.Replay> replay() {
+        return java.util.Optional.ofNullable(replay);
     }
 
     /** The hub, as the server gave it to the model. */

@@ -104,6 +104,13 @@ class WorldFileTest {
         "path A speed 1 forever 1,1         | expected loop or once, found 'forever'",
         "path A speed 1 once 1              | expected a waypoint X,Y or X,Y,Z",
         "path A speed 1 once 1,1 2,2,2,2    | expected a waypoint X,Y or X,Y,Z",
+        "at B 1 1,1                         | a timed point for B, which is no robot declared above",
+        "at A 1                             | a timed point is 'at NAME SECONDS X,Y[,Z]'",
+        "at A 1 1,1 2,2                     | a timed point is 'at NAME SECONDS X,Y[,Z]'",
+        "at A -1 1,1                        | the time must be 0 seconds or more: -1",
+        "at A soon 1,1                      | 'soon' is not a number, in the time in seconds",
+        "at A 1 1                           | expected the point X,Y or X,Y,Z",
+        "at A 1 1,1,1,1                     | expected the point X,Y or X,Y,Z",
         "wall 0,0                           | a wall is 'wall X1,Y1 X2,Y2'",
         "wall 0,0 1,1 2,2                   | a wall is 'wall X1,Y1 X2,Y2'",
         "wall 0,0,0 1,1                     | expected the wall's first end X1,Y1",
@@ -139,6 +146,58 @@ class WorldFileTest {
         WorldFileException e = assertThrows(WorldFileException.class,
                 () -> WorldFile.parse("w", List.of("path A speed 1 loop 1,1", "robot A 0,0,0")));
         assertEquals("w:1: a path for A, which is no robot declared above (path A speed 1 loop 1,1)", e.getMessage());
+    }
+
+    @Test
+    void timedPointsMoveARobotLinearlyInTimeFromItsStartToItsLastPoint() throws Exception {
+        World world = WorldFile.parse("w", List.of(
+                "robot A 0,0,1",
+                "robot B 5,5,0",
+                "at A 2 0,0",         // an X,Y point keeps the start's z
+                "at B 0 5,5,0",
+                "at A 4 10,0,3",
+                "at B 10 5,5,0",      // B stands still: two points
+                "at A 4.5 10,5"));
+        assertEquals(new Point(0, 0, 1), position(world, 0, "A"), "before the first point: the start");
+        assertEquals(new Point(0, 0, 1), position(world, 2, "A"), "at a point's time: the point");
+        assertEquals(new Point(5, 0, 2), position(world, 3, "A"), "half way in time, half way in space");
+        assertEquals(new Point(10, 0, 3), position(world, 4, "A"));
+        assertEquals(new Point(10, 2.5, 2), position(world, 4.25, "A"), "faster on a shorter leg: the times count");
+        assertEquals(new Point(10, 5, 1), position(world, 4.5, "A"));
+        assertEquals(new Point(10, 5, 1), position(world, 1000, "A"), "after the last point it stays");
+        assertEquals(new Point(5, 5, 0), position(world, 7, "B"));
+    }
+
+    @Test
+    void timedPointsStartFromTheRobotsStartBeforeTheFirstTime() throws Exception {
+        World world = WorldFile.parse("w", List.of("robot A 0,0,0", "at A 10 10,0"));
+        assertEquals(new Point(0, 0, 0), position(world, 9.999, "A"), "no move before the first point: it jumps there at its time");
+        assertEquals(new Point(10, 0, 0), position(world, 10, "A"));
+    }
+
+    @Test
+    void theTimesOfARobotsPointsMustGrow() {
+        WorldFileException e = assertThrows(WorldFileException.class,
+                () -> WorldFile.parse("w", List.of("robot A 0,0,0", "robot B 0,0,0", "at A 1 1,1", "at B 0.5 1,1", "at A 1 2,2")));
+        assertEquals("w:5: the times of A's points must grow: 1 s is not after 1 s (at A 1 2,2)", e.getMessage());
+        e = assertThrows(WorldFileException.class,
+                () -> WorldFile.parse("w", List.of("robot A 0,0,0", "at A 2.5 1,1", "at A 0.5 2,2")));
+        assertEquals("w:3: the times of A's points must grow: 0.5 s is not after 2.5 s (at A 0.5 2,2)", e.getMessage());
+    }
+
+    @Test
+    void aRobotFollowsAPathOrTimedPointsNotBoth() {
+        WorldFileException e = assertThrows(WorldFileException.class,
+                () -> WorldFile.parse("w", List.of("robot A 0,0,0", "path A speed 1 loop 1,1", "at A 1 1,1")));
+        assertEquals("w:3: A already has a path, on line 2: a robot follows a path or timed points, not both (at A 1 1,1)", e.getMessage());
+        e = assertThrows(WorldFileException.class,
+                () -> WorldFile.parse("w", List.of("robot A 0,0,0", "at A 1 1,1", "path A speed 1 loop 1,1")));
+        assertEquals("w:3: A already has timed points ('at', from line 2): a robot follows a path or timed points, not both"
+                + " (path A speed 1 loop 1,1)", e.getMessage());
+    }
+
+    private static Point position(World world, double seconds, String robot) {
+        return world.at(seconds).robot(robot).orElseThrow().position();
     }
 
     @Test

@@ -5,6 +5,8 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Properties;
@@ -23,6 +25,10 @@ import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.recording.Recording;
+import org.usarsim.wss.recording.RecordingException;
+import org.usarsim.wss.recording.RecordingReader;
+import org.usarsim.wss.recording.WorldExport;
 import org.usarsim.wss.world.WorldFileException;
 import org.usarsim.wss.world.WorldServer;
 import sun.misc.Signal;
@@ -32,7 +38,8 @@ import sun.misc.SignalHandler;
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
  * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS]} runs a USARSim-compatible
- * world server instead (docs/world.md). {@link #run} does it all and returns the exit code
+ * world server instead (docs/world.md); {@code --export-world RUN.rec [--out FILE]} writes a recording as a
+ * world file (docs/replay.md). {@link #run} does it all and returns the exit code
  * ({@link #OK}, {@link #CANNOT_START}, {@link #BAD_INPUT}); {@link #main} only exits with it.
  */
 public final class Main {
@@ -47,6 +54,7 @@ public final class Main {
     static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
             + "       java -jar wss.jar --headless [--config FILE]\n"
             + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]\n"
+            + "       java -jar wss.jar --export-world RUN.rec [--out FILE]\n"
             + "       java -jar wss.jar --version | --help";
 
     private static final String HELP = USAGE + "\n"
@@ -60,6 +68,9 @@ public final class Main {
             + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")\n"
             + "  --bind ADDRESS      the address the world server listens on (default " + Defaults.ALL_INTERFACES
             + ": every interface)\n"
+            + "  --export-world RUN.rec  write a world file whose robots follow the recording's paths, with its walls\n"
+            + "                      (docs/replay.md); to standard output, or to the file of --out FILE\n"
+            + "  --out FILE          where --export-world writes the world file\n"
             + "  --version           print the version and exit\n"
             + "  --help, -h          print this and every property of --config FILE, and exit";
 
@@ -89,7 +100,7 @@ public final class Main {
     public static int run(PrintStream out, PrintStream err, String... args) {
         LogSetup.Saved logging = LogSetup.save();
         try {
-            return parseAndRun(out, args);
+            return parseAndRun(out, err, args);
         } catch (Failure e) {
             err.println("wss: " + e.getMessage());
             return e.code;
@@ -98,13 +109,15 @@ public final class Main {
         }
     }
 
-    private static int parseAndRun(PrintStream out, String... args) throws Failure {
+    private static int parseAndRun(PrintStream out, PrintStream err, String... args) throws Failure {
         Path config = null;
         boolean headless = false;
         boolean start = false;
         Path world = null;
         String port = null;
         String bind = null;
+        Path export = null;
+        Path exportTo = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--headless":
@@ -136,6 +149,19 @@ public final class Main {
                     }
                     break;
                 }
+                case "--export-world":
+                case "--out": {
+                    String option = args[i];
+                    if (i + 1 == args.length) {
+                        throw badInput(option + " needs a file\n" + USAGE);
+                    }
+                    if (option.equals("--export-world")) {
+                        export = Path.of(args[++i]);
+                    } else {
+                        exportTo = Path.of(args[++i]);
+                    }
+                    break;
+                }
                 case "--version":
                     out.println("wss " + Version.current());
                     return OK;
@@ -147,6 +173,16 @@ public final class Main {
                 default:
                     throw badInput("unknown argument " + args[i] + "\n" + USAGE);
             }
+        }
+        if (export != null && (headless || config != null || start || world != null || port != null || bind != null)) {
+            throw badInput("--export-world only writes a world file: no --headless, --config, --start, --world, --port or --bind\n"
+                    + USAGE);
+        }
+        if (exportTo != null && export == null) {
+            throw badInput("--out is where --export-world writes: it needs --export-world RUN.rec\n" + USAGE);
+        }
+        if (export != null) {
+            return exportWorld(out, err, export, exportTo);
         }
         if (world != null && (headless || config != null)) {
             throw badInput("--world runs the world server alone, without --headless or --config\n" + USAGE);
@@ -187,6 +223,39 @@ public final class Main {
             return runHeadless(configFile, config);
         }
         return runWindow(configFile, file, config != null, start);
+    }
+
+    /**
+     * {@code --export-world RUN.rec [--out FILE]}: the recording as a world file, to {@code out} or
+     * to the file. A recording cut short, or with lines skipped, is exported all the same, with a
+     * warning on standard error.
+     */
+    private static int exportWorld(PrintStream out, PrintStream err, Path recordingFile, Path to) throws Failure {
+        Recording recording;
+        try {
+            recording = RecordingReader.read(recordingFile);
+        } catch (RecordingException e) {
+            throw badInput(e.getMessage());
+        }
+        if (recording.cutShort()) {
+            err.println("wss: warning: " + recordingFile + " was cut short (no end line): exported up to its last whole line");
+        }
+        if (recording.unknownLines() + recording.unreadableLines() > 0) {
+            err.println("wss: warning: " + recordingFile + ": skipped " + recording.unknownLines() + " unknown and "
+                    + recording.unreadableLines() + " unreadable lines (the first: " + recording.firstProblem() + ")");
+        }
+        String text = WorldExport.worldFile(recording, recordingFile.getFileName().toString());
+        if (to == null) {
+            out.print(text);
+            out.flush();
+            return OK;
+        }
+        try {
+            Files.writeString(to, text, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            throw badInput("cannot write the world file " + to + ": " + e);
+        }
+        return OK;
     }
 
     private static Failure badInput(String message) {

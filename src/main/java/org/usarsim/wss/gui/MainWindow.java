@@ -11,6 +11,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
@@ -29,12 +30,14 @@ import org.usarsim.wss.Version;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
- * Robots", the ports and connections tables; "Map"; "Link statistics"), and the log. Starts and
+ * Robots", the ports and connections tables; "Map"; "Link statistics"), under them the time bar
+ * while the model replays a recording ({@link ReplayBar}), and the log. Starts and
  * stops a server through {@link Servers}, off the event thread; shows the hub through a
  * {@link NetworkView} and the log through a {@link WindowLog}, both taken on a Swing timer every
  * {@link #REFRESH_MS} ms. Everything here runs on the event thread.
@@ -55,6 +58,8 @@ public final class MainWindow {
     private final StatsPanel stats = new StatsPanel(forceMenu);
     private final LogPanel log = new LogPanel();
     private final MapPanel map = new MapPanel(forceMenu);
+    /** The time bar under the tabs, shown while the running model replays a recording. */
+    private final ReplayBar replayBar = new ReplayBar();
     private final NetworkView view = new NetworkView();
     private final Timer timer;
     private final Servers servers;
@@ -143,7 +148,10 @@ public final class MainWindow {
         tabs.addTab("Connections", tables);
         tabs.addTab("Map", map);
         tabs.addTab("Link statistics", stats);
-        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabs, log);
+        JPanel tabsAndReplay = new JPanel(new BorderLayout());
+        tabsAndReplay.add(tabs, BorderLayout.CENTER);
+        tabsAndReplay.add(replayBar, BorderLayout.SOUTH);
+        JSplitPane center = new JSplitPane(JSplitPane.VERTICAL_SPLIT, tabsAndReplay, log);
         center.setResizeWeight(0.75);
         center.setBorder(null);
         JPanel content = new JPanel(new BorderLayout(0, 8));
@@ -205,6 +213,7 @@ public final class MainWindow {
             map.show(mapData);
         }
         log.append(windowLog.drain());
+        replayBar.follow();
     }
 
     private void startOrStop() {
@@ -248,6 +257,7 @@ public final class MainWindow {
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
                 view.attach(running, running.model());
+                replayBar.attach(replayOf(running.model()));
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -262,9 +272,20 @@ public final class MainWindow {
         SwingUtilities.invokeLater(() -> JOptionPane.showMessageDialog(frame, message, TITLE, JOptionPane.ERROR_MESSAGE));
     }
 
+    /** The model's replay controls, or null when it replays nothing (or fails to say). */
+    private static Replay replayOf(PropagationModel model) {
+        try {
+            return model.replay().orElse(null);
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, model.name() + " failed to give its replay controls: " + e, e);
+            return null;
+        }
+    }
+
     private void stop() {
         Servers.Running stopping = running;
         running = null;
+        replayBar.detach();
         setState(ControlBar.State.STOPPING);
         new SwingWorker<Void, Void>() {
             @Override

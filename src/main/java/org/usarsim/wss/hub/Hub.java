@@ -10,6 +10,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
@@ -42,6 +43,7 @@ import org.usarsim.wss.hub.tcp.SocketBuffers;
 import org.usarsim.wss.hub.tcp.Switchboard;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
@@ -300,6 +302,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     @Override
     public boolean isOperator(InetAddress address) {
         return config.operators().contains(address);
+    }
+
+    @Override
+    public Optional<Replay> replay() {
+        return answers.replay();
     }
 
     @Override

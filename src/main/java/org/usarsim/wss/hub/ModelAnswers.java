@@ -3,12 +3,14 @@ package org.usarsim.wss.hub;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Measurement;
 import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.model.PropagationModel;
+import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.model.RobotPair;
 
 /**
@@ -28,6 +30,16 @@ final class ModelAnswers {
 
     String name() {
         return model.name();
+    }
+
+    /** The model's replay controls (REPLAY); a model that throws has none, and a WARNING says so. */
+    Optional<Replay> replay() {
+        try {
+            return model.replay();
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, model.name() + " failed to give its replay controls: " + e, e);
+            return Optional.empty();
+        }
     }
 
     /** Whether {@code from} may connect to {@code to} now; a model that throws says no, and a WARNING says so. */

@@ -3,13 +3,17 @@ package org.usarsim.wss.protocol;
 import java.util.ArrayList;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Locale;
+import java.util.OptionalDouble;
 import java.util.Set;
 import java.util.regex.Pattern;
 
-/** Reads the values of a command's fields: robot names and ports, with the errors they get. */
+/** Reads the values of a command's fields: robot names, ports and REPLAY's values, with the errors they get. */
 public final class Arguments {
 
     private static final Pattern DECIMAL = Pattern.compile("[+-]?[0-9]+");
+    /** A plain decimal number: no NaN, no Infinity, no hexadecimal, no d or f suffix as Java would take. */
+    private static final Pattern NUMBER = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
 
     private Arguments() {
     }
@@ -79,6 +83,50 @@ public final class Arguments {
             throw new ProtocolException(Replies.PORT_MUST_BE_INTEGER);
         }
         return value;
+    }
+
+    /** REPLAY's {@code Time} field: seconds from 0 to {@code duration}; empty when there is none. */
+    public static OptionalDouble replayTime(Command command, double duration) throws ProtocolException {
+        String value = command.value("Time");
+        if (value == null) {
+            return OptionalDouble.empty();
+        }
+        double seconds = number(value);
+        if (!(seconds >= 0 && seconds <= duration)) {
+            throw new ProtocolException(Replies.TIME_MUST_BE_0_TO_DURATION);
+        }
+        return OptionalDouble.of(seconds);
+    }
+
+    /** REPLAY's {@code Speed} field: times as fast as recorded, from {@code min} to {@code max}; empty when there is none. */
+    public static OptionalDouble replaySpeed(Command command, double min, double max) throws ProtocolException {
+        String value = command.value("Speed");
+        if (value == null) {
+            return OptionalDouble.empty();
+        }
+        double speed = number(value);
+        if (!(speed >= min && speed <= max)) {
+            throw new ProtocolException(Replies.SPEED_MUST_BE_0_25_TO_8);
+        }
+        return OptionalDouble.of(speed);
+    }
+
+    /** REPLAY's {@code State} field, {@code Play} or {@code Pause} in any case: true to play; null when there is none. */
+    public static Boolean replayPlays(Command command) throws ProtocolException {
+        String value = command.value("State");
+        if (value == null) {
+            return null;
+        }
+        return switch (value.toLowerCase(Locale.ROOT)) {
+            case "play" -> Boolean.TRUE;
+            case "pause" -> Boolean.FALSE;
+            default -> throw new ProtocolException(Replies.STATE_MUST_BE_PAUSE_OR_PLAY);
+        };
+    }
+
+    /** A plain decimal number, or NaN (which no range holds). */
+    private static double number(String text) {
+        return NUMBER.matcher(text).matches() ? Double.parseDouble(text) : Double.NaN;
     }
 
     /**

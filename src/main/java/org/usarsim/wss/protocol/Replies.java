@@ -42,6 +42,12 @@ public final class Replies {
     public static final String DELAY_MUST_BE_0_TO_10000_MS = "Delay.Must.Be.0.To.10000.Ms";
     public static final String RATE_AND_DELAY_NEED_STATE_UP = "Rate.And.Delay.Need.State.Up";
 
+    // Reasons of the operator command REPLAY, an extension of ours (docs/protocol.md section 8).
+    public static final String NOT_A_REPLAY = "Not.A.Replay";
+    public static final String TIME_MUST_BE_0_TO_DURATION = "Time.Must.Be.0.To.Duration.Seconds";
+    public static final String SPEED_MUST_BE_0_25_TO_8 = "Speed.Must.Be.0.25.To.8";
+    public static final String STATE_MUST_BE_PAUSE_OR_PLAY = "State.Must.Be.Pause.Or.Play";
+
     private Replies() {
     }
 
@@ -114,5 +120,22 @@ public final class Replies {
     /** FORCE done: the pair is forced down or up, or given back to the model. */
     public static String forceOk() {
         return "FORCEREPLY {Status OK}";
+    }
+
+    /**
+     * REPLAY done (or only asked): where the replay is after the change, in seconds, its duration,
+     * its speed and whether it plays. Numbers to the millisecond, trailing zeros dropped.
+     */
+    public static String replayOk(double timeSeconds, double durationSeconds, double speed, boolean playing) {
+        return "REPLAYREPLY {Status OK} {Time " + decimal(timeSeconds) + "} {Duration " + decimal(durationSeconds) + "} {Speed "
+                + decimal(speed) + "} {State " + (playing ? "Play" : "Pause") + "}";
+    }
+
+    /** {@code 12.3}, {@code 60}, {@code 0.25}: to the thousandth, no trailing zeros, no exponent. */
+    static String decimal(double value) {
+        if (!Double.isFinite(value)) {
+            return "NaN";
+        }
+        return java.math.BigDecimal.valueOf(Math.round(value * 1000), 3).stripTrailingZeros().toPlainString();
     }
 }

@@ -9,7 +9,7 @@ import java.util.List;
  * constant speed. A looping route then goes straight back to the start and repeats; any other
  * route stops at its last waypoint. Where the robot is depends on elapsed time alone.
  */
-final class Route {
+final class Route implements Motion {
 
     /** The corners in the order driven: the start, the waypoints, and the start again when looping. */
     private final Point[] corners;
@@ -37,8 +37,8 @@ final class Route {
         this.loop = loop;
     }
 
-    /** Where the robot is {@code seconds} after the world started (0 or more). */
-    Point at(double seconds) {
+    @Override
+    public Point at(double seconds) {
         double length = distances[distances.length - 1];
         double travelled = speed * seconds;
         if (loop) {

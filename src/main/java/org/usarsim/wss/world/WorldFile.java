@@ -19,6 +19,7 @@ import java.util.regex.Pattern;
  * <pre>
  * robot NAME X,Y,Z [battery SECONDS]
  * path NAME speed METRES_PER_SECOND loop|once X,Y[,Z] ...
+ * at NAME SECONDS X,Y[,Z]
  * wall X1,Y1 X2,Y2
  * </pre>
  *
@@ -32,6 +33,9 @@ final class WorldFile {
     private final String source;
     private final Map<String, WorldRobot> robots = new LinkedHashMap<>();
     private final Map<String, Integer> pathLines = new LinkedHashMap<>();
+    /** Each robot's timed points ({@code at} lines) so far, in file order, and the line of its first. */
+    private final Map<String, List<Track.TimedPoint>> tracks = new LinkedHashMap<>();
+    private final Map<String, Integer> trackLines = new LinkedHashMap<>();
     private final List<Wall> walls = new ArrayList<>();
     private int lineNumber;
     private String line;
@@ -62,7 +66,13 @@ final class WorldFile {
             file.line = text;
             file.statement(text);
         }
-        return new World(new ArrayList<>(file.robots.values()), file.walls);
+        List<WorldRobot> robots = new ArrayList<>();
+        for (WorldRobot robot : file.robots.values()) {
+            List<Track.TimedPoint> track = file.tracks.get(robot.name());
+            robots.add(track == null ? robot
+                    : new WorldRobot(robot.name(), robot.start(), new Track(robot.start(), track), robot.batterySeconds()));
+        }
+        return new World(robots, file.walls);
     }
 
     private void statement(String text) throws WorldFileException {
@@ -74,8 +84,9 @@ final class WorldFile {
         switch (words[0]) {
             case "robot" -> robot(words);
             case "path" -> path(words);
+            case "at" -> at(words);
             case "wall" -> wall(words);
-            default -> throw error("unknown statement '" + words[0] + "'; a line is robot, path or wall");
+            default -> throw error("unknown statement '" + words[0] + "'; a line is robot, path, at or wall");
         }
     }
 
@@ -114,6 +125,10 @@ final class WorldFile {
         if (earlier != null) {
             throw error(robot.name() + " already has a path, on line " + earlier);
         }
+        if (trackLines.containsKey(robot.name())) {
+            throw error(robot.name() + " already has timed points ('at', from line " + trackLines.get(robot.name())
+                    + "): a robot follows a path or timed points, not both");
+        }
         keyword(words[2], "speed");
         double speed = number(words[3], "the speed in metres per second");
         if (speed <= 0) {
@@ -131,6 +146,38 @@ final class WorldFile {
             waypoints.add(new Point(xyz[0], xyz[1], xyz.length == 3 ? xyz[2] : start.z()));
         }
         robots.put(robot.name(), new WorldRobot(robot.name(), start, new Route(start, waypoints, speed, loop), robot.batterySeconds()));
+    }
+
+    /** {@code at NAME SECONDS X,Y[,Z]}: one timed point of the robot's track, later than its point before. */
+    private void at(String[] words) throws WorldFileException {
+        if (words.length != 4) {
+            throw error("a timed point is 'at NAME SECONDS X,Y[,Z]'");
+        }
+        WorldRobot robot = robots.get(words[1]);
+        if (robot == null) {
+            throw error("a timed point for " + words[1] + ", which is no robot declared above");
+        }
+        Integer path = pathLines.get(robot.name());
+        if (path != null) {
+            throw error(robot.name() + " already has a path, on line " + path + ": a robot follows a path or timed points, not both");
+        }
+        double seconds = number(words[2], "the time in seconds");
+        if (seconds < 0) {
+            throw error("the time must be 0 seconds or more: " + words[2]);
+        }
+        List<Track.TimedPoint> track = tracks.computeIfAbsent(robot.name(), name -> new ArrayList<>());
+        trackLines.putIfAbsent(robot.name(), lineNumber);
+        if (!track.isEmpty() && !(seconds > track.get(track.size() - 1).seconds())) {
+            throw error("the times of " + robot.name() + "'s points must grow: " + words[2] + " s is not after "
+                    + timeText(track.get(track.size() - 1).seconds()) + " s");
+        }
+        double[] xyz = coordinates(words[3], 2, 3, "the point X,Y or X,Y,Z");
+        track.add(new Track.TimedPoint(seconds, new Point(xyz[0], xyz[1], xyz.length == 3 ? xyz[2] : robot.start().z())));
+    }
+
+    /** A time as the file may have written it: no trailing {@code .0}. */
+    private static String timeText(double seconds) {
+        return seconds == Math.rint(seconds) && Math.abs(seconds) < 1e15 ? Long.toString((long) seconds) : Double.toString(seconds);
     }
 
     /** {@code wall X1,Y1 X2,Y2} */

@@ -8,12 +8,14 @@ import java.nio.channels.ClosedChannelException;
 import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RobotSession;
+import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
 import org.usarsim.wss.protocol.CommandParser;
@@ -127,6 +129,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (command.type().equals("FORCE") && !command.hasNoSegment()) {
             return force(command); // an operator's, not a robot's: no INIT needed
         }
+        if (command.type().equals("REPLAY")) {
+            return replay(command); // an operator's too; alone, it asks where the replay is
+        }
         if (robot == null) {
             boolean init = command.type().equals("INIT") && !command.hasNoSegment();
             return init ? init(command) : Replies.error(Replies.MUST_INIT_FIRST);
@@ -238,6 +243,47 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
             default -> switchboard.release(first, second);
         }
         return Replies.forceOk();
+    }
+
+    /**
+     * The operator command REPLAY (docs/protocol.md section 8): {@code REPLAY {Time s} {Speed x} {State Pause|Play}},
+     * any of them or none (then it only asks). Only from an address of wss.operators, and only while
+     * the model replays a recording. Every field is checked before anything changes.
+     */
+    private String replay(Command command) throws ProtocolException {
+        if (!switchboard.isOperator(address)) {
+            switchboard.warn(LOG, "operator commands refused", address,
+                    peer + ": REPLAY refused: " + address.getHostAddress() + " is not in wss.operators", null);
+            return Replies.error(Replies.NOT_AN_OPERATOR);
+        }
+        Optional<Replay> found = switchboard.replay();
+        if (found.isEmpty()) {
+            return Replies.error(Replies.NOT_A_REPLAY);
+        }
+        Replay replay = found.get();
+        OptionalDouble time = Arguments.replayTime(command, replay.durationSeconds());
+        OptionalDouble speed = Arguments.replaySpeed(command, Replay.MIN_SPEED, Replay.MAX_SPEED);
+        Boolean play = Arguments.replayPlays(command);
+        if (time.isPresent() || speed.isPresent() || play != null) {
+            switchboard.note(LOG, "operator commands", address, "operator " + peer + ": REPLAY"
+                    + (time.isPresent() ? " time " + time.getAsDouble() + " s" : "")
+                    + (speed.isPresent() ? " speed " + speed.getAsDouble() + "x" : "")
+                    + (play == null ? "" : play ? " play" : " pause"));
+        }
+        if (speed.isPresent()) {
+            replay.speed(speed.getAsDouble());
+        }
+        if (time.isPresent()) {
+            replay.jump(time.getAsDouble());
+        }
+        if (play != null) {
+            if (play) {
+                replay.play();
+            } else {
+                replay.pause();
+            }
+        }
+        return Replies.replayOk(replay.timeSeconds(), replay.durationSeconds(), replay.speed(), replay.playing());
     }
 
     private void send(String reply) {

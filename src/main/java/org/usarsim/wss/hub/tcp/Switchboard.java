@@ -3,12 +3,14 @@ package org.usarsim.wss.hub.tcp;
 import java.net.InetAddress;
 import java.nio.channels.SocketChannel;
 import java.util.List;
+import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.WssPort;
+import org.usarsim.wss.model.Replay;
 
 /**
  * What the socket classes ask of the hub, and all they know of it: the control sessions' commands,
@@ -44,6 +46,9 @@ public interface Switchboard {
 
     /** FORCE ... {State Model}. */
     void release(String robotA, String robotB);
+
+    /** REPLAY: the model's replay controls; empty when the model replays nothing. */
+    Optional<Replay> replay();
 
     // ---- WSS ports and links ----
 

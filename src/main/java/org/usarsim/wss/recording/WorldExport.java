@@ -113,8 +113,13 @@ public final class WorldExport {
      * The samples a track needs: the first and the last, and each one the straight line in time
      * from the last one kept to a later one would miss by more than {@link #TOLERANCE_METRES} (or
      * would miss another one between them by more). Every sample is then within the tolerance of
-     * the track at its time; a robot standing still is two points.
+     * the track at its time; a robot standing still is two points, or one more for each
+     * {@link #MAX_SPAN} samples (a line is checked against every sample it spans: the cap keeps a
+     * 30-minute run at 5 polls a second to seconds, not minutes).
      */
+    /** The most samples one straight line of a track spans: a minute at 5 polls a second. */
+    static final int MAX_SPAN = 300;
+
     static List<Sample> needed(List<Sample> samples) {
         List<Sample> kept = new ArrayList<>();
         int anchor = 0;
@@ -122,7 +127,7 @@ public final class WorldExport {
         int end = anchor + 1;
         while (end < samples.size()) {
             // Extend the line from the anchor as far as it holds every sample in between.
-            if (end + 1 < samples.size() && fits(samples, anchor, end + 1)) {
+            if (end + 1 < samples.size() && end + 1 - anchor <= MAX_SPAN && fits(samples, anchor, end + 1)) {
                 end++;
                 continue;
             }

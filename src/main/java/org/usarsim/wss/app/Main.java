@@ -226,7 +226,7 @@ public final class Main {
         Server server;
         try {
             server = Server.create(configFile.hubConfig(), model, configFile.modelValues(),
-                    configFile.eventLog() ? configFile.eventLogDir() : null);
+                    configFile.eventLog() ? configFile.eventLogDir() : null, configFile.record().orElse(null));
         } catch (Server.StartFailure e) {
             throw new Failure(CANNOT_START, e.getMessage());
         }

@@ -81,6 +81,14 @@ class BadConfigFileTest {
     }
 
     @Test
+    void aRecordingThatIsAFolderOrNoFileNameIsRefused() throws Exception {
+        String folder = error(file("wss.record=" + dir.toString().replace("\\", "\\\\") + "\n"));
+        assertTrue(folder.contains("wss.record = '" + dir + "' is not a file to record to: it is a folder"), folder);
+        String nul = error(file("wss.record=run\\u0000.rec\n"));
+        assertTrue(nul.contains("wss.record = 'run\\u0000.rec' is not a file path"), nul);
+    }
+
+    @Test
     void anUnknownKeyNamesItAndTheKnownKeys() throws Exception {
         String message = error(file("wss.prot=5000\n"));
         assertTrue(message.contains("unknown key wss.prot (value '5000')"), message);

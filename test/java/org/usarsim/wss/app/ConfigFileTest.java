@@ -39,6 +39,7 @@ class ConfigFileTest {
             Map.entry("wss.model", "NoopPropagationModel"),
             Map.entry("wss.eventLog", "false"),
             Map.entry("wss.eventLogDir", "."),
+            Map.entry("wss.record", ""),
             Map.entry("wss.matchSourceAddress", "true"),
             Map.entry("wss.chunkSize", "65536"),
             Map.entry("wss.socketBuffer", "4194304"),

@@ -108,8 +108,8 @@ public final class MapScreenshot {
         ConfigFile serverConfig = ConfigFile.of(serverProperties, "screenshot");
         WindowServers application = new WindowServers(serverConfig);
         AtomicReference<Servers.Running> running = new AtomicReference<>();
-        Servers servers = (port, runModel, values, eventLog, shaping, listener) -> {
-            Servers.Running run = application.start(port, runModel, values, eventLog, shaping, listener);
+        Servers servers = (port, runModel, values, eventLog, record, shaping, listener) -> {
+            Servers.Running run = application.start(port, runModel, values, eventLog, record, shaping, listener);
             running.set(run);
             return run;
         };

@@ -32,7 +32,7 @@ class WindowServersForceTest {
         file.setProperty("wss.bindAddress", "127.0.0.1");
         file.setProperty("wss.force.down", "r1:r2");
         WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
-        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false,
+        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false, false,
                 ShapingConfig.OFF, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");
@@ -59,7 +59,7 @@ class WindowServersForceTest {
         file.setProperty("wss.bindAddress", "127.0.0.1");
         WindowServers servers = new WindowServers(ConfigFile.of(file, "test"));
         ShapingConfig shaped = new ShapingConfig(true, RateTable.DEFAULT, ShapingConfig.DEFAULT_DELAY_MS, true); // the window's Link shaping
-        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false,
+        Servers.Running running = servers.start("0", ModelProvider.of(NoopPropagationModel::new), new ModelSettings(Map.of()), false, false,
                 shaped, new WssEventListener() { });
         try (TestRobot r1 = new TestRobot(running.port(), "127.0.0.1"); TestRobot r2 = new TestRobot(running.port(), "127.0.0.1")) {
             r1.init("r1");

@@ -41,7 +41,7 @@ public final class HubServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, boolean record, ShapingConfig shaping,
             WssEventListener listener) throws Exception {
         PropagationModel instance = model.instanceForRun();
         instance.configure(values);

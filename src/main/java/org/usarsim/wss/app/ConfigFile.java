@@ -9,6 +9,7 @@ import java.net.UnknownHostException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -20,6 +21,7 @@ import java.util.Properties;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.logging.Level;
+import org.usarsim.wss.LogText;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
@@ -60,6 +62,9 @@ public final class ConfigFile {
             Setting.bool("wss.eventLog", "Event log", false).help("Write the CSV event log, a new file per run"),
             Setting.text("wss.eventLogDir", "Event log folder", ".").noun("a directory")
                     .help("Where the event log file goes (created if missing)"),
+            Setting.text("wss.record", "Record to", "").orEmpty("none").noun("a file path")
+                    .help("Record the run to this file (docs/replay.md; .gz: compressed); an existing file is kept and"
+                            + " the start time added to the new one's name"),
             Setting.bool("wss.matchSourceAddress", "Match source address", true)
                     .help("Accept a connection on a WSS port only from the source robot's IP address"),
             Setting.integer("wss.chunkSize", "Chunk size", 65536).from(1).to(1024 * 1024).unit("bytes")
@@ -164,6 +169,7 @@ public final class ConfigFile {
         ConfigFile server = new ConfigFile(values, null, List.of());
         server.forcedPairs(source);
         server.shaping(source);
+        server.recordFile(source);
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
         List<Setting> own = chosen == null ? List.of() : chosen.settings();
@@ -263,6 +269,27 @@ public final class ConfigFile {
 
     Path eventLogDir() {
         return Path.of(get("wss.eventLogDir"));
+    }
+
+    /** Refuses a wss.record the OS cannot take as a file name, or that names a folder. */
+    private void recordFile(String source) throws ConfigFileException {
+        String value = get("wss.record");
+        if (value.isEmpty()) {
+            return;
+        }
+        try {
+            if (Files.isDirectory(Path.of(value))) {
+                throw new ConfigFileException(source + ": wss.record = '" + value + "' is not a file to record to: it is a folder");
+            }
+        } catch (InvalidPathException e) {
+            throw new ConfigFileException(source + ": wss.record = '" + LogText.escape(value) + "' is not a file path: " + e.getReason());
+        }
+    }
+
+    /** The file wss.record names, to record each run to; empty when none is named. */
+    Optional<Path> record() {
+        String value = get("wss.record");
+        return value.isEmpty() ? Optional.empty() : Optional.of(Path.of(value));
     }
 
     /** Seconds between two statistics tables in the headless log; 0: never. */

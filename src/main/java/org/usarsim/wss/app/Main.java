@@ -62,8 +62,9 @@ public final class Main {
             + "  --start             in the window, press Start at once\n"
             + "  --headless          run the WSS without a window\n"
             + "  --config FILE       the WSS's properties file (docs/headless.md); in the window, its wss.port,\n"
-            + "                      wss.model and wss.eventLog override the stored ones, its model settings\n"
-            + "                      the stored ones for this session\n"
+            + "                      wss.model and wss.eventLog override the stored ones, its wss.record ticks\n"
+            + "                      Record and is where Start records, its model settings the stored ones\n"
+            + "                      for this session\n"
             + "  --world FILE        instead of the WSS, serve USARSim's position protocol from a world file (docs/world.md)\n"
             + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")\n"
             + "  --bind ADDRESS      the address the world server listens on (default " + Defaults.ALL_INTERFACES
@@ -295,7 +296,7 @@ public final class Main {
         Server server;
         try {
             server = Server.create(configFile.hubConfig(), model, configFile.modelValues(),
-                    configFile.eventLog() ? configFile.eventLogDir() : null);
+                    configFile.eventLog() ? configFile.eventLogDir() : null, configFile.record().orElse(null));
         } catch (Server.StartFailure e) {
             throw new Failure(CANNOT_START, e.getMessage());
         }
@@ -324,7 +325,8 @@ public final class Main {
         Launch launch = new Launch(file.containsKey("wss.port") ? configFile.get("wss.port") : null,
                 file.containsKey("wss.model") ? knownModel(catalog, configFile.modelName()).name() : null,
                 file.containsKey("wss.eventLog") ? configFile.eventLog() : null,
-                fromFile ? configFile.modelKeysSetBy(file) : null, fromFile ? configFile.shapingKeysSetBy(file) : null, start);
+                fromFile ? configFile.modelKeysSetBy(file) : null, fromFile ? configFile.shapingKeysSetBy(file) : null, start,
+                file.containsKey("wss.record") ? configFile.record().isPresent() : null);
         WindowLog windowLog = new WindowLog();
         Logger.getLogger("").addHandler(windowLog);
         WindowServers servers = new WindowServers(configFile);

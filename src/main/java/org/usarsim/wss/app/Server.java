@@ -2,6 +2,8 @@ package org.usarsim.wss.app;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
@@ -9,9 +11,12 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.recording.Recorder;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * One run of the WSS: the hub, its model and the CSV event log. Headless mode and the window
+ * One run of the WSS: the hub, its model, the CSV event log and the recording. Headless mode and the window
  * build and start it the same way, through here: each run gets its own model instance, configured
  * here with the values of the run ({@link ModelProvider#instanceForRun}); a failure is a
  * {@link StartFailure} whose message is the one line to show.
@@ -29,22 +34,34 @@ final class Server implements AutoCloseable {
     private final PropagationModel model;
     private final Hub hub;
     private final CsvEventLog eventLog;
+    private final Recorder recorder;
 
-    private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog) {
+    private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog, Recorder recorder) {
         this.config = config;
         this.model = model;
         this.hub = new Hub(config, model);
         this.eventLog = eventLog;
+        this.recorder = recorder;
         if (eventLog != null) {
             hub.addListener(eventLog);
         }
+        if (recorder != null) {
+            hub.addListener(recorder);
+        }
+    }
+
+    /** As {@link #create(HubConfig, ModelProvider, ModelSettings, Path, Path)}, not recording. */
+    static Server create(HubConfig config, ModelProvider provider, ModelSettings values, Path eventLogDir) throws StartFailure {
+        return create(config, provider, values, eventLogDir, null);
     }
 
     /**
-     * The hub, a new instance of the model configured with {@code values}, and (when
-     * {@code eventLogDir} is not null) the event log there; nothing listens yet.
+     * The hub, a new instance of the model configured with {@code values}, (when
+     * {@code eventLogDir} is not null) the event log there, and (when {@code record} is not null)
+     * the recording of the run to that file (docs/replay.md); nothing listens yet.
      */
-    static Server create(HubConfig config, ModelProvider provider, ModelSettings values, Path eventLogDir) throws StartFailure {
+    static Server create(HubConfig config, ModelProvider provider, ModelSettings values, Path eventLogDir, Path record)
+            throws StartFailure {
         PropagationModel model = configured(provider, values);
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
@@ -54,7 +71,31 @@ final class Server implements AutoCloseable {
                 throw new StartFailure("cannot write the event log in " + eventLogDir + ": " + e);
             }
         }
-        return new Server(config, model, eventLog);
+        Recorder recorder = null;
+        if (record != null) {
+            try {
+                recorder = Recorder.create(record, model.name(), recordedSettings(model, values, config.shaping()));
+            } catch (IOException | RuntimeException e) {
+                if (eventLog != null) {
+                    eventLog.close();
+                }
+                throw new StartFailure("cannot record the run to " + record + ": " + e);
+            }
+        }
+        return new Server(config, model, eventLog, recorder);
+    }
+
+    /** A recording's settings: every setting the model declares with this run's value, then the four wss.shaping* keys. */
+    private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
+        Map<String, String> settings = new LinkedHashMap<>();
+        for (Setting setting : model.settings()) {
+            settings.put(setting.key(), values.getString(setting.key(), setting.defaultValue()));
+        }
+        settings.put(ShapingConfig.SHAPING, shaping.on() ? "on" : "off");
+        settings.put(ShapingConfig.RATES, shaping.rates().toString());
+        settings.put(ShapingConfig.DELAY_MS, String.valueOf(shaping.delayMs()));
+        settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
+        return settings;
     }
 
     /** The model's instance for this run, made and configured by {@link #create}. */
@@ -79,7 +120,7 @@ final class Server implements AutoCloseable {
 
     /**
      * Binds the control port and starts the model (configured before). On failure nothing listens
-     * (the hub closes what it opened) and the event log is closed.
+     * (the hub closes what it opened) and the event log and the recording are closed.
      */
     void start() throws StartFailure {
         try {
@@ -94,13 +135,25 @@ final class Server implements AutoCloseable {
         }
     }
 
+    /** Closes the event log and the recording. */
     private void closeEventLog() {
-        if (eventLog != null) {
-            eventLog.close();
+        try {
+            if (eventLog != null) {
+                eventLog.close();
+            }
+        } finally {
+            if (recorder != null) {
+                recorder.close();
+            }
         }
     }
 
-    /** Closes every socket and the event log. */
+    /** The file this run is recorded to (not the one asked for when that one existed); null when not recording. */
+    Path recording() {
+        return recorder != null ? recorder.file() : null;
+    }
+
+    /** Closes every socket, the event log and the recording. */
     @Override
     public void close() {
         try {

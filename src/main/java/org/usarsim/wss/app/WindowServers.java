@@ -1,5 +1,6 @@
 package org.usarsim.wss.app;
 
+import java.nio.file.Path;
 import java.util.concurrent.atomic.AtomicReference;
 import org.usarsim.wss.gui.Servers;
 import org.usarsim.wss.hub.core.Force;
@@ -11,12 +12,14 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.recording.Recorder;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The window's servers, built as headless mode builds its one ({@link Server}): the settings of
- * the --config file or the defaults, with the window's port, event log choice and link shaping
- * (the file's wss.force.up pins kept).
+ * the --config file or the defaults, with the window's port, event log choice, recording (to the
+ * file's wss.record, or else to a new {@code run-yyyy.MM.dd-HH.mm.ss.SSS.rec} in the event log's
+ * folder) and link shaping (the file's wss.force.up pins kept).
  */
 final class WindowServers implements Servers {
 
@@ -28,7 +31,7 @@ final class WindowServers implements Servers {
     }
 
     @Override
-    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+    public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, boolean record, ShapingConfig shaping,
             WssEventListener listener) throws Server.StartFailure {
         String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
         if (problem != null) {
@@ -36,7 +39,8 @@ final class WindowServers implements Servers {
         }
         HubConfig file = configFile.hubConfig();
         HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping, file.pins());
-        Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null);
+        Path recording = record ? configFile.record().orElseGet(() -> Recorder.runFileIn(configFile.eventLogDir())) : null;
+        Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null, recording);
         server.hub().addListener(listener);
         current.set(server);
         try {

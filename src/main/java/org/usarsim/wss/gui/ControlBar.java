@@ -1,5 +1,6 @@
 package org.usarsim.wss.gui;
 
+import java.awt.FlowLayout;
 import java.awt.GridBagConstraints;
 import java.awt.GridBagLayout;
 import java.awt.Insets;
@@ -14,9 +15,9 @@ import org.usarsim.wss.shaping.Bitrate;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * The top of the window: "Listen on port:", "Enable Logging", Start / Stop, "Propagation Model:"
+ * The top of the window: "Listen on port:", "Enable Logging" and "Record", Start / Stop, "Propagation Model:"
  * and "Configure", then what the link shaping of the next Start (or of the server that runs) is,
- * and "Link shaping...". Named port, eventLog, start, model, configure, shapingSummary, shaping.
+ * and "Link shaping...". Named port, eventLog, record, start, model, configure, shapingSummary, shaping.
  */
 final class ControlBar extends JPanel {
 
@@ -25,6 +26,7 @@ final class ControlBar extends JPanel {
 
     final JTextField port = new JTextField(8);
     final JCheckBox eventLog = new JCheckBox("Enable Logging");
+    final JCheckBox record = new JCheckBox("Record");
     final JButton start = new JButton("Start");
     final JComboBox<String> model;
     final JButton configure = new JButton("Configure");
@@ -39,6 +41,9 @@ final class ControlBar extends JPanel {
         port.setDisabledTextColor(DialogParts.READ_ONLY_TEXT); // locked while running, and still readable
         eventLog.setName("eventLog");
         eventLog.setToolTipText("Write every event to a CSV file (wss.eventLog)");
+        record.setName("record");
+        record.setToolTipText("Record the run (positions, strengths, breaks, resumes) to run-<time>.rec in the event log's folder,"
+                + " or to the --config file's wss.record, to replay it later (docs/replay.md)");
         start.setName("start");
         model.setName("model");
         configure.setName("configure");
@@ -57,7 +62,10 @@ final class ControlBar extends JPanel {
         add(port, c);
         c.weightx = 0;
         c.gridx = 2;
-        add(eventLog, c);
+        JPanel boxes = new JPanel(new FlowLayout(FlowLayout.LEFT, 0, 0));
+        boxes.add(eventLog);
+        boxes.add(record);
+        add(boxes, c);
         c.gridx = 3;
         add(start, c);
         c.gridx = 0;
@@ -93,12 +101,13 @@ final class ControlBar extends JPanel {
         shapingSummary.setToolTipText("Rates by strength (dBm:rate): " + config.rates());
     }
 
-    /** Event thread. Port, model and logging are locked unless stopped; Configure follows the model. */
+    /** Event thread. Port, model, logging and recording are locked unless stopped; Configure follows the model. */
     void show(State state, boolean configurable) {
         boolean stopped = state == State.STOPPED;
         port.setEnabled(stopped);
         model.setEnabled(stopped);
         eventLog.setEnabled(stopped);
+        record.setEnabled(stopped);
         start.setText(switch (state) {
             case STOPPED -> "Start";
             case STARTING -> "Starting...";

@@ -91,6 +91,7 @@ public final class MainWindow {
         bar = new ControlBar(List.copyOf(models.keySet()));
         bar.port.setText(launch.port() != null ? launch.port() : windowPreferences.port());
         bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : windowPreferences.eventLog());
+        bar.record.setSelected(launch.record() != null ? launch.record() : windowPreferences.record());
         String model = launch.model() != null ? launch.model() : windowPreferences.model();
         if (models.containsKey(model)) {
             bar.model.setSelectedItem(model);
@@ -228,13 +229,14 @@ public final class MainWindow {
         String port = bar.port.getText().strip();
         ModelProvider model = selectedModel();
         boolean eventLog = bar.eventLog.isSelected();
+        boolean record = bar.record.isSelected();
         ModelSettings values = new ModelSettings(nextRunValues.values(model.model()));
         ShapingConfig shaping = nextRunShaping.config();
         setState(ControlBar.State.STARTING);
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, values, eventLog, shaping, view);
+                return servers.start(port, model, values, eventLog, record, shaping, view);
             }
 
             @Override
@@ -253,7 +255,7 @@ public final class MainWindow {
                 } catch (InterruptedException e) {
                     throw new IllegalStateException("the event thread was interrupted", e);
                 }
-                windowPreferences.storeRun(port, model.name(), eventLog);
+                windowPreferences.storeRun(port, model.name(), eventLog, record);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
                 view.attach(running, running.model());

@@ -18,14 +18,15 @@ public interface Servers {
     /**
      * Starts a server on that control port with a new instance of that model
      * ({@link ModelProvider#instanceForRun}) configured with {@code values}, the CSV event log when
-     * {@code eventLog}, its links shaped as {@code shaping} says (the window's "Link shaping"), and
+     * {@code eventLog}, the run recorded when {@code record} (docs/replay.md: to the --config file's
+     * wss.record, or else to a new file in the event log's folder), its links shaped as {@code shaping} says (the window's "Link shaping"), and
      * {@code listener} receiving its events from the first robot on. Slow (a model may connect to
      * the simulator): never on the event thread.
      *
      * @throws Exception when it does not start; the message says why in one line, and nothing is
      *                   left listening
      */
-    Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, ShapingConfig shaping,
+    Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, boolean record, ShapingConfig shaping,
             WssEventListener listener) throws Exception;
 
     /** A server that runs. */
@@ -55,7 +56,7 @@ public interface Servers {
         /** Gives the pair back to the model (never on the event thread). */
         void release(String robotA, String robotB);
 
-        /** Stops it as SIGTERM does: every socket closed, the event log closed. */
+        /** Stops it as SIGTERM does: every socket closed, the event log and the recording closed. */
         void stop();
     }
 }

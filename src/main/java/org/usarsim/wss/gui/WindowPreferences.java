@@ -10,7 +10,7 @@ import org.usarsim.wss.protocol.ControlPort;
 
 /**
  * What the window remembers between runs, in {@code java.util.prefs}: the port, the model, "Enable
- * Logging", the window's bounds and the "Link shaping" dialog's four {@code wss.shaping*} values
+ * Logging", "Record", the window's bounds and the "Link shaping" dialog's four {@code wss.shaping*} values
  * (under their keys), under {@code org/usarsim/wss/window} (tests pass a throw-away node). The
  * models' own settings are {@link ModelPreferences}'.
  */
@@ -39,6 +39,11 @@ public final class WindowPreferences {
 
     public boolean eventLog() {
         return node.getBoolean("eventLog", false);
+    }
+
+    /** "Record" as the last start left it. */
+    public boolean record() {
+        return node.getBoolean("record", false);
     }
 
     /**
@@ -95,10 +100,11 @@ public final class WindowPreferences {
     }
 
     /** Stores what a start used. */
-    void storeRun(String port, String model, boolean eventLog) {
+    void storeRun(String port, String model, boolean eventLog, boolean record) {
         node.put("port", port);
         node.put("model", model);
         node.putBoolean("eventLog", eventLog);
+        node.putBoolean("record", record);
         flush();
     }
 

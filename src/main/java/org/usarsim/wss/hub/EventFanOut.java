@@ -7,6 +7,7 @@ import java.util.function.Consumer;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.EventSink;
+import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.WssEventListener;
 
 /**
@@ -118,6 +119,11 @@ final class EventFanOut implements EventSink {
     @Override
     public void pairReleased(String first, String second) {
         each(l -> l.pairReleased(first, second));
+    }
+
+    @Override
+    public void polled(ModelPoll poll) {
+        each(l -> l.polled(poll));
     }
 
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */

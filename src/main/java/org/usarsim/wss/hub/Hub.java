@@ -41,6 +41,7 @@ import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.hub.tcp.Shaping;
 import org.usarsim.wss.hub.tcp.SocketBuffers;
 import org.usarsim.wss.hub.tcp.Switchboard;
+import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Replay;
@@ -682,6 +683,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         @Override
         public void connectionInRange(String from, String to) {
             append(new HubEvent.InRange(from, to));
+        }
+
+        @Override
+        public void polled(ModelPoll poll) {
+            append(new HubEvent.Polled(poll));
         }
     }
 }

@@ -3,6 +3,7 @@ package org.usarsim.wss.hub.core;
 import java.net.InetAddress;
 import java.util.List;
 import java.util.logging.Level;
+import org.usarsim.wss.model.ModelPoll;
 
 /**
  * What happened in the hub, as data: the core appends these to {@link Changes} in the order the
@@ -91,6 +92,13 @@ public sealed interface HubEvent {
     record OutOfBattery(String robot) implements HubEvent {
         public void deliverTo(EventSink sink) {
             sink.robotOutOfBattery(robot);
+        }
+    }
+
+    /** The model's: what one poll of the simulator learned and decided (a recording writes it). */
+    record Polled(ModelPoll poll) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.polled(poll);
         }
     }
 

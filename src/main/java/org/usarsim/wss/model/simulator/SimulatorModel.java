@@ -1,6 +1,7 @@
 package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -12,6 +13,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.DialogLayout;
+import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
@@ -366,7 +368,8 @@ public abstract class SimulatorModel implements PropagationModel {
                 return;
             }
             learnWalls(simulator);
-            for (PollStep.Kick kick : PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed))) {
+            List<PollStep.Kick> kicks = PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed));
+            for (PollStep.Kick kick : kicks) {
                 log.info("kicking " + kick.robot() + ": " + kick.reason());
                 if (kick.batteryEmpty()) {
                     listener.robotOutOfBattery(kick.robot());
@@ -382,6 +385,7 @@ public abstract class SimulatorModel implements PropagationModel {
                     SimulatorModel.this::strength);
             // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
             snapshot = decision.snapshot();
+            listener.polled(polled(listed, kicks, decision.links(), obstacles));
             // Every pair's state in one go: a robot that drove out of range of many stops all their ports together.
             Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
             decision.links().forEach(link -> inRange.put(link.pair(), link.live()));
@@ -400,6 +404,26 @@ public abstract class SimulatorModel implements PropagationModel {
                 }
             }
             failure = null;
+        }
+
+        /** What this poll learned and decided, for the listeners (a recording): sent before its breaks and resumes are applied. */
+        private ModelPoll polled(Map<String, ReportedRobot> listed, List<PollStep.Kick> kicks, List<PollStep.Link> links,
+                Map<RobotPair, Double> obstacles) {
+            List<ModelPoll.Robot> robots = new ArrayList<>(listed.size());
+            for (ReportedRobot robot : listed.values()) {
+                robots.add(new ModelPoll.Robot(robot.name(), new Position(robot.x(), robot.y(), robot.z()), robot.batteryEmpty()));
+            }
+            List<ModelPoll.Kick> kicked = new ArrayList<>(kicks.size());
+            for (PollStep.Kick kick : kicks) {
+                kicked.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
+            }
+            List<ModelPoll.Pair> pairs = new ArrayList<>(links.size());
+            for (PollStep.Link link : links) {
+                RobotPair pair = link.pair();
+                pairs.add(new ModelPoll.Pair(pair.first(), pair.second(), link.strength(), obstacles.getOrDefault(pair, Double.NaN),
+                        link.live()));
+            }
+            return new ModelPoll(robots, kicked, pairs, walls);
         }
 
         /** Takes the walls of a new connection once they are known, and says what they are, once per connection. */

@@ -8,11 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
@@ -23,7 +19,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * every other. Sections ({@code --only}):
  * <ul>
  * <li>{@code dns}: the WSS as its own process (under {@code --limit} descriptors), N robots
- * register and ask all N(N-1) DNS at once, one thread per robot; how many were answered with a
+ * register and ask all N(N-1) DNS at once ({@link MeshAsker}); how many were answered with a
  * port, how long all took, the server's threads, descriptors and resident memory;</li>
  * <li>{@code break}: a hub in this JVM with the same mesh; the model's breaks of one robot with
  * every other (2(N-1) ports stop listening), then its resumes, timed, for {@code --rounds}
@@ -174,48 +170,19 @@ public final class MeshBenchmark {
         }
     }
 
-    /** Every robot asks DNS for every other, one thread per robot, all at once. */
-    private static Mesh askAll(List<ControlClient> clients) throws Exception {
+    /** Every robot asks DNS for every other, all at once ({@link MeshAsker}). */
+    private static Mesh askAll(List<ControlClient> clients) throws IOException {
         return askAll(clients, "R");
     }
 
-    private static Mesh askAll(List<ControlClient> clients, String prefix) throws Exception {
-        int robots = clients.size();
-        int[][] ports = new int[robots][robots];
-        AtomicInteger refused = new AtomicInteger();
-        ExecutorService pool = Executors.newFixedThreadPool(robots);
-        try {
-            java.util.concurrent.CountDownLatch go = new java.util.concurrent.CountDownLatch(1);
-            List<Future<?>> asking = new ArrayList<>();
-            for (int i = 0; i < robots; i++) {
-                int from = i;
-                asking.add(pool.submit(() -> {
-                    go.await();
-                    for (int to = 0; to < robots; to++) {
-                        if (to != from) {
-                            try {
-                                ports[from][to] = clients.get(from).dns(prefix + to);
-                            } catch (IOException e) {
-                                if (refused.getAndIncrement() == 0) {
-                                    System.out.println("  first refusal: " + e.getMessage());
-                                }
-                            }
-                        }
-                    }
-                    return null;
-                }));
-            }
-            long start = System.nanoTime();
-            go.countDown();
-            for (Future<?> done : asking) {
-                done.get();
-            }
-            double seconds = (System.nanoTime() - start) / 1e9;
-            int asked = robots * (robots - 1);
-            return new Mesh(ports, asked, asked - refused.get(), refused.get(), seconds);
-        } finally {
-            pool.shutdownNow();
+    private static Mesh askAll(List<ControlClient> clients, String prefix) throws IOException {
+        MeshAsker.Answers answers = MeshAsker.askAll(clients, prefix);
+        if (answers.firstRefusal() != null) {
+            System.out.println("  first refusal: " + answers.firstRefusal());
         }
+        int robots = clients.size();
+        int asked = robots * (robots - 1);
+        return new Mesh(answers.ports(), asked, asked - answers.refused(), answers.refused(), answers.seconds());
     }
 
     private static void row(String when, ProcessStats stats) {

@@ -20,8 +20,11 @@ final class MeshAsker {
     /** How long the server may leave every robot without a reply before the mesh is given up. */
     private static final int REPLY_TIMEOUT_MS = 10_000;
 
-    /** ports[i][j]: the port from robot i to robot j (0: refused); how many were refused, the first refusal. */
-    record Answers(int[][] ports, int refused, String firstRefusal, double seconds) {
+    /**
+     * ports[i][j]: the port from robot i to robot j (0: refused); how many were refused, the first
+     * refusal; the seconds for all, and when each tenth of the replies had come (the JIT's part shows).
+     */
+    record Answers(int[][] ports, int refused, String firstRefusal, double seconds, double[] tenths) {
     }
 
     private MeshAsker() {
@@ -32,6 +35,7 @@ final class MeshAsker {
         int robots = clients.size();
         int[][] ports = new int[robots][robots];
         Robot[] asking = new Robot[robots];
+        double[] tenths = new double[10];
         long start;
         try (Selector selector = Selector.open()) {
             for (int i = 0; i < robots; i++) {
@@ -41,6 +45,8 @@ final class MeshAsker {
                 channel.register(selector, SelectionKey.OP_READ, asking[i]);
             }
             start = System.nanoTime();
+            int asked = robots * (robots - 1);
+            int[] replies = new int[1];
             int left = 0;
             for (Robot robot : asking) {
                 if (robot.askNext()) {
@@ -52,9 +58,17 @@ final class MeshAsker {
                 IOException[] failed = new IOException[1];
                 int ready = selector.select(key -> {
                     try {
-                        if (!((Robot) key.attachment()).readReplies()) {
+                        Robot robot = (Robot) key.attachment();
+                        int before = robot.replies;
+                        if (!robot.readReplies()) {
                             done[0]++;
                         }
+                        for (int reply = replies[0] + 1; reply <= replies[0] + robot.replies - before; reply++) {
+                            if (reply % Math.max(1, asked / 10) == 0 && reply / Math.max(1, asked / 10) <= 10) {
+                                tenths[reply / Math.max(1, asked / 10) - 1] = (System.nanoTime() - start) / 1e9;
+                            }
+                        }
+                        replies[0] += robot.replies - before;
                     } catch (IOException e) {
                         failed[0] = e;
                     }
@@ -80,7 +94,7 @@ final class MeshAsker {
                 first = robot.firstRefusal;
             }
         }
-        return new Answers(ports, refused, first, seconds);
+        return new Answers(ports, refused, first, seconds, tenths);
     }
 
     /** One robot's questions: R{from} asks DNS of each other robot in turn. */
@@ -96,6 +110,7 @@ final class MeshAsker {
         private String expected;
         private int refused;
         private String firstRefusal;
+        private int replies;
 
         Robot(int from, int robots, String prefix, SocketChannel channel, int[] ports) {
             this.from = from;
@@ -138,6 +153,7 @@ final class MeshAsker {
                     String line = new String(in.array(), lineStart, i - lineStart, StandardCharsets.US_ASCII).strip();
                     lineStart = i + 1;
                     answered(line);
+                    replies++;
                     asking = askNext();
                 }
             }

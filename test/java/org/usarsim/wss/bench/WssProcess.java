@@ -17,7 +17,8 @@ import java.util.regex.Pattern;
 
 /**
  * The WSS as users run it: a separate JVM, headless, on 127.0.0.1 with an OS-chosen control port.
- * {@code -Dwss.bench.jvmOptions="..."} gives its JVM options (a flight recording, say).
+ * {@code -Dwss.bench.jvmOptions="..."} gives its JVM options (a flight recording, say), and
+ * {@code -Dwss.bench.properties="key=value ..."} settings over the benchmark's own.
  */
 final class WssProcess implements AutoCloseable {
 
@@ -63,6 +64,10 @@ final class WssProcess implements AutoCloseable {
         Path config = Files.createTempFile("wss-bench", ".properties");
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));
+        String more = System.getProperty("wss.bench.properties", "").trim();
+        if (!more.isEmpty()) {
+            lines.addAll(List.of(more.split("\\s+"))); // after the others: the last of a key counts
+        }
         Files.write(config, lines);
         List<String> command = new ArrayList<>();
         if (descriptors > 0) {

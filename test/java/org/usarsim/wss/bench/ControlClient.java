@@ -1,20 +1,28 @@
 package org.usarsim.wss.bench;
 
+import java.io.BufferedInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-/** A robot's control connection, as little as the benchmark needs. */
+/**
+ * A robot's control connection, as little as the benchmark needs. Its replies are read through a
+ * buffer (a read per byte cost the robots' side 36 system calls a DNS); the connection is a
+ * channel, so that {@link MeshAsker} can drive many from one thread.
+ */
 final class ControlClient implements AutoCloseable {
 
     private static final Pattern DNS_PORT = Pattern.compile("DNSREPLY \\{Robot \\S+\\} \\{Port (\\d+)\\}");
 
+    private final SocketChannel channel;
     private final Socket socket;
+    /** Buffered: holds nothing between two replies, as the server never writes unasked. */
     private final InputStream in;
 
     ControlClient(int wssPort, String name, int acceptPort) throws IOException {
@@ -26,16 +34,22 @@ final class ControlClient implements AutoCloseable {
     }
 
     private ControlClient(int wssPort) throws IOException {
-        socket = new Socket();
+        channel = SocketChannel.open();
+        socket = channel.socket();
         socket.connect(new InetSocketAddress("127.0.0.1", wssPort), 5000);
         socket.setSoTimeout(10_000);
         socket.setTcpNoDelay(true);
-        in = socket.getInputStream();
+        in = new BufferedInputStream(socket.getInputStream(), 512);
     }
 
     /** An operator's control connection from 127.0.0.1: no INIT, for FORCE. */
     static ControlClient operator(int wssPort) throws IOException {
         return new ControlClient(wssPort);
+    }
+
+    /** The connection itself, for {@link MeshAsker} (non-blocking while it asks, blocking again after). */
+    SocketChannel channel() {
+        return channel;
     }
 
     /** FORCE {Robot a} {Peer b} {State Up} {Rate rate} {Delay delayMs}: pins the pair's rate and delay. */
@@ -72,6 +86,6 @@ final class ControlClient implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        socket.close();
+        channel.close();
     }
 }

@@ -8,11 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
@@ -23,7 +19,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * every other. Sections ({@code --only}):
  * <ul>
  * <li>{@code dns}: the WSS as its own process (under {@code --limit} descriptors), N robots
- * register and ask all N(N-1) DNS at once, one thread per robot; how many were answered with a
+ * register and ask all N(N-1) DNS at once ({@link MeshAsker}); how many were answered with a
  * port, how long all took, the server's threads, descriptors and resident memory;</li>
  * <li>{@code break}: a hub in this JVM with the same mesh; the model's breaks of one robot with
  * every other (2(N-1) ports stop listening), then its resumes, timed, for {@code --rounds}
@@ -57,6 +53,7 @@ public final class MeshBenchmark {
         int every = 1;
         long rate = 64 * 1024;
         int warmUp = 0;
+        int hold = 0;
         String classes = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
@@ -69,6 +66,7 @@ public final class MeshBenchmark {
                 case "--rate" -> rate = Long.parseLong(args[++i]);
                 case "--warmup" -> warmUp = Integer.parseInt(args[++i]);
                 case "--classes" -> classes = args[++i];
+                case "--hold" -> hold = Integer.parseInt(args[++i]);
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
@@ -76,7 +74,7 @@ public final class MeshBenchmark {
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), only, robots,
                 java.time.LocalDateTime.now());
         switch (only) {
-            case "dns" -> dns(robots, limit, warmUp, classes);
+            case "dns" -> dns(robots, limit, warmUp, hold, classes);
             case "break" -> breaks(robots, rounds);
             case "traffic" -> traffic(robots, limit, every, rate, seconds);
             case "churn" -> churn(robots, limit == 0 ? 1024 : limit, classes);
@@ -104,7 +102,8 @@ public final class MeshBenchmark {
                 .filter(property -> !property.startsWith("wss.maxPortsPerAddress")).toArray(String[]::new));
     }
 
-    private static void dns(int robots, int limit, int warmUp, String classes) throws Exception {
+    /** @param hold seconds to wait after the mesh before the robots leave (to look at the server: a profiler, strace) */
+    private static void dns(int robots, int limit, int warmUp, int hold, String classes) throws Exception {
         try (WssProcess wss = wss(classes, limit, perAddress(robots))) {
             System.out.printf("  descriptor limit of the WSS: %s; wss.maxPortsPerAddress: %s%n", limit > 0 ? limit : "the shell's",
                     perAddress(robots));
@@ -125,10 +124,12 @@ public final class MeshBenchmark {
             row(robots + " robots registered", registered);
             double serverCpu = ProcessStats.cpuSeconds(wss.pid());
             double ownCpu = ProcessStats.cpuSeconds(ProcessHandle.current().pid());
+            java.util.Map<String, Long> serverThreads = ProcessStats.cpuByKind(wss.pid());
             Mesh mesh = askAll(clients);
             System.out.printf(Locale.ROOT, "  %d DNS in %.2f s: %d answered with a port, %d refused (CPU meanwhile: the WSS %.2f s,"
                     + " the robots %.2f s)%n", mesh.asked(), mesh.seconds(), mesh.answered(), mesh.refused(),
                     ProcessStats.cpuSeconds(wss.pid()) - serverCpu, ProcessStats.cpuSeconds(ProcessHandle.current().pid()) - ownCpu);
+            System.out.println("  the WSS's CPU by thread: " + ProcessStats.cpuBetween(serverThreads, ProcessStats.cpuByKind(wss.pid())));
             Set<Integer> listening = ListeningPorts.now();
             long listens = mesh.numbers().stream().filter(listening::contains).count();
             System.out.printf("  WSS ports listening (/proc/net/tcp): %d of %d%n", listens, mesh.answered());
@@ -137,6 +138,10 @@ public final class MeshBenchmark {
             System.out.printf(Locale.ROOT, "  threads %d (target at most %d); descriptors %d, %.2f a port (the mesh's, beyond those"
                     + " before it and its %d control connections)%n", after.threads(), 100 + robots, after.descriptors(),
                     (after.descriptors() - registered.descriptors()) / (double) Math.max(1, mesh.answered()), robots);
+            if (hold > 0) {
+                System.out.println("  holding the mesh for " + hold + " s");
+                Thread.sleep(TimeUnit.SECONDS.toMillis(hold));
+            }
             for (ControlClient client : clients) {
                 client.close();
             }
@@ -174,48 +179,21 @@ public final class MeshBenchmark {
         }
     }
 
-    /** Every robot asks DNS for every other, one thread per robot, all at once. */
-    private static Mesh askAll(List<ControlClient> clients) throws Exception {
+    /** Every robot asks DNS for every other, all at once ({@link MeshAsker}). */
+    private static Mesh askAll(List<ControlClient> clients) throws IOException {
         return askAll(clients, "R");
     }
 
-    private static Mesh askAll(List<ControlClient> clients, String prefix) throws Exception {
-        int robots = clients.size();
-        int[][] ports = new int[robots][robots];
-        AtomicInteger refused = new AtomicInteger();
-        ExecutorService pool = Executors.newFixedThreadPool(robots);
-        try {
-            java.util.concurrent.CountDownLatch go = new java.util.concurrent.CountDownLatch(1);
-            List<Future<?>> asking = new ArrayList<>();
-            for (int i = 0; i < robots; i++) {
-                int from = i;
-                asking.add(pool.submit(() -> {
-                    go.await();
-                    for (int to = 0; to < robots; to++) {
-                        if (to != from) {
-                            try {
-                                ports[from][to] = clients.get(from).dns(prefix + to);
-                            } catch (IOException e) {
-                                if (refused.getAndIncrement() == 0) {
-                                    System.out.println("  first refusal: " + e.getMessage());
-                                }
-                            }
-                        }
-                    }
-                    return null;
-                }));
-            }
-            long start = System.nanoTime();
-            go.countDown();
-            for (Future<?> done : asking) {
-                done.get();
-            }
-            double seconds = (System.nanoTime() - start) / 1e9;
-            int asked = robots * (robots - 1);
-            return new Mesh(ports, asked, asked - refused.get(), refused.get(), seconds);
-        } finally {
-            pool.shutdownNow();
+    private static Mesh askAll(List<ControlClient> clients, String prefix) throws IOException {
+        MeshAsker.Answers answers = MeshAsker.askAll(clients, prefix);
+        System.out.println("  each tenth of the replies in (s): " + java.util.Arrays.stream(answers.tenths())
+                .mapToObj(t -> String.format(Locale.ROOT, "%.2f", t)).collect(java.util.stream.Collectors.joining(" ")));
+        if (answers.firstRefusal() != null) {
+            System.out.println("  first refusal: " + answers.firstRefusal());
         }
+        int robots = clients.size();
+        int asked = robots * (robots - 1);
+        return new Mesh(answers.ports(), asked, asked - answers.refused(), answers.refused(), answers.seconds());
     }
 
     private static void row(String when, ProcessStats stats) {

@@ -94,6 +94,36 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         return total;
     }
 
+    /** The kinds of thread {@link #cpuByKind} adds up apart, by the start of their names; the rest are "other". */
+    private static final List<String> KINDS = List.of("control ", "wss-port-accept", "wss-port-handov", "C2 CompilerThre",
+            "C1 CompilerThre", "GC Thread", "G1 ");
+
+    /** Time on a CPU (schedstat, ns) of the process's threads alive now, added up by kind ({@link #KINDS}, and "other"). */
+    static Map<String, Long> cpuByKind(long pid) throws IOException {
+        Map<String, Long> byKind = new java.util.TreeMap<>();
+        try (Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
+            for (Path task : tasks.toList()) {
+                String name = comm(task);
+                String kind = KINDS.stream().filter(name::startsWith).findFirst().orElse("other").strip();
+                try {
+                    String[] fields = Files.readString(task.resolve("schedstat")).strip().split(" ");
+                    byKind.merge(kind, Long.parseLong(fields[RUN_NANOS]), Long::sum);
+                } catch (IOException | RuntimeException e) {
+                    // the thread ended while we looked, or the kernel keeps no schedstat
+                }
+            }
+        }
+        return byKind;
+    }
+
+    /** What each kind of {@link #cpuByKind} grew by between two readings, in seconds, as "kind 1.23 s, ...". */
+    static String cpuBetween(Map<String, Long> before, Map<String, Long> after) {
+        StringBuilder text = new StringBuilder();
+        after.forEach((kind, nanos) -> text.append(text.length() == 0 ? "" : ", ").append(kind).append(' ')
+                .append(String.format(java.util.Locale.ROOT, "%.2f s", (nanos - before.getOrDefault(kind, 0L)) / 1e9)));
+        return text.toString();
+    }
+
     /** The process's CPU time so far (user and system), in seconds. */
     static double cpuSeconds(long pid) throws IOException {
         return cpuNanos(pid) / 1e9;

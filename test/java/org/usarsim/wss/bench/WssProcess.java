@@ -15,7 +15,11 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 
-/** The WSS as users run it: a separate JVM, headless, on 127.0.0.1 with an OS-chosen control port. */
+/**
+ * The WSS as users run it: a separate JVM, headless, on 127.0.0.1 with an OS-chosen control port.
+ * {@code -Dwss.bench.jvmOptions="..."} gives its JVM options (a flight recording, say), and
+ * {@code -Dwss.bench.properties="key=value ..."} settings over the benchmark's own.
+ */
 final class WssProcess implements AutoCloseable {
 
     private static final Pattern LISTENING = Pattern.compile("listening for robots on [^:]+:(\\d+)");
@@ -60,13 +64,21 @@ final class WssProcess implements AutoCloseable {
         Path config = Files.createTempFile("wss-bench", ".properties");
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));
+        String more = System.getProperty("wss.bench.properties", "").trim();
+        if (!more.isEmpty()) {
+            lines.addAll(List.of(more.split("\\s+"))); // after the others: the last of a key counts
+        }
         Files.write(config, lines);
         List<String> command = new ArrayList<>();
         if (descriptors > 0) {
             command.addAll(List.of("bash", "-c", "ulimit -n " + descriptors + " && exec \"$@\"", "bash"));
         }
-        command.addAll(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", classpath, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString()));
+        command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
+        String jvmOptions = System.getProperty("wss.bench.jvmOptions", "").trim();
+        if (!jvmOptions.isEmpty()) {
+            command.addAll(List.of(jvmOptions.split("\\s+"))); // a JFR recording of the server, say
+        }
+        command.addAll(List.of("-cp", classpath, "org.usarsim.wss.app.Main", "--headless", "--config", config.toString()));
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
         List<String> all = Collections.synchronizedList(new ArrayList<>());

@@ -1,6 +1,7 @@
 package org.usarsim.wss.app;
 
 import java.io.PrintStream;
+import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
@@ -16,7 +17,9 @@ import org.usarsim.wss.LogText;
 /** Sends the server's log to standard output (Main.run's {@code out}), one line per event, each with a timestamp. */
 final class LogSetup {
 
-    private static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS");
+    /** How a line's time is written (by {@link OneLine#time}: this to the second, then the milliseconds). */
+    static final DateTimeFormatter TIME = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss.SSS");
+    private static final DateTimeFormatter SECOND = DateTimeFormatter.ofPattern("yyyy-MM-dd HH:mm:ss");
 
     private LogSetup() {
     }
@@ -26,11 +29,16 @@ final class LogSetup {
      * characters escaped ({@link LogText}).
      */
     static final class OneLine extends Formatter {
+        /** The second (and the zone) formatted last, and its text up to the milliseconds. */
+        private long second = Long.MIN_VALUE;
+        private ZoneId zone;
+        private String secondText;
+
         @Override
         public String format(LogRecord record) {
-            StringBuilder line = new StringBuilder(128)
-                    .append(TIME.format(LocalDateTime.ofInstant(record.getInstant(), ZoneId.systemDefault())))
-                    .append(' ').append(record.getLevel().getName()).append(' ')
+            StringBuilder line = new StringBuilder(128);
+            time(record.getInstant(), line);
+            line.append(' ').append(record.getLevel().getName()).append(' ')
                     .append(LogText.escape(formatMessage(record)));
             Throwable thrown = record.getThrown();
             if (thrown != null) {
@@ -42,6 +50,23 @@ final class LogSetup {
                 line.append(LogText.escape(about.append(')').toString().replace('\n', ' ')));
             }
             return line.append(System.lineSeparator()).toString();
+        }
+
+        /**
+         * The time as {@link #TIME} writes it. The date and time to the second are formatted once
+         * a second: a mesh forming writes thousands of lines a second (a WSS port allocated per
+         * DNS), and the formatter was a tenth of the server's work for each.
+         */
+        private synchronized void time(Instant instant, StringBuilder line) {
+            ZoneId now = ZoneId.systemDefault();
+            if (instant.getEpochSecond() != second || !now.equals(zone)) {
+                second = instant.getEpochSecond();
+                zone = now;
+                secondText = SECOND.format(LocalDateTime.ofInstant(Instant.ofEpochSecond(second), now));
+            }
+            int millis = instant.getNano() / 1_000_000;
+            line.append(secondText).append('.').append((char) ('0' + millis / 100)).append((char) ('0' + millis / 10 % 10))
+                    .append((char) ('0' + millis % 10));
         }
     }
 

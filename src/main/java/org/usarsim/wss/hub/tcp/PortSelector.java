@@ -42,8 +42,8 @@ public final class PortSelector implements AutoCloseable {
     private final Switchboard switchboard;
     private final HandOver handOver;
     private final Queue<Runnable> tasks = new ConcurrentLinkedQueue<>();
-    /** Guarded by this: opened with the first listener. */
-    private Selector selector;
+    /** Opened with the first listener, under this object's monitor; read without it once open. */
+    private volatile Selector selector;
     private Thread thread;
     private Thread handOverThread;
     private volatile boolean closed;
@@ -74,7 +74,7 @@ public final class PortSelector implements AutoCloseable {
 
     /** Starts accepting on a bound, listening socket (the selector's thread registers it). */
     void register(PortListener listener) throws IOException {
-        listener.channel.configureBlocking(false);
+        listener.channel.configureBlocking(false); // nothing to do for one bound by PortSockets: non-blocking already
         submit(() -> {
             try {
                 listener.key = listener.channel.register(selector, SelectionKey.OP_ACCEPT, listener);
@@ -120,7 +120,7 @@ public final class PortSelector implements AutoCloseable {
         }
     }
 
-    private synchronized Selector selectorNow() {
+    private Selector selectorNow() {
         return selector;
     }
 
@@ -130,14 +130,25 @@ public final class PortSelector implements AutoCloseable {
         current.wakeup();
     }
 
-    /** The selector, opened and its threads started with the first listener. */
-    private synchronized Selector opened() throws IOException {
+    /**
+     * The selector, opened and its threads started with the first listener. Once open, without
+     * this object's monitor: every DNS asks first, and a hundred robots asking at once queued on it.
+     */
+    private Selector opened() throws IOException {
+        Selector open = selector;
+        if (open != null && !closed) {
+            return open;
+        }
+        return openedFirst();
+    }
+
+    private synchronized Selector openedFirst() throws IOException {
         if (closed) {
             throw new IOException("the WSS has stopped");
         }
         if (selector == null) {
             Selector opened = Selector.open();
-            Thread accepting = new Thread(this::run, "wss-port-accept");
+            Thread accepting = new Thread(() -> run(opened), "wss-port-accept"); // before the field is set
             accepting.setDaemon(true);
             Thread handing = new Thread(handOver, "wss-port-handover");
             handing.setDaemon(true);
@@ -156,8 +167,7 @@ public final class PortSelector implements AutoCloseable {
         return selector;
     }
 
-    private void run() {
-        Selector selector = selectorNow();
+    private void run(Selector selector) {
         while (!closed) {
             try {
                 if (tasks.isEmpty() && !acceptAgain) {

@@ -197,6 +197,7 @@ public final class PortSockets {
         try {
             share(channel);
             channel.bind(address, BACKLOG);
+            channel.configureBlocking(false); // for the selector: here, not under the hub's lock, where a DNS's port joins it
             return channel;
         } catch (IOException | RuntimeException e) {
             channel.close();

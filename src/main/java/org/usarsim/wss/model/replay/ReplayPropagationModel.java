@@ -53,7 +53,7 @@ public final class ReplayPropagationModel implements PropagationModel {
     private static final long TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(20);
 
     static final List<Setting> SETTINGS = List.of(
-            Setting.text("replay.file", "Recording", "").noun("the path of a recording").orEmpty("none: Start refuses it")
+            Setting.text("replay.file", "Recording", "").noun("the path of a recording").orEmpty("not set yet; Start refuses it")
                     .help("The recording to replay (wss.record writes one; .gz read as gzip), relative to the working directory"),
             Setting.number("replay.speed", "Speed", "1").from(Replay.MIN_SPEED).to(Replay.MAX_SPEED)
                     .help("How fast the replay runs: 1 is as recorded, 2 twice as fast, 0.25 a quarter"),
@@ -179,7 +179,8 @@ public final class ReplayPropagationModel implements PropagationModel {
         Set<String> robots = new TreeSet<>();
         recording.polls().forEach(poll -> poll.robots().forEach(robot -> robots.add(robot.name())));
         log.info("replaying " + file + ": recorded with " + recording.header().model() + ", "
-                + minutesSeconds(recording.durationMillis()) + " long, " + recording.polls().size() + " polls, "
+                + minutesSeconds(recording.durationMillis()) + " long, " + recording.polls().size()
+                + (recording.polls().size() == 1 ? " poll, " : " polls, ")
                 + robots.size() + (robots.size() == 1 ? " robot " : " robots ") + robots + "; from "
                 + minutesSeconds(startMillis) + " at " + speed + "x" + (loop ? ", looping" : ""));
         if (recording.cutShort()) {

@@ -71,7 +71,7 @@ class HeadlessReplayTest {
             int port = Integer.parseInt(server.awaitListening().group(1));
             server.awaitLine(line -> line.contains("the replay reached its end at 00:00"));
             assertTrue(server.stdoutSoFar().stream().anyMatch(line -> line.contains("INFO replaying " + recording
-                    + ": recorded with ObstaclePropagationModel, 00:00 long, 1 poll, 2 robots [Alpha, Bravo]; from 00:00 at 8.0x")),
+                    + ": recorded with ObstaclePropagationModel, 00:00 long, 1 poll, 2 robots [Alpha, Bravo]; from 00:00 at 8x")),
                     server.stdoutSoFar().toString());
             try (TestRobot alpha = new TestRobot(port, "127.0.0.1");
                     TestRobot bravo = new TestRobot(port, "127.0.0.1");

@@ -182,7 +182,7 @@ public final class ReplayPropagationModel implements PropagationModel {
                 + minutesSeconds(recording.durationMillis()) + " long, " + recording.polls().size()
                 + (recording.polls().size() == 1 ? " poll, " : " polls, ")
                 + robots.size() + (robots.size() == 1 ? " robot " : " robots ") + robots + "; from "
-                + minutesSeconds(startMillis) + " at " + speed + "x" + (loop ? ", looping" : ""));
+                + minutesSeconds(startMillis) + " at " + java.math.BigDecimal.valueOf(speed).stripTrailingZeros().toPlainString() + "x" + (loop ? ", looping" : ""));
         if (recording.cutShort()) {
             log.warning(file + " was cut short (a run that did not stop): replaying up to its last whole line at "
                     + minutesSeconds(recording.durationMillis()));
@@ -333,7 +333,8 @@ public final class ReplayPropagationModel implements PropagationModel {
             }
             Player running = player;
             if (running != null) {
-                running.jump(seconds * 1000);
+                // The duration in seconds times 1000 may come back a hair above it in milliseconds.
+                running.jump(Math.min(seconds * 1000, running.recording.durationMillis()));
             }
         }
     }

@@ -29,6 +29,7 @@ import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
+import org.usarsim.wss.model.replay.ReplayPropagationModel;
 
 class ConfigFileTest {
 
@@ -68,7 +69,11 @@ class ConfigFileTest {
             Map.entry("distance.margin", "0"),
             Map.entry("distance.holdTime", "0"),
             Map.entry("obstacle.attenuation", "6.325"),
-            Map.entry("obstacle.cacheDistance", "1.0"));
+            Map.entry("obstacle.cacheDistance", "1.0"),
+            Map.entry("replay.file", ""),
+            Map.entry("replay.speed", "1"),
+            Map.entry("replay.start", "0"),
+            Map.entry("replay.loop", "false"));
 
     @TempDir
     Path dir;
@@ -98,10 +103,13 @@ class ConfigFileTest {
         ConfigFile settings = ConfigFile.defaults();
         assertEquals(null, settings.get("wss.nonsense"));
         assertEquals(Map.of(), settings.modelValues().asMap(), "NoopPropagationModel declares no setting");
-        // the obstacle model declares every non-wss key: exactly the documented ones.
+        // the obstacle model declares every non-wss key but the replay's: exactly the documented ones.
         Map<String, String> expected = new TreeMap<>(DEFAULTS);
-        expected.keySet().removeIf(key -> key.startsWith("wss."));
+        expected.keySet().removeIf(key -> key.startsWith("wss.") || key.startsWith("replay."));
         assertEquals(expected, ConfigFile.of(props("wss.model", "ObstaclePropagationModel"), "t").modelValues().asMap());
+        Map<String, String> replay = new TreeMap<>(DEFAULTS);
+        replay.keySet().removeIf(key -> !key.startsWith("replay."));
+        assertEquals(replay, ConfigFile.of(props("wss.model", "ReplayPropagationModel"), "t").modelValues().asMap());
     }
 
     @Test
@@ -298,7 +306,7 @@ class ConfigFileTest {
     /** The rule of a key: the server's, or the built-in models' (the obstacle model declares every one). */
     private static Setting rule(String key) {
         Setting server = Setting.find(ConfigFile.SERVER, key);
-        return server != null ? server : Setting.find(new ObstaclePropagationModel().settings(), key);
+        return server != null ? server : Setting.find(allDeclared(), key);
     }
 
     private static String problem(String key, String value) {
@@ -307,7 +315,9 @@ class ConfigFileTest {
 
     /** The defaults of the built-in models' keys. */
     private static Map<String, String> modelDefaults() {
-        return new TreeMap<>(Setting.defaults(new ObstaclePropagationModel().settings()));
+        Map<String, String> defaults = new TreeMap<>(Setting.defaults(new ObstaclePropagationModel().settings()));
+        defaults.putAll(Setting.defaults(new ReplayPropagationModel().settings()));
+        return defaults;
     }
 
     // ---- modelValues() and hubConfig() ----
@@ -452,6 +462,7 @@ class ConfigFileTest {
     private static List<Setting> allDeclared() {
         List<Setting> all = new java.util.ArrayList<>(ConfigFile.SERVER);
         all.addAll(new ObstaclePropagationModel().settings());
+        all.addAll(new ReplayPropagationModel().settings());
         return all;
     }
 

@@ -48,7 +48,10 @@ public final class Main {
     public static final int OK = 0;
     /** Exit code: the server cannot start (port in use, model will not start). */
     public static final int CANNOT_START = 1;
-    /** Exit code: a bad command line, properties file or world file, found before anything listens. */
+    /**
+     * Exit code: a bad command line, properties file or world file, found before anything listens,
+     * or a model that refuses its input as it starts (a bad recording: {@code ModelInputException}).
+     */
     public static final int BAD_INPUT = 2;
 
     static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
@@ -305,7 +308,7 @@ public final class Main {
             try {
                 server.start();
             } catch (Server.StartFailure e) {
-                throw new Failure(CANNOT_START, e.getMessage());
+                throw new Failure(e.badInput() ? BAD_INPUT : CANNOT_START, e.getMessage());
             }
             try (StatsLog stats = StatsLog.every(configFile.statsInterval(), server.hub(), configFile.hubConfig().shaping().on())) {
                 stop.await();

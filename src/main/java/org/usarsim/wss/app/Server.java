@@ -7,6 +7,7 @@ import java.util.Map;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.model.ModelInputException;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
@@ -25,8 +26,20 @@ final class Server implements AutoCloseable {
 
     /** Why a server did not start, in one line. */
     static final class StartFailure extends Exception {
+        private final boolean badInput;
+
         StartFailure(String message) {
+            this(message, false);
+        }
+
+        StartFailure(String message, boolean badInput) {
             super(message);
+            this.badInput = badInput;
+        }
+
+        /** Whether the model refused its input (a {@link ModelInputException}: a bad recording), not a resource. */
+        boolean badInput() {
+            return badInput;
         }
     }
 
@@ -131,7 +144,7 @@ final class Server implements AutoCloseable {
                     + config.controlPort() + ": " + e.getMessage());
         } catch (ModelStartException | RuntimeException e) {
             closeEventLog();
-            throw new StartFailure(model.name() + " did not start: " + e.getMessage());
+            throw new StartFailure(model.name() + " did not start: " + e.getMessage(), e instanceof ModelInputException);
         }
     }
 

@@ -9,9 +9,11 @@ import org.usarsim.wss.model.RobotPair;
 /**
  * What a poll decides, from what it learned: which robots are kicked and why, which pairs are
  * decided, and each pair's link state. Pure: no socket, no clock, no hub; the model applies the
- * result through {@code RobotLinkModel}.
+ * result through {@code RobotLinkModel}. Who is kicked and which pairs are decided
+ * ({@link #kicks}, {@link #present}, {@link #pairs}) are public: the replay of a recording
+ * ({@code model.replay}) applies its recorded polls by the same rules.
  */
-final class PollStep {
+public final class PollStep {
 
     /** A robot's strength to another, given the obstacles between them (NaN: not counted). */
     @FunctionalInterface
@@ -20,9 +22,14 @@ final class PollStep {
     }
 
     /** A registered robot to kick: one the simulator does not list, or one whose battery is empty. */
-    record Kick(String robot, boolean batteryEmpty) {
+    public record Kick(String robot, boolean batteryEmpty) {
         String reason() {
-            return batteryEmpty ? "its battery is empty" : "the simulator does not list it";
+            return reason("simulator");
+        }
+
+        /** Why, in words, when {@code lister} (the simulator, the recording) lists the robots. */
+        public String reason(String lister) {
+            return batteryEmpty ? "its battery is empty" : "the " + lister + " does not list it";
         }
     }
 
@@ -38,7 +45,7 @@ final class PollStep {
     }
 
     /** The registered robots to kick, in their order: absent from {@code listed} (when {@code kickAbsent}) or out of battery. */
-    static List<Kick> kicks(List<String> registered, Map<String, ReportedRobot> listed, boolean kickAbsent) {
+    public static List<Kick> kicks(List<String> registered, Map<String, ReportedRobot> listed, boolean kickAbsent) {
         List<Kick> kicks = new ArrayList<>();
         for (String robot : registered) {
             ReportedRobot state = listed.get(robot);
@@ -52,12 +59,12 @@ final class PollStep {
     }
 
     /** The registered robots the simulator lists with battery left: the ones whose links are decided. */
-    static List<String> present(List<String> registered, Map<String, ReportedRobot> listed) {
+    public static List<String> present(List<String> registered, Map<String, ReportedRobot> listed) {
         return registered.stream().filter(robot -> listed.containsKey(robot) && !listed.get(robot).batteryEmpty()).toList();
     }
 
     /** Every pair of the present robots, each once, in their order. */
-    static List<RobotPair> pairs(List<String> present) {
+    public static List<RobotPair> pairs(List<String> present) {
         List<RobotPair> pairs = new ArrayList<>();
         for (int i = 0; i < present.size(); i++) {
             for (int j = i + 1; j < present.size(); j++) {

@@ -1,0 +1,71 @@
+package org.usarsim.wss.model.replay;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeSet;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.RobotPair;
+
+/** A server as a model sees it, without sockets: registered robots, broken pairs, and every call kept. */
+final class FakeLinks implements RobotLinkModel {
+
+    private final Set<String> registered = new TreeSet<>();
+    private final Set<RobotPair> broken = new HashSet<>();
+    private final List<String> kicked = new ArrayList<>();
+    private final List<Map<RobotPair, Boolean>> applied = new ArrayList<>();
+
+    synchronized void register(String... robots) {
+        registered.addAll(List.of(robots));
+    }
+
+    synchronized List<String> kicked() {
+        return List.copyOf(kicked);
+    }
+
+    synchronized boolean isBroken(String a, String b) {
+        return broken.contains(RobotPair.of(a, b));
+    }
+
+    /** Every applyLinkStates, in order. */
+    synchronized List<Map<RobotPair, Boolean>> applied() {
+        return List.copyOf(applied);
+    }
+
+    @Override
+    public synchronized boolean breakConnectionsForPair(String robotA, String robotB) {
+        return broken.add(RobotPair.of(robotA, robotB));
+    }
+
+    @Override
+    public synchronized boolean resumeConnectionsForPair(String robotA, String robotB) {
+        return broken.remove(RobotPair.of(robotA, robotB));
+    }
+
+    @Override
+    public synchronized Set<RobotPair> applyLinkStates(Map<RobotPair, Boolean> inRange) {
+        applied.add(new LinkedHashMap<>(inRange));
+        Set<RobotPair> changed = new LinkedHashSet<>();
+        inRange.forEach((pair, live) -> {
+            if (live ? broken.remove(pair) : broken.add(pair)) {
+                changed.add(pair);
+            }
+        });
+        return changed;
+    }
+
+    @Override
+    public synchronized void kickOutRobot(String robot) {
+        kicked.add(robot);
+        registered.remove(robot);
+    }
+
+    @Override
+    public synchronized List<String> getListOfRegisteredRobots() {
+        return List.copyOf(registered);
+    }
+}

@@ -78,7 +78,13 @@ class RecordAndReplayTest {
                 "wss.eventLogDir", recordedLogs.toString()));
         long recordedStart = startedAt(recorder, "ObstaclePropagationModel polls the simulator");
         int port = Integer.parseInt(recorder.awaitListening().group(1));
-        runRobots(port, null);
+        runRobots(recorder, port, null);
+        // The poll that kicked Scout is written once the poll is whole (its obstacles counted): a stop before would abandon it.
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!Files.readString(recording).contains(" kick Scout battery\n")) {
+            assertTrue(System.nanoTime() < deadline, "the poll that kicked Scout was recorded");
+            java.util.concurrent.locks.LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(20));
+        }
         recorder.sigterm();
         assertEquals(0, recorder.awaitExit());
         Recording recorded = RecordingReader.read(recording);
@@ -92,7 +98,7 @@ class RecordAndReplayTest {
                 "wss.operators", "127.0.0.1", "wss.eventLogDir", replayedLogs.toString()));
         long replayedStart = startedAt(replayer, "replaying");
         port = Integer.parseInt(replayer.awaitListening().group(1));
-        int checked = runRobots(port, recorded);
+        int checked = runRobots(replayer, port, recorded);
         replayer.sigterm();
         assertEquals(0, replayer.awaitExit());
 
@@ -106,6 +112,13 @@ class RecordAndReplayTest {
             assertTrue(apart <= POLL_INTERVAL_MS, before.get(i) + " replayed as " + after.get(i) + ": " + apart + " ms apart");
         }
         assertTrue(checked >= 50, checked + " GETSS checked against the recording");
+        long worst = 0;
+        for (int i = 0; i < before.size(); i++) {
+            worst = Math.max(worst, Math.abs(after.get(i).millis() - before.get(i).millis()));
+        }
+        System.out.printf("RecordAndReplayTest: %d polls recorded, %d breaks and resumes replayed in order (at most %d ms from"
+                + " their recorded time), %d GETSS equal to the recorded strength%n", recorded.polls().size(), before.size(), worst,
+                checked);
     }
 
     private ServerProcess start(Map<String, String> settings) throws Exception {
@@ -134,7 +147,7 @@ class RecordAndReplayTest {
      * {@code REPLAY} questions, and each answer must be the recorded strength of a poll the
      * replay was at meanwhile. Returns how many were checked.
      */
-    private int runRobots(int port, Recording recorded) throws Exception {
+    private int runRobots(ServerProcess server, int port, Recording recorded) throws Exception {
         List<TestRobot> robots = new ArrayList<>();
         int checked = 0;
         try (Socket operatorSocket = recorded == null ? null : new Socket("127.0.0.1", port)) {
@@ -151,7 +164,9 @@ class RecordAndReplayTest {
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(100);
             while (!closedByPeer(scout)) {
                 if (System.nanoTime() > deadline) {
-                    fail("Scout was not kicked at the end of its battery");
+                    List<String> out = server.stdoutSoFar();
+                    fail("Scout was not kicked at the end of its battery; the server's log ends: "
+                            + out.subList(Math.max(0, out.size() - 30), out.size()));
                 }
                 if (recorded != null) {
                     for (String peer : List.of("Explorer", "Mapper", "Scout")) {

@@ -98,7 +98,7 @@ public final class ReplayBenchmark {
     }
 
     /** Writes the run to both files; returns the bytes of its polls' lines. */
-    private static long writeRun(Path plain, Path gzip, int robots, int hz, long polls) throws Exception {
+    public static long writeRun(Path plain, Path gzip, int robots, int hz, long polls) throws Exception {
         Random random = new Random(17);
         double[][] at = new double[robots][2];
         double[][] heading = new double[robots][2];

@@ -63,6 +63,7 @@ class RecordingReaderTest {
         assertEquals(1, recording.pollIndexAt(599));
         assertEquals(650, recording.durationMillis());
         assertEquals(4, recording.events().size());
+        assertEquals(java.util.Set.of("A", "B"), recording.robots());
         assertFalse(recording.cutShort());
         assertEquals(0, recording.unknownLines() + recording.unreadableLines());
     }

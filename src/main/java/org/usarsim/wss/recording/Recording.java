@@ -1,21 +1,26 @@
 package org.usarsim.wss.recording;
 
+import java.util.Collections;
 import java.util.List;
+import java.util.SortedSet;
+import java.util.TreeSet;
 import org.usarsim.wss.model.Wall;
 
 /**
  * A recording as read (docs/replay.md): its header, its polls in the order of their times, its
- * walls as they changed, and every other entry in the order written. What the reader had to skip
+ * walls as they changed, every other entry in the order written, and the names of the robots its
+ * polls list. What the reader had to skip
  * is said: whether the file was cut short (no {@code end}: a crashed run), how many lines had a
  * keyword this version does not know, how many could not be read.
  */
 public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls> walls, List<Entry> events,
-        long durationMillis, boolean cutShort, int unknownLines, int unreadableLines, String firstProblem) {
+        SortedSet<String> robots, long durationMillis, boolean cutShort, int unknownLines, int unreadableLines, String firstProblem) {
 
     public Recording {
         polls = polls instanceof LazyPolls ? polls : List.copyOf(polls);
         walls = List.copyOf(walls);
         events = List.copyOf(events);
+        robots = Collections.unmodifiableSortedSet(new TreeSet<>(robots));
     }
 
     /** The index of the last poll at or before {@code millis}; -1 before the first. */

@@ -35,6 +35,8 @@ public final class RecordingReader {
     private final List<LazyPolls.At> polls = new ArrayList<>();
     private final List<Entry.Walls> walls = new ArrayList<>();
     private final List<Entry> events = new ArrayList<>();
+    /** The names of the robots the polls list, as written (escaped). */
+    private final java.util.Set<String> robotFields = new java.util.HashSet<>();
     private int unknown;
     private int unreadable;
     private String firstProblem;
@@ -72,8 +74,16 @@ public final class RecordingReader {
         boolean cutShort = body(lines) || bytes.streamCut;
         polls.sort(Comparator.comparingLong(LazyPolls.At::millis));
         walls.sort(Comparator.comparingLong(Entry.Walls::millis));
-        return new Recording(header, new LazyPolls(file, bytes.data, polls), walls, events, lastMillis, cutShort || !ended, unknown,
-                unreadable, firstProblem);
+        java.util.SortedSet<String> robots = new java.util.TreeSet<>();
+        for (String field : robotFields) {
+            try {
+                robots.add(EntryLines.unescape(field));
+            } catch (IllegalArgumentException e) {
+                // Said when its poll is read.
+            }
+        }
+        return new Recording(header, new LazyPolls(file, bytes.data, polls), walls, events, robots, lastMillis,
+                cutShort || !ended, unknown, unreadable, firstProblem);
     }
 
     /** The file's bytes, unzipped; a gzip stream that stops early gives what it had. */
@@ -192,6 +202,9 @@ public final class RecordingReader {
                 lineNumber--;
                 return true;
             }
+            if (row < poll.robots()) {
+                robotFields.add(lines.field(2));
+            }
         }
         polls.add(new LazyPolls.At(poll.millis(), first, firstLine, poll.robots(), poll.pairs()));
         return true;
@@ -298,6 +311,22 @@ public final class RecordingReader {
 
         String text() {
             return new String(data, start, end - start, StandardCharsets.UTF_8);
+        }
+
+        /** The line's field at {@code index} (0: the time), as written; empty when it has fewer. */
+        String field(int index) {
+            int at = start;
+            for (int i = 0; i < index; i++) {
+                while (at < end && data[at] != ' ') {
+                    at++;
+                }
+                at++;
+            }
+            int from = Math.min(at, end);
+            while (at < end && data[at] != ' ') {
+                at++;
+            }
+            return new String(data, from, Math.max(0, Math.min(at, end) - from), StandardCharsets.UTF_8);
         }
 
         /** Whether the line starts with {@code millis keyword }. */

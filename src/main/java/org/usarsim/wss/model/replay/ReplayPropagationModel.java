@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.TreeSet;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import java.util.logging.Level;
@@ -176,8 +175,7 @@ public final class ReplayPropagationModel implements PropagationModel {
 
     /** The INFO line of what is replayed, and a WARNING for each thing the reader had to leave out. */
     private void tell(String file, Recording recording, long startMillis, double speed, boolean loop) {
-        Set<String> robots = new TreeSet<>();
-        recording.polls().forEach(poll -> poll.robots().forEach(robot -> robots.add(robot.name())));
+        Set<String> robots = recording.robots();
         log.info("replaying " + file + ": recorded with " + recording.header().model() + ", "
                 + minutesSeconds(recording.durationMillis()) + " long, " + recording.polls().size()
                 + (recording.polls().size() == 1 ? " poll, " : " polls, ")
@@ -459,7 +457,7 @@ public final class ReplayPropagationModel implements PropagationModel {
             }
             long waitNanos = TICK_NANOS;
             if (index + 1 < recording.polls().size()) {
-                waitNanos = Math.min(waitNanos, replayClock.nanosUntil(recording.polls().get(index + 1).millis(), clock.getAsLong()));
+                waitNanos = Math.min(waitNanos, replayClock.nanosUntil(recording.pollMillis(index + 1), clock.getAsLong()));
             }
             if (waitNanos <= 0) {
                 return;

@@ -29,7 +29,7 @@ import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
-import org.usarsim.wss.model.replay.ReplayPropagationModel;
+import org.usarsim.wss.replay.ReplayPropagationModel;
 
 class ConfigFileTest {
 

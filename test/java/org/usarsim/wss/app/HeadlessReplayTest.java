@@ -12,7 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
-import org.usarsim.wss.model.replay.Recordings;
+import org.usarsim.wss.replay.Recordings;
 import org.usarsim.wss.protocol.Replies;
 
 /** Headless with the replay model: a recording served to robots; a bad one is bad input (exit 2, one line). */

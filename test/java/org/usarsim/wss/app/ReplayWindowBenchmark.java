@@ -31,7 +31,7 @@ import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
-import org.usarsim.wss.model.replay.ReplayPropagationModel;
+import org.usarsim.wss.replay.ReplayPropagationModel;
 import org.usarsim.wss.protocol.Replies;
 import org.usarsim.wss.recording.Entry;
 import org.usarsim.wss.recording.Recording;

@@ -35,7 +35,7 @@ import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
-import org.usarsim.wss.model.replay.ReplayPropagationModel;
+import org.usarsim.wss.replay.ReplayPropagationModel;
 
 /** The window with the replay model: a bad recording's Start says why in a dialog, as any failed Start does. */
 class ReplayWindowTest {

@@ -139,17 +139,17 @@ final class Server implements AutoCloseable {
         try {
             hub.start();
         } catch (IOException e) {
-            closeEventLog();
+            closeRecords();
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"
                     + config.controlPort() + ": " + e.getMessage());
         } catch (ModelStartException | RuntimeException e) {
-            closeEventLog();
+            closeRecords();
             throw new StartFailure(model.name() + " did not start: " + e.getMessage(), e instanceof ModelInputException);
         }
     }
 
-    /** Closes the event log and the recording. */
-    private void closeEventLog() {
+    /** Closes the event log and the recording (what this run writes besides its sockets). */
+    private void closeRecords() {
         try {
             if (eventLog != null) {
                 eventLog.close();
@@ -172,7 +172,7 @@ final class Server implements AutoCloseable {
         try {
             hub.close();
         } finally {
-            closeEventLog();
+            closeRecords();
         }
     }
 }

@@ -11,7 +11,7 @@ import org.usarsim.wss.model.RobotPair;
  * decided, and each pair's link state. Pure: no socket, no clock, no hub; the model applies the
  * result through {@code RobotLinkModel}. Who is kicked and which pairs are decided
  * ({@link #kicks}, {@link #present}, {@link #pairs}) are public: the replay of a recording
- * ({@code model.replay}) applies its recorded polls by the same rules.
+ * ({@code replay.ReplayPropagationModel}) applies its recorded polls by the same rules.
  */
 public final class PollStep {
 

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.replay;
+package org.usarsim.wss.replay;
 
 /**
  * Where a replay is in its recording: its time in milliseconds from the recording's start, as a

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.replay;
+package org.usarsim.wss.replay;
 
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;

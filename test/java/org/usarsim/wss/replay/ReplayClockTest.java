@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.replay;
+package org.usarsim.wss.replay;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

@@ -1,4 +1,4 @@
-package org.usarsim.wss.model.replay;
+package org.usarsim.wss.replay;
 
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;

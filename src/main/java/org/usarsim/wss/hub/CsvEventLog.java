@@ -10,14 +10,10 @@ import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Logger;
 import java.util.stream.Collectors;
+import org.usarsim.wss.QueuedWriter;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
 
@@ -33,6 +29,7 @@ import org.usarsim.wss.protocol.Strengths;
  * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
  * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
  * A field that needs it (a name with a comma, a quote, a CR or a LF) is quoted as RFC 4180 says.
+ * The queue and its thread are {@link QueuedWriter}'s, as the recording's.
  */
 public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
@@ -41,42 +38,32 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     private static final DateTimeFormatter LINE_TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
     /** Events the writer may be behind by: a few seconds of chunks of one fast link. */
     static final int QUEUE_CAPACITY = 65_536;
-    private static final int BATCH = 1024;
-    /**
-     * How long the writer lets events gather after the first one it takes: one wake-up and one
-     * write per batch instead of per chunk (each would cost the busy link threads CPU).
-     */
-    private static final long GATHER_MS = 20;
-    private static final long CLOSE_WAIT_SECONDS = 10;
 
     /** One event as it will be written: its type, when it happened, its fields. */
     private record Line(String type, long millis, Object... fields) {
     }
 
-    /** Queued by {@link #close}: the writer stops after it. */
-    private static final Line END = new Line("END", 0);
-
     private final Path file;
-    private final Writer out;
-    private final BlockingQueue<Line> queue;
-    private final AtomicLong dropped = new AtomicLong();
-    private final Thread writer;
+    private final QueuedWriter<Line> writer;
     private final ZoneId zone = ZoneId.systemDefault();
     /** The writer's last formatted time: events come many to a millisecond. */
     private long formattedMillis = Long.MIN_VALUE;
     private String formattedTime;
-    private volatile boolean closed;
-    /** Set by the writer when the file cannot be written; events are then ignored. */
-    private volatile boolean failed;
 
     /** The log writing to {@code out} (named {@code file}), behind a queue of {@code capacity} events. */
     CsvEventLog(Path file, Writer out, int capacity) {
         this.file = file;
-        this.out = out;
-        this.queue = new ArrayBlockingQueue<>(capacity);
-        this.writer = new Thread(this::writeUntilClosed, "wss-event-log");
-        writer.setDaemon(true);
-        writer.start();
+        this.writer = new QueuedWriter<>("wss-event-log", LOG, "the event log " + file, out, capacity, new QueuedWriter.Format<>() {
+            @Override
+            public void append(StringBuilder text, Line line) {
+                format(text, line.type, line.millis, line.fields);
+            }
+
+            @Override
+            public void dropped(StringBuilder text, long count) {
+                format(text, "DROPPED", System.currentTimeMillis(), count);
+            }
+        });
     }
 
     /** Creates a new log file in the directory (created if missing), named by the time now. */
@@ -94,51 +81,8 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     /** Any thread: queues the event, or counts it as dropped when the writer is too far behind. Never waits. */
     private void event(String type, Object... fields) {
-        if (closed || failed) {
-            return;
-        }
-        if (!queue.offer(new Line(type, System.currentTimeMillis(), fields))) {
-            dropped.incrementAndGet();
-        }
-    }
-
-    /** The writer thread: writes batches in order until {@link #END}, then closes the file. */
-    private void writeUntilClosed() {
-        List<Line> batch = new ArrayList<>(BATCH);
-        StringBuilder text = new StringBuilder(64 * BATCH);
-        boolean end = false;
-        boolean caughtUp = true;
-        try {
-            while (!end) {
-                batch.add(queue.take());
-                if (caughtUp && batch.get(0) != END) {
-                    Thread.sleep(GATHER_MS);
-                }
-                queue.drainTo(batch, BATCH - 1);
-                for (Line line : batch) {
-                    if (line == END) {
-                        end = true;
-                        break;
-                    }
-                    format(text, line.type, line.millis, line.fields);
-                }
-                batch.clear();
-                long lost = dropped.getAndSet(0);
-                if (lost > 0) {
-                    format(text, "DROPPED", System.currentTimeMillis(), lost);
-                }
-                caughtUp = queue.isEmpty();
-                write(text, end || caughtUp);
-                text.setLength(0);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } finally {
-            try {
-                out.close();
-            } catch (IOException e) {
-                LOG.warning("closing the event log " + file + ": " + e.getMessage());
-            }
+        if (writer.open()) {
+            writer.offer(new Line(type, System.currentTimeMillis(), fields));
         }
     }
 
@@ -179,21 +123,6 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
             }
         }
         text.append('"');
-    }
-
-    private void write(StringBuilder text, boolean flush) {
-        if (failed) {
-            return;
-        }
-        try {
-            out.append(text);
-            if (flush) {
-                out.flush();
-            }
-        } catch (IOException e) {
-            failed = true;
-            LOG.warning("the event log " + file + " cannot be written any more: " + e.getMessage());
-        }
     }
 
     @Override
@@ -258,22 +187,6 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
      */
     @Override
     public void close() {
-        synchronized (this) {
-            if (closed) {
-                return;
-            }
-            closed = true;
-        }
-        try {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(CLOSE_WAIT_SECONDS);
-            if (queue.offer(END, CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
-                writer.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        if (writer.isAlive()) {
-            LOG.warning("the event log " + file + " was still being written " + CLOSE_WAIT_SECONDS + " s after the server stopped");
-        }
+        writer.close();
     }
 }

@@ -15,17 +15,13 @@ import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
 import java.time.temporal.ChronoUnit;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import java.util.zip.GZIPOutputStream;
+import org.usarsim.wss.QueuedWriter;
 import org.usarsim.wss.Version;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.Wall;
@@ -59,28 +55,17 @@ public final class Recorder implements WssEventListener, AutoCloseable {
      * so a disk that hangs must not let a whole queue of them fill the memory (about 50 s at 5 polls a second).
      */
     static final int MAX_QUEUED_POLLS = 256;
-    private static final int BATCH = 1024;
-    /** How long the writer lets events gather after the first one it takes, as the event log does. */
-    private static final long GATHER_MS = 20;
-    private static final long CLOSE_WAIT_SECONDS = 10;
-
     /** One queued event: an entry, or a poll (written as its kicks, its walls if new, and itself), at its time. */
     private record Item(long millis, Entry entry, ModelPoll poll) {
     }
 
     private final Path file;
-    private final Writer out;
     private final LongSupplier nanos;
     private final long startNanos;
-    private final BlockingQueue<Item> queue;
-    private final AtomicLong dropped = new AtomicLong();
     private final AtomicInteger queuedPolls = new AtomicInteger();
-    private final Thread writer;
+    private final QueuedWriter<Item> writer;
     /** The writer's: the walls last written (none before the first). */
     private List<Wall> writtenWalls = List.of();
-    private volatile boolean closed;
-    /** Set by the writer when the file cannot be written; events are then ignored. */
-    private volatile boolean failed;
 
     /**
      * A recorder writing to {@code out} (named {@code file}), whose header is already written,
@@ -88,13 +73,24 @@ public final class Recorder implements WssEventListener, AutoCloseable {
      */
     Recorder(Path file, Writer out, LongSupplier nanos, int capacity) {
         this.file = file;
-        this.out = out;
         this.nanos = nanos;
         this.startNanos = nanos.getAsLong();
-        this.queue = new ArrayBlockingQueue<>(capacity);
-        this.writer = new Thread(this::writeUntilClosed, "wss-recorder");
-        writer.setDaemon(true);
-        writer.start();
+        this.writer = new QueuedWriter<>("wss-recorder", LOG, "the recording " + file, out, capacity, new QueuedWriter.Format<>() {
+            @Override
+            public void append(StringBuilder text, Item item) {
+                format(text, item);
+            }
+
+            @Override
+            public void dropped(StringBuilder text, long count) {
+                EntryLines.write(text, new Entry.Dropped(millis(), count));
+            }
+
+            @Override
+            public void end(StringBuilder text) {
+                EntryLines.write(text, new Entry.End(millis()));
+            }
+        });
     }
 
     /**
@@ -176,71 +172,21 @@ public final class Recorder implements WssEventListener, AutoCloseable {
 
     /** Any thread: queues the entry or poll, or counts it as dropped when the writer is too far behind. Never waits. */
     private void offer(Entry entry, ModelPoll poll) {
-        if (closed || failed) {
+        if (!writer.open()) {
             return;
         }
         if (poll != null && queuedPolls.incrementAndGet() > MAX_QUEUED_POLLS) {
             queuedPolls.decrementAndGet();
-            dropped.incrementAndGet();
+            writer.drop();
             return;
         }
-        if (!queue.offer(new Item(entry != null ? entry.millis() : millis(), entry, poll))) {
-            if (poll != null) {
-                queuedPolls.decrementAndGet();
-            }
-            dropped.incrementAndGet();
+        if (!writer.offer(new Item(entry != null ? entry.millis() : millis(), entry, poll)) && poll != null) {
+            queuedPolls.decrementAndGet();
         }
     }
 
     private void offer(Entry entry) {
         offer(entry, null);
-    }
-
-    /** The writer thread: writes batches in order until {@code end}, then closes the file. */
-    private void writeUntilClosed() {
-        List<Item> batch = new ArrayList<>(BATCH);
-        StringBuilder text = new StringBuilder(256 * BATCH);
-        boolean end = false;
-        boolean caughtUp = true;
-        try {
-            while (!end) {
-                batch.add(queue.take());
-                if (caughtUp && !(batch.get(0).entry() instanceof Entry.End)) {
-                    Thread.sleep(GATHER_MS);
-                }
-                queue.drainTo(batch, BATCH - 1);
-                Entry.End last = null;
-                for (Item item : batch) {
-                    if (item.entry() instanceof Entry.End stop) {
-                        last = stop;
-                        break;
-                    }
-                    format(text, item);
-                }
-                batch.clear();
-                long lost = dropped.getAndSet(0);
-                if (lost > 0) {
-                    EntryLines.write(text, new Entry.Dropped(millis(), lost));
-                }
-                if (last != null) {
-                    EntryLines.write(text, last);
-                    end = true;
-                }
-                caughtUp = queue.isEmpty();
-                write(text, end || caughtUp);
-                text.setLength(0);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } finally {
-            try {
-                out.close();
-            } catch (IOException e) {
-                if (!failed) {
-                    LOG.warning("closing the recording " + file + ": " + e.getMessage());
-                }
-            }
-        }
     }
 
     /** An item's lines: a poll as its kicks, its walls when they are not those last written, then the poll itself. */
@@ -260,21 +206,6 @@ public final class Recorder implements WssEventListener, AutoCloseable {
             EntryLines.write(text, new Entry.Walls(t, writtenWalls));
         }
         EntryLines.write(text, new Entry.Poll(t, poll.robots(), poll.pairs()));
-    }
-
-    private void write(StringBuilder text, boolean flush) {
-        if (failed) {
-            return;
-        }
-        try {
-            out.append(text);
-            if (flush) {
-                out.flush();
-            }
-        } catch (IOException e) {
-            failed = true;
-            LOG.warning("the recording " + file + " cannot be written any more: " + e.getMessage());
-        }
     }
 
     @Override
@@ -319,29 +250,12 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     /**
-     * Stops taking events, queues the end and waits (at most 10 s, for a disk that hangs) until the
-     * writer has written everything queued before it, the count of any dropped, {@code end}, and
-     * closed the file (a gzip file whole).
+     * Stops taking events, waits (at most 10 s, for a disk that hangs) until the writer has written
+     * everything queued before, the count of any dropped, {@code end}, and closed the file (a gzip
+     * file whole).
      */
     @Override
     public void close() {
-        synchronized (this) {
-            if (closed) {
-                return;
-            }
-            closed = true;
-        }
-        try {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(CLOSE_WAIT_SECONDS);
-            Entry.End end = new Entry.End(millis());
-            if (queue.offer(new Item(end.millis(), end, null), CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
-                writer.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        if (writer.isAlive()) {
-            LOG.warning("the recording " + file + " was still being written " + CLOSE_WAIT_SECONDS + " s after the server stopped");
-        }
+        writer.close();
     }
 }

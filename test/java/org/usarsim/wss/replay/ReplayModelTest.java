@@ -151,13 +151,15 @@ class ReplayModelTest {
 
         after(400);
         awaitAlphaBravo(-95);
-        assertTrue(links.isBroken("Alpha", "Bravo"));
+        // GETSS has the poll as soon as it is published; its states and events follow at once.
+        Wait.until("the break applied and said", () -> links.isBroken("Alpha", "Bravo") && events.size() == 1);
         assertFalse(links.isBroken("Alpha", "Charlie"));
         assertEquals(List.of("OUT_OF_RANGE Alpha Bravo -95.0 50.0"), events);
 
         after(600);
         awaitAlphaBravo(-62);
         Wait.until("Charlie kicked", () -> links.kicked().contains("Charlie"));
+        Wait.until("the resume said", () -> events.size() == 3);
         assertEquals(List.of("OUT_OF_RANGE Alpha Bravo -95.0 50.0", "OUT_OF_BATTERY Charlie", "IN_RANGE Alpha Bravo"), events,
                 "the kicks first, then the pairs");
         assertEquals(1, log.count(Level.INFO, "kicking Charlie: its battery is empty at 00:01"), log.toString());
@@ -196,14 +198,15 @@ class ReplayModelTest {
         controls().pause();
         controls().jump(0.5);
         awaitAlphaBravo(-95);
-        assertTrue(links.isBroken("Alpha", "Bravo"), "the jump broke the pair through applyLinkStates");
+        Wait.until("the jump broke the pair through applyLinkStates", () -> links.isBroken("Alpha", "Bravo"));
         assertEquals(0.5, controls().timeSeconds());
         assertFalse(controls().playing());
         controls().jump(0.8);
         awaitAlphaBravo(-61);
-        assertFalse(links.isBroken("Alpha", "Bravo"));
+        Wait.until("the jump resumed the pair", () -> !links.isBroken("Alpha", "Bravo"));
         controls().jump(0);
         awaitAlphaBravo(-60);
+        Wait.until("both said", () -> events.size() == 2);
         assertEquals(List.of("OUT_OF_RANGE Alpha Bravo -95.0 50.0", "IN_RANGE Alpha Bravo"), events);
         for (double end : new double[] {1.001, 0.3, 0.7, 0.9}) {
             controls().jump(end); // seconds whose milliseconds are not exact in binary
@@ -214,7 +217,7 @@ class ReplayModelTest {
         assertEquals(1.001, controls().durationSeconds());
         assertThrows(IllegalArgumentException.class, () -> controls().jump(1.5));
         assertThrows(IllegalArgumentException.class, () -> controls().jump(-0.1));
-        assertFalse(links.isBroken("Alpha", "Bravo"), "whatever jumps the thread saw on the way, the last poll's state");
+        Wait.until("whatever jumps the thread saw on the way, the last poll's state", () -> !links.isBroken("Alpha", "Bravo"));
     }
 
     @Test

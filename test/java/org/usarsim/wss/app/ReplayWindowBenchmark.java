@@ -20,6 +20,7 @@ import javax.swing.JFrame;
 import javax.swing.JLabel;
 import javax.swing.JSlider;
 import javax.swing.JTextField;
+import org.usarsim.wss.bench.ControlClient;
 import org.usarsim.wss.bench.ReplayBenchmark;
 import org.usarsim.wss.gui.Launch;
 import org.usarsim.wss.gui.MainWindow;
@@ -111,9 +112,9 @@ public final class ReplayWindowBenchmark {
         double open = (System.nanoTime() - clicked) / 1e9;
 
         int controlPort = Integer.parseInt(onEdt(port::getText).strip());
-        List<Robot> robots = new ArrayList<>();
+        List<ControlClient> robots = new ArrayList<>();
         for (int i = 1; i <= 12; i++) {
-            robots.add(new Robot(controlPort, "Robot" + i));
+            robots.add(new ControlClient(controlPort, "Robot" + i, 5000));
         }
         String wanted = Replies.signal("Robot2", lastStrength);
         long released = System.nanoTime();
@@ -126,33 +127,13 @@ public final class ReplayWindowBenchmark {
         double jump = (System.nanoTime() - released) / 1e9;
         System.out.printf(Locale.ROOT, "  run %d: open (Start to the bar at 00:00 / 30:00) %.3f s; jump to the end (release to"
                 + " 30:00 / 30:00 and the last poll's GETSS) %.3f s; together %.3f s%n", run, open, jump, open + jump);
-        for (Robot robot : robots) {
-            robot.socket.close();
+        for (ControlClient robot : robots) {
+            robot.close();
         }
         run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
         closed.await();
         Logger.getLogger("").removeHandler(windowLog);
         TestPreferences.remove(preferences);
-    }
-
-    /** A robot on its control connection (INIT, then questions and their replies); not JUnit's TestRobot, so that it runs without JUnit. */
-    private static final class Robot {
-        final java.net.Socket socket;
-        private final java.io.BufferedReader in;
-
-        Robot(int port, String name) throws java.io.IOException {
-            socket = new java.net.Socket("127.0.0.1", port);
-            in = new java.io.BufferedReader(new java.io.InputStreamReader(socket.getInputStream(), java.nio.charset.StandardCharsets.UTF_8));
-            String reply = ask("INIT {Robot " + name + "} {Port 5000}");
-            if (!reply.equals("INITREPLY {Status OK}")) {
-                throw new IllegalStateException(name + ": " + reply);
-            }
-        }
-
-        String ask(String line) throws java.io.IOException {
-            socket.getOutputStream().write((line + "\r\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
-            return in.readLine();
-        }
     }
 
     private interface Check {

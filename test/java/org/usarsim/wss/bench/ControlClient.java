@@ -16,7 +16,7 @@ import java.util.regex.Pattern;
  * buffer (a read per byte cost the robots' side 36 system calls a DNS); the connection is a
  * channel, so that {@link MeshAsker} can drive many from one thread.
  */
-final class ControlClient implements AutoCloseable {
+public final class ControlClient implements AutoCloseable {
 
     private static final Pattern DNS_PORT = Pattern.compile("DNSREPLY \\{Robot \\S+\\} \\{Port (\\d+)\\}");
 
@@ -25,7 +25,7 @@ final class ControlClient implements AutoCloseable {
     /** Buffered: holds nothing between two replies, as the server never writes unasked. */
     private final InputStream in;
 
-    ControlClient(int wssPort, String name, int acceptPort) throws IOException {
+    public ControlClient(int wssPort, String name, int acceptPort) throws IOException {
         this(wssPort);
         String reply = ask("INIT {Robot " + name + "} {Port " + acceptPort + "}");
         if (!reply.equals("INITREPLY {Status OK}")) {
@@ -60,7 +60,7 @@ final class ControlClient implements AutoCloseable {
         }
     }
 
-    String ask(String command) throws IOException {
+    public String ask(String command) throws IOException {
         socket.getOutputStream().write((command + "\r\n").getBytes(StandardCharsets.UTF_8));
         ByteArrayOutputStream line = new ByteArrayOutputStream();
         int b;

@@ -435,12 +435,13 @@ public final class RelayBenchmark {
     /**
      * Round-trip times in ns of {@code rounds} 64-byte messages, after {@code warmUp} unmeasured ones
      * on the same connection (a server that has run a while is warm); split: written as 16 + 48 bytes.
+     * ShapingBenchmark's round trips too (a shaped link's delay: the generous timeout).
      */
-    private static long[] roundTrips(int port, int rounds, boolean split, int warmUp) throws IOException {
+    static long[] roundTrips(int port, int rounds, boolean split, int warmUp) throws IOException {
         try (Socket socket = new Socket()) {
             socket.setTcpNoDelay(true);
             socket.connect(new InetSocketAddress("127.0.0.1", port), 5000);
-            socket.setSoTimeout(10_000);
+            socket.setSoTimeout(20_000);
             OutputStream out = socket.getOutputStream();
             InputStream in = socket.getInputStream();
             byte[] message = new byte[64];

@@ -180,7 +180,7 @@ public final class ShapingBenchmark {
                 operator.forceUp("Pinger", "Echo", "54M", delay);
                 int rounds = (int) Math.max(50, Math.min(2000, seconds * 1000L / Math.max(1, 2 * delay)));
                 WaitSampler waits = WaitSampler.start(wss.pid());
-                long[] rtts = roundTrips(port, rounds, 5);
+                long[] rtts = RelayBenchmark.roundTrips(port, rounds, false, 5);
                 double waited = waits.stop() / 1e3 / (rounds + 5);
                 double twice = 2.0 * delay;
                 double median = RelayBenchmark.percentile(rtts, 50) / 1e6;
@@ -189,32 +189,6 @@ public final class ShapingBenchmark {
                         twice, Arrays.stream(rtts).min().getAsLong() / 1e6, median, p99, Arrays.stream(rtts).max().getAsLong() / 1e6,
                         median - twice, p99 - twice, waited);
             }
-        }
-    }
-
-    /** Round-trip times in ns of {@code rounds} 64-byte messages, after {@code warmUp} unmeasured ones, on one new connection. */
-    private static long[] roundTrips(int port, int rounds, int warmUp) throws IOException {
-        try (Socket socket = new Socket()) {
-            socket.setTcpNoDelay(true);
-            socket.connect(new InetSocketAddress("127.0.0.1", port), 5000);
-            socket.setSoTimeout(20_000);
-            OutputStream out = socket.getOutputStream();
-            InputStream in = socket.getInputStream();
-            byte[] message = new byte[64];
-            byte[] reply = new byte[64];
-            long[] rtts = new long[rounds];
-            for (int i = -warmUp; i < rounds; i++) {
-                message[0] = (byte) i;
-                long start = System.nanoTime();
-                out.write(message);
-                if (in.readNBytes(reply, 0, 64) != 64 || reply[0] != message[0]) {
-                    throw new IOException("lost or wrong echo on port " + port);
-                }
-                if (i >= 0) {
-                    rtts[i] = System.nanoTime() - start;
-                }
-            }
-            return rtts;
         }
     }
 

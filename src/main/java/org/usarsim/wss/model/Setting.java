@@ -6,9 +6,10 @@ import java.net.UnknownHostException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
+import java.util.Collection;
 import java.util.HashSet;
-import java.util.LinkedHashSet;
 import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -392,6 +393,25 @@ public final class Setting {
     }
 
     // ---- lists of settings ----
+
+    /**
+     * The given values over the declared defaults, every declared key present (other given keys
+     * kept as they are), each declared one checked by its rule: what a model takes at its start.
+     *
+     * @throws IllegalArgumentException for the first refused value, its message
+     *                                  {@code key: 'value' is not ...}
+     */
+    public static Map<String, String> checked(Collection<Setting> declared, Map<String, String> given) {
+        Map<String, String> values = new LinkedHashMap<>(given);
+        for (Setting setting : declared) {
+            String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue());
+            String problem = setting.problem(value);
+            if (problem != null) {
+                throw new IllegalArgumentException(setting.key() + ": '" + value + "' is not " + problem);
+            }
+        }
+        return values;
+    }
 
     /** Every setting's default, by key, in declaration order. */
     public static Map<String, String> defaults(List<Setting> settings) {

@@ -161,16 +161,13 @@ public final class ReplayPropagationModel implements PropagationModel {
 
     /** The given values over the declared defaults, each by its rule. */
     private ModelSettings checked() throws ModelInputException {
-        Map<String, String> values = new LinkedHashMap<>(given);
-        for (Setting setting : SETTINGS) {
-            String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue()).strip();
-            String problem = setting.problem(value);
-            if (problem != null) {
-                throw new ModelInputException(setting.key() + ": '" + value + "' is not " + problem);
-            }
-            values.put(setting.key(), value);
+        Map<String, String> stripped = new LinkedHashMap<>();
+        given.forEach((key, value) -> stripped.put(key, value.strip()));
+        try {
+            return new ModelSettings(Setting.checked(SETTINGS, stripped));
+        } catch (IllegalArgumentException e) {
+            throw new ModelInputException(e.getMessage());
         }
-        return new ModelSettings(values);
     }
 
     /** The INFO line of what is replayed, and a WARNING for each thing the reader had to leave out. */

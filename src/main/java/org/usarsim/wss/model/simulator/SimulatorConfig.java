@@ -20,13 +20,11 @@ record SimulatorConfig(String host, int port, int intervalMs, int timeoutMs, Pat
         Map<String, Setting> rules = new LinkedHashMap<>();
         SimulatorModel.SETTINGS.forEach(setting -> rules.put(setting.key(), setting));
         declared.forEach(setting -> rules.put(setting.key(), setting));
-        Map<String, String> values = new LinkedHashMap<>(given);
-        for (Setting setting : rules.values()) {
-            String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue());
-            String problem = setting.problem(value);
-            if (problem != null) {
-                throw new ModelStartException(setting.key() + ": '" + value + "' is not " + problem);
-            }
+        Map<String, String> values;
+        try {
+            values = Setting.checked(rules.values(), given);
+        } catch (IllegalArgumentException e) {
+            throw new ModelStartException(e.getMessage());
         }
         ModelSettings checked = new ModelSettings(values);
         return new SimulatorConfig(checked.getString("usarsim.host", null), checked.getInt("usarsim.port", 0),

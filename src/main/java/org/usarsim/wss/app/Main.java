@@ -54,13 +54,16 @@ public final class Main {
      */
     public static final int BAD_INPUT = 2;
 
-    static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
-            + "       java -jar wss.jar --headless [--config FILE]\n"
-            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]\n"
-            + "       java -jar wss.jar --export-world RUN.rec [--out FILE]\n"
-            + "       java -jar wss.jar --version | --help";
+    /**
+     * The command the usage names, and where the help's docs/ are: the Debian package's launcher
+     * sets {@code wss.command=wss} and {@code wss.docs=/usr/share/doc/wss/} (docs/install.md).
+     */
+    private static final String COMMAND = System.getProperty("wss.command", "java -jar wss.jar");
+    private static final String DOCS = System.getProperty("wss.docs", "docs/");
 
-    private static final String HELP = USAGE + "\n"
+    static final String USAGE = usage(COMMAND);
+
+    private static final String OPTIONS = ""
             + "  (no option)         open the WSS's window (docs/gui.md); without a display, run headless\n"
             + "  --start             in the window, press Start at once\n"
             + "  --headless          run the WSS without a window\n"
@@ -77,6 +80,20 @@ public final class Main {
             + "  --out FILE          where --export-world writes the world file\n"
             + "  --version           print the version and exit\n"
             + "  --help, -h          print this and every property of --config FILE, and exit";
+
+    static String usage(String command) {
+        return "usage: " + command + " [--config FILE] [--start]\n"
+                + "       " + command + " --headless [--config FILE]\n"
+                + "       " + command + " --world FILE [--port N] [--bind ADDRESS]\n"
+                + "       " + command + " --export-world RUN.rec [--out FILE]\n"
+                + "       " + command + " --version | --help";
+    }
+
+    /** What --help prints (and the package's manual page wss.1 is made of), naming the command and the docs as given. */
+    static String help(String command, String docs) {
+        String text = usage(command) + "\n" + OPTIONS + "\n" + ConfigFile.help(ConfigFile.defaults().catalog());
+        return text.replace("docs/", docs);
+    }
 
     /** Why a run ends before it serves: the exit code and the one line for standard error. */
     private static final class Failure extends Exception {
@@ -171,8 +188,7 @@ public final class Main {
                     return OK;
                 case "--help":
                 case "-h":
-                    out.println(HELP);
-                    out.print(ConfigFile.help(ConfigFile.defaults().catalog()));
+                    out.print(help(COMMAND, DOCS));
                     return OK;
                 default:
                     throw badInput("unknown argument " + args[i] + "\n" + USAGE);

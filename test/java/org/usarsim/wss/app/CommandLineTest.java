@@ -120,6 +120,17 @@ class CommandLineTest {
         assertTrue(help.contains("--start             in the window, press Start at once"), help);
     }
 
+    /** As the Debian package's launcher runs it: the usage says wss, the docs are where the package puts them. */
+    @Test
+    void helpOfTheInstalledCommandNamesWssAndTheInstalledDocs() {
+        String help = Main.help("wss", "/usr/share/doc/wss/");
+        assertTrue(help.startsWith("usage: wss [--config FILE] [--start]\n       wss --headless [--config FILE]\n"), help);
+        assertTrue(help.contains("(/usr/share/doc/wss/gui.md)"), help);
+        assertTrue(help.contains("properties of --config FILE (/usr/share/doc/wss/headless.md)"), help);
+        assertFalse(help.contains("java -jar"), help);
+        assertFalse(help.contains(" docs/") || help.contains("(docs/"), help);
+    }
+
     /** The log went to run's own stream while it ran; the root logger is as it was when it returns. */
     @Test
     void aRunThatEndsEarlyLeavesTheRootLoggerAsItWas() throws Exception {

@@ -61,7 +61,7 @@ class OptionsParserTest {
 
     @Test
     void theHelpListsEveryOptionInItsColumn() {
-        String help = OptionsParser.help();
+        String help = OptionsParser.help(OptionsParser.COMMAND);
         assertTrue(help.startsWith(OptionsParser.USAGE + "\n  (no option)         open the WSS's window"), help);
         assertTrue(help.contains("\n  --export-world RUN.rec  write a world file"), help);
         assertTrue(help.contains("\n                      for this session\n  --world FILE        instead of the WSS"), help);

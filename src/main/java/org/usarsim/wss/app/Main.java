@@ -54,6 +54,15 @@ public final class Main {
      */
     public static final int BAD_INPUT = 2;
 
+    /** Where the help's docs/ are: the Debian package's launcher sets {@code wss.docs=/usr/share/doc/wss/} (docs/install.md). */
+    private static final String DOCS = System.getProperty("wss.docs", "docs/");
+
+    /** What --help prints (and the package's manual page wss.1 is made of), naming the command and the docs as given. */
+    static String help(String command, String docs) {
+        String text = OptionsParser.help(command) + "\n" + ConfigFile.help(ConfigFile.defaults().catalog());
+        return text.replace("docs/", docs);
+    }
+
     /** Why a run ends before it serves: the exit code and the one line for standard error. */
     private static final class Failure extends Exception {
         final int code;
@@ -102,8 +111,7 @@ public final class Main {
                 yield OK;
             }
             case HELP -> {
-                out.println(OptionsParser.help());
-                out.print(ConfigFile.help(ConfigFile.defaults().catalog()));
+                out.print(help(OptionsParser.COMMAND, DOCS));
                 yield OK;
             }
             case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());

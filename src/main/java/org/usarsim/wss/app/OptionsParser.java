@@ -16,11 +16,10 @@ import org.usarsim.wss.app.Options.Action;
  */
 final class OptionsParser {
 
-    static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
-            + "       java -jar wss.jar --headless [--config FILE]\n"
-            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]\n"
-            + "       java -jar wss.jar --export-world RUN.rec [--out FILE]\n"
-            + "       java -jar wss.jar --version | --help";
+    /** The command the usage names: the Debian package's launcher sets {@code wss.command=wss} (docs/install.md). */
+    static final String COMMAND = System.getProperty("wss.command", "java -jar wss.jar");
+
+    static final String USAGE = usage(COMMAND);
 
     /** What the help says of the command line without options. */
     private static final String NO_OPTION = "open the WSS's window (docs/gui.md); without a display, run headless";
@@ -85,9 +84,17 @@ final class OptionsParser {
     private OptionsParser() {
     }
 
-    /** The usage, then each option on its line(s). */
-    static String help() {
-        StringBuilder help = new StringBuilder(USAGE).append('\n').append(helpLines("(no option)", NO_OPTION));
+    static String usage(String command) {
+        return "usage: " + command + " [--config FILE] [--start]\n"
+                + "       " + command + " --headless [--config FILE]\n"
+                + "       " + command + " --world FILE [--port N] [--bind ADDRESS]\n"
+                + "       " + command + " --export-world RUN.rec [--out FILE]\n"
+                + "       " + command + " --version | --help";
+    }
+
+    /** The usage naming this command, then each option on its line(s). */
+    static String help(String command) {
+        StringBuilder help = new StringBuilder(usage(command)).append('\n').append(helpLines("(no option)", NO_OPTION));
         for (Flag flag : FLAGS) {
             help.append('\n').append(helpLines(flag.label(), flag.help()));
         }

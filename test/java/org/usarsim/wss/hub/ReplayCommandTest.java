@@ -36,22 +36,22 @@ class ReplayCommandTest {
     void anOperatorAsksJumpsChangesSpeedAndPausesWithoutINIT() throws Exception {
         try (TestRobot operator = server.robotAt("127.0.0.1")) {
             replay.time(12.3);
-            assertEquals("REPLAYREPLY {Status OK} {Time 12.3} {Duration 60} {Speed 1} {State Play}", operator.ask("REPLAY"),
+            assertEquals("REPLAYREPLY {Status OK} {Time 12.3} {Duration 60} {Speed 1} {State Play} {Poll 0}", operator.ask("REPLAY"),
                     "alone, it asks");
             assertEquals(List.of(), replay.calls());
 
-            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 1} {State Play}", operator.ask("REPLAY {Time 30}"));
-            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 4} {State Play}", operator.ask("REPLAY {Speed 4}"));
-            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 4} {State Pause}", operator.ask("REPLAY {State pause}"));
-            assertEquals("REPLAYREPLY {Status OK} {Time 0} {Duration 60} {Speed 0.25} {State Play}",
+            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 1} {State Play} {Poll 0}", operator.ask("REPLAY {Time 30}"));
+            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 4} {State Play} {Poll 0}", operator.ask("REPLAY {Speed 4}"));
+            assertEquals("REPLAYREPLY {Status OK} {Time 30} {Duration 60} {Speed 4} {State Pause} {Poll 0}", operator.ask("REPLAY {State pause}"));
+            assertEquals("REPLAYREPLY {Status OK} {Time 0} {Duration 60} {Speed 0.25} {State Play} {Poll 0}",
                     operator.ask("REPLAY {State PLAY} {Time 0} {Speed 0.25}"), "all three in one line, any order, any case");
-            assertEquals("REPLAYREPLY {Status OK} {Time 60} {Duration 60} {Speed 8} {State Play}",
+            assertEquals("REPLAYREPLY {Status OK} {Time 60} {Duration 60} {Speed 8} {State Play} {Poll 0}",
                     operator.ask("REPLAY{Time 60}{Speed 8}"), "the ends are in");
             assertEquals(List.of("jump 30.0", "speed 4.0", "pause", "speed 0.25", "jump 0.0", "play", "speed 8.0", "jump 60.0"),
                     replay.calls());
 
             operator.init("Station");
-            assertEquals("REPLAYREPLY {Status OK} {Time 7.5} {Duration 60} {Speed 8} {State Play}", operator.ask("REPLAY {Time 7.5}"),
+            assertEquals("REPLAYREPLY {Status OK} {Time 7.5} {Duration 60} {Speed 8} {State Play} {Poll 0}", operator.ask("REPLAY {Time 7.5}"),
                     "after INIT too");
         }
     }
@@ -75,7 +75,7 @@ class ReplayCommandTest {
             assertEquals(state, operator.ask("REPLAY {Time 10} {State}"));
             assertEquals(List.of(), replay.calls(), "nothing changed");
             assertEquals("ERROR {Reason Must.Use.INIT.Method.First}", operator.ask("replay {Time 1}"), "the word is case-sensitive");
-            assertEquals("REPLAYREPLY {Status OK} {Time 10} {Duration 60} {Speed 1} {State Play}", operator.ask("REPLAY {Time 10}"),
+            assertEquals("REPLAYREPLY {Status OK} {Time 10} {Duration 60} {Speed 1} {State Play} {Poll 0}", operator.ask("REPLAY {Time 10}"),
                     "still usable");
         }
     }
@@ -84,7 +84,7 @@ class ReplayCommandTest {
     void fromAForeignAddressItIsRefusedAndSaid() throws Exception {
         try (LogCapture warnings = LogCapture.of("org.usarsim.wss.hub.tcp.ControlSession", Level.WARNING);
                 TestRobot foreign = server.robotAt("127.0.0.2")) {
-            assertEquals("ERROR {Reason Not.An.Operator.Address}", foreign.ask("REPLAY {State Pause}"));
+            assertEquals("ERROR {Reason Not.An.Operator.Address}", foreign.ask("REPLAY {State Pause} {Poll 0}"));
             assertEquals("ERROR {Reason Not.An.Operator.Address}", foreign.ask("REPLAY"), "asking is an operator's too");
             assertEquals(List.of(), replay.calls());
             assertEquals(2, warnings.count(Level.WARNING, "REPLAY refused: 127.0.0.2 is not in wss.operators"), warnings.toString());
@@ -100,7 +100,7 @@ class ReplayCommandTest {
             assertEquals("ERROR {Reason Not.A.Replay}", operator.ask("REPLAY"));
             assertEquals("ERROR {Reason Not.A.Replay}", operator.ask("REPLAY {Time 10}"), "before the fields are looked at");
             model.replaying(replay);
-            assertEquals("REPLAYREPLY {Status OK} {Time 0} {Duration 60} {Speed 1} {State Play}", operator.ask("REPLAY"));
+            assertEquals("REPLAYREPLY {Status OK} {Time 0} {Duration 60} {Speed 1} {State Play} {Poll 0}", operator.ask("REPLAY"));
         }
     }
 }

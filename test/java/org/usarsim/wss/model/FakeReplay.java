@@ -56,6 +56,12 @@ public final class FakeReplay implements Replay {
         return time;
     }
 
+    /** The fake applies no polls: the poll applied last stays the recording's start. */
+    @Override
+    public double pollSeconds() {
+        return 0;
+    }
+
     @Override
     public synchronized double speed() {
         return speed;

@@ -17,6 +17,13 @@ public interface Replay {
     /** Where the replay is, in seconds from the recording's start. */
     double timeSeconds();
 
+    /**
+     * The recorded time, in seconds, of the poll the replay applied last: what GETSS, DNS and the
+     * map answer from. It follows {@link #timeSeconds()} as soon as the model's thread has applied
+     * the poll due (a moment later on a busy machine); 0 before the first.
+     */
+    double pollSeconds();
+
     /** How fast the replay runs: 1 is as recorded. */
     double speed();
 

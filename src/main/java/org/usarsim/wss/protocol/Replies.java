@@ -124,11 +124,12 @@ public final class Replies {
 
     /**
      * REPLAY done (or only asked): where the replay is after the change, in seconds, its duration,
-     * its speed and whether it plays. Numbers to the millisecond, trailing zeros dropped.
+     * its speed, whether it plays, and the recorded time of the poll it applied last (what GETSS
+     * answers from). Numbers to the millisecond, trailing zeros dropped.
      */
-    public static String replayOk(double timeSeconds, double durationSeconds, double speed, boolean playing) {
+    public static String replayOk(double timeSeconds, double durationSeconds, double speed, boolean playing, double pollSeconds) {
         return "REPLAYREPLY {Status OK} {Time " + decimal(timeSeconds) + "} {Duration " + decimal(durationSeconds) + "} {Speed "
-                + decimal(speed) + "} {State " + (playing ? "Play" : "Pause") + "}";
+                + decimal(speed) + "} {State " + (playing ? "Play" : "Pause") + "} {Poll " + decimal(pollSeconds) + "}";
     }
 
     /** {@code 12.3}, {@code 60}, {@code 0.25}: to the thousandth, no trailing zeros, no exponent. */

@@ -282,6 +282,13 @@ public final class ReplayPropagationModel implements PropagationModel {
         }
 
         @Override
+        public double pollSeconds() {
+            Player running = player;
+            int index = applied.index();
+            return running == null || index < 0 ? 0 : running.recording.pollMillis(index) / 1000.0;
+        }
+
+        @Override
         public double speed() {
             Player running = player;
             return running == null ? 1 : running.speed();

@@ -283,7 +283,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
                 replay.pause();
             }
         }
-        return Replies.replayOk(replay.timeSeconds(), replay.durationSeconds(), replay.speed(), replay.playing());
+        return Replies.replayOk(replay.timeSeconds(), replay.durationSeconds(), replay.speed(), replay.playing(),
+                replay.pollSeconds());
     }
 
     private void send(String reply) {

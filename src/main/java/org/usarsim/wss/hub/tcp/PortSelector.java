@@ -37,7 +37,7 @@ public final class PortSelector implements AutoCloseable {
     /** How long a port whose accept failed waits before it accepts again (net.AcceptLoop's pause). */
     private static final long PAUSE_NS = TimeUnit.MILLISECONDS.toNanos(100);
     /** How long a close may take before the one waiting for it says so and goes on. */
-    static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(10);
+    public static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(10);
 
         private final HandOver handOver;
     private final Queue<Runnable> tasks = new ConcurrentLinkedQueue<>();

@@ -2,27 +2,21 @@ package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
-import java.util.logging.Logger;
 import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.model.WssEventListener;
 
 /**
  * A propagation model driven by robot positions polled from a USARSim-compatible simulator. Every
@@ -33,7 +27,7 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>Subclasses give the strength of a pair; the rest is here, in one place.
  */
-public abstract class SimulatorModel implements PropagationModel {
+public abstract class SimulatorModel extends PollingModel {
 
     private static final long MAX_BACKOFF_MS = 10_000;
 
@@ -69,16 +63,10 @@ public abstract class SimulatorModel implements PropagationModel {
         }
     }
 
-    private final Logger log = Logger.getLogger(getClass().getName());
     private final PollClock clock;
 
-    /** The values given by {@link #configure}, over the declared defaults: checked and frozen at each start. */
-    private volatile Map<String, String> given = Map.of();
     /** The configuration of the current run (or the last one); null before the first start. */
     private volatile SimulatorConfig config;
-    private volatile RobotLinkModel linkModel;
-    private volatile WssEventListener listener = new WssEventListener() {
-    };
     /** What the last poll learned and decided, swapped whole: GETSS and accepts read it. */
     private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
@@ -111,34 +99,14 @@ public abstract class SimulatorModel implements PropagationModel {
         return DialogLayout.DISTANCE;
     }
 
-    /** Takes the values; they are checked, by their settings' rules, at the next start. */
-    @Override
-    public void configure(ModelSettings settings) {
-        Map<String, String> values = new HashMap<>(given);
-        values.putAll(settings.asMap());
-        given = Map.copyOf(values);
-    }
-
-    @Override
-    public void setRobotLinkModel(RobotLinkModel linkModel) {
-        this.linkModel = linkModel;
-    }
-
-    @Override
-    public void setEventListener(WssEventListener listener) {
-        this.listener = listener;
-    }
-
     /** Checks and freezes the configuration, connects to the simulator and starts polling it. */
     @Override
     public synchronized void start() throws ModelStartException {
         if (poller != null) {
             return;
         }
-        if (linkModel == null) {
-            throw new ModelStartException("no server to act on (setRobotLinkModel was not called)");
-        }
-        SimulatorConfig run = SimulatorConfig.read(settings(), given);
+        RobotLinkModel server = server();
+        SimulatorConfig run = SimulatorConfig.read(settings(), given());
         SimulatorConnection connection;
         try {
             connection = SimulatorConnection.open(run.host(), run.port(), run.timeoutMs());
@@ -155,7 +123,7 @@ public abstract class SimulatorModel implements PropagationModel {
                 + metres(pathLoss.range()) + " (cutoff " + pathLoss.cutoff() + " dBm"
                 + (run.margin() > 0 ? ", margin " + run.margin() + " dB" : "")
                 + (run.holdSeconds() > 0 ? ", hold time " + run.holdSeconds() + " s" : "") + ")");
-        poller = new Poller(run, connection);
+        poller = new Poller(server, run, connection);
     }
 
     /** Stops polling; a poll under way is abandoned (its connection closed) and acts on nothing more. */
@@ -281,6 +249,7 @@ public abstract class SimulatorModel implements PropagationModel {
      */
     private final class Poller implements Runnable {
 
+        private final RobotLinkModel server;
         private final SimulatorConfig run;
         private final Thread thread;
         private volatile boolean stopped;
@@ -295,7 +264,8 @@ public abstract class SimulatorModel implements PropagationModel {
         /** Whether this run said that the simulator gives no walls. */
         private boolean saidNoWalls;
 
-        Poller(SimulatorConfig run, SimulatorConnection connection) {
+        Poller(RobotLinkModel server, SimulatorConfig run, SimulatorConnection connection) {
+            this.server = server;
             this.run = run;
             this.connection = connection;
             thread = new Thread(this, name() + " poller");
@@ -361,69 +331,35 @@ public abstract class SimulatorModel implements PropagationModel {
 
         /** One poll: positions, kicks, obstacle counts, then every pair of listed robots decided, published, broken or resumed. */
         private void poll(SimulatorConnection simulator) throws IOException {
-            RobotLinkModel hub = linkModel;
-            List<String> registeredBefore = hub.getListOfRegisteredRobots();
+            List<String> registeredBefore = server.getListOfRegisteredRobots();
             Map<String, ReportedRobot> listed = simulator.positions();
             if (stopped) {
                 return;
             }
             learnWalls(simulator);
-            List<PollStep.Kick> kicks = PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed));
-            for (PollStep.Kick kick : kicks) {
-                log.info("kicking " + kick.robot() + ": " + kick.reason());
-                if (kick.batteryEmpty()) {
-                    listener.robotOutOfBattery(kick.robot());
-                }
-                hub.kickOutRobot(kick.robot());
-            }
-            List<String> present = PollStep.present(hub.getListOfRegisteredRobots(), listed);
+            applyPoll(new Poll(registeredBefore, listed, kicksRobotsAbsentFrom(listed), "simulator", "", walls, () -> stopped),
+                    present -> decide(present, listed, simulator));
+            failure = null;
+        }
+
+        /** The obstacle counts, then every pair of the present robots decided and published (GETSS reads it); null when stopped. */
+        private List<ModelPoll.Pair> decide(List<String> present, Map<String, ReportedRobot> listed, SimulatorConnection simulator)
+                throws IOException {
             Map<RobotPair, Double> obstacles = obstacleCounts(listed, PollStep.pairs(present), simulator);
             if (stopped) {
-                return;
+                return null;
             }
             PollStep.Decision decision = PollStep.decide(present, listed, obstacles, clock.nanoTime(), snapshot.links(),
                     SimulatorModel.this::strength);
             // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
             snapshot = decision.snapshot();
-            listener.polled(polled(listed, kicks, decision.links(), obstacles));
-            // Every pair's state in one go: a robot that drove out of range of many stops all their ports together.
-            Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
-            decision.links().forEach(link -> inRange.put(link.pair(), link.live()));
-            Set<RobotPair> changed = hub.applyLinkStates(inRange);
+            List<ModelPoll.Pair> pairs = new ArrayList<>(decision.links().size());
             for (PollStep.Link link : decision.links()) {
-                RobotPair pair = link.pair();
-                if (!changed.contains(pair)) {
-                    continue;
-                }
-                if (link.live()) {
-                    log.fine(pair + " in range: " + link.strength() + " dBm");
-                    listener.connectionInRange(pair.first(), pair.second());
-                } else {
-                    log.fine(pair + " out of range: " + link.strength() + " dBm at " + metres(link.distance()));
-                    listener.connectionOutOfRange(pair.first(), pair.second(), link.strength(), link.distance());
-                }
-            }
-            failure = null;
-        }
-
-        /** What this poll learned and decided, for the listeners (a recording): sent before its breaks and resumes are applied. */
-        private ModelPoll polled(Map<String, ReportedRobot> listed, List<PollStep.Kick> kicks, List<PollStep.Link> links,
-                Map<RobotPair, Double> obstacles) {
-            List<ModelPoll.Robot> robots = new ArrayList<>(listed.size());
-            for (ReportedRobot robot : listed.values()) {
-                robots.add(new ModelPoll.Robot(robot.name(), new Position(robot.x(), robot.y(), robot.z()), robot.batteryEmpty()));
-            }
-            List<ModelPoll.Kick> kicked = new ArrayList<>(kicks.size());
-            for (PollStep.Kick kick : kicks) {
-                kicked.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
-            }
-            List<ModelPoll.Pair> pairs = new ArrayList<>(links.size());
-            for (PollStep.Link link : links) {
                 RobotPair pair = link.pair();
                 pairs.add(new ModelPoll.Pair(pair.first(), pair.second(), link.strength(), obstacles.getOrDefault(pair, Double.NaN),
                         link.live()));
             }
-            return new ModelPoll(robots, kicked, pairs, walls);
+            return pairs;
         }
 
         /** Takes the walls of a new connection once they are known, and says what they are, once per connection. */
@@ -487,9 +423,5 @@ public abstract class SimulatorModel implements PropagationModel {
     /** The pause after a failed attempt that follows one of {@code backoffMs}: doubled, up to 10 s (or the interval, if longer). */
     static long nextBackoff(long backoffMs, int intervalMs) {
         return Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
-    }
-
-    private static String metres(double metres) {
-        return String.format(java.util.Locale.ROOT, "%.2f m", metres);
     }
 }

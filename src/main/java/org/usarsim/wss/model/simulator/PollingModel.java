@@ -101,11 +101,19 @@ public abstract class PollingModel implements PropagationModel {
      * the poll ({@code polled}), then breaks and resumes the pairs in one go and tells each change.
      * Stops short, acting on nothing more, when the poll's run stopped.
      *
-     * @return the registered robots the pairs were decided for; null when the run stopped
+     * <p>The pairs are decided for the robots of {@link Poll#registered()} the poll kept, not for
+     * the server's list read again: a robot that registers while the poll is applied was not
+     * checked against it, and the next poll (the replay: its next look, at once) kicks it or
+     * decides its pairs. Were it counted as applied, a replay holding still at its end would never
+     * look at it again, and a robot the recording never had would stay.
+     *
+     * @return the registered robots the poll was applied to (those of {@link Poll#registered()} it
+     *         did not kick); null when the run stopped
      */
     protected final List<String> applyPoll(Poll poll, Decider decider) throws IOException {
         RobotLinkModel server = linkModel;
         List<ModelPoll.Kick> kicks = new ArrayList<>();
+        List<String> kept = new ArrayList<>(poll.registered());
         for (PollStep.Kick kick : PollStep.kicks(poll.registered(), poll.listed(), poll.kickAbsent())) {
             if (poll.stopped().getAsBoolean()) {
                 return null;
@@ -116,9 +124,9 @@ public abstract class PollingModel implements PropagationModel {
             }
             server.kickOutRobot(kick.robot());
             kicks.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
+            kept.remove(kick.robot());
         }
-        List<String> registered = server.getListOfRegisteredRobots();
-        List<ModelPoll.Pair> pairs = decider.decide(PollStep.present(registered, poll.listed()));
+        List<ModelPoll.Pair> pairs = decider.decide(PollStep.present(kept, poll.listed()));
         if (pairs == null || poll.stopped().getAsBoolean()) {
             return null;
         }
@@ -141,7 +149,7 @@ public abstract class PollingModel implements PropagationModel {
                 listener.connectionOutOfRange(pair.first(), pair.second(), pair.strength(), distance);
             }
         }
-        return registered;
+        return List.copyOf(kept);
     }
 
     private static List<ModelPoll.Robot> robots(Map<String, ReportedRobot> listed) {

@@ -2,27 +2,21 @@ package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
-import java.util.logging.Logger;
 import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.model.WssEventListener;
 
 /**
  * A propagation model driven by robot positions polled from a {@link PositionSource}: a
@@ -34,7 +28,7 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>Subclasses give the strength of a pair; the rest is here, in one place.
  */
-public abstract class SimulatorModel implements PropagationModel {
+public abstract class SimulatorModel extends PollingModel {
 
     private static final long MAX_BACKOFF_MS = 10_000;
 
@@ -96,16 +90,10 @@ public abstract class SimulatorModel implements PropagationModel {
         }
     }
 
-    private final Logger log = Logger.getLogger(getClass().getName());
     private final PollClock clock;
 
-    /** The values given by {@link #configure}, over the declared defaults: checked and frozen at each start. */
-    private volatile Map<String, String> given = Map.of();
     /** The configuration of the current run (or the last one); null before the first start. */
     private volatile SimulatorConfig config;
-    private volatile RobotLinkModel linkModel;
-    private volatile WssEventListener listener = new WssEventListener() {
-    };
     /** What the last poll learned and decided, swapped whole: GETSS and accepts read it. */
     private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
@@ -138,34 +126,14 @@ public abstract class SimulatorModel implements PropagationModel {
         return DialogLayout.DISTANCE;
     }
 
-    /** Takes the values; they are checked, by their settings' rules, at the next start. */
-    @Override
-    public void configure(ModelSettings settings) {
-        Map<String, String> values = new HashMap<>(given);
-        values.putAll(settings.asMap());
-        given = Map.copyOf(values);
-    }
-
-    @Override
-    public void setRobotLinkModel(RobotLinkModel linkModel) {
-        this.linkModel = linkModel;
-    }
-
-    @Override
-    public void setEventListener(WssEventListener listener) {
-        this.listener = listener;
-    }
-
     /** Checks and freezes the configuration, opens the source of positions and starts polling it. */
     @Override
     public synchronized void start() throws ModelStartException {
         if (poller != null) {
             return;
         }
-        if (linkModel == null) {
-            throw new ModelStartException("no server to act on (setRobotLinkModel was not called)");
-        }
-        SimulatorConfig run = SimulatorConfig.read(settings(), given);
+        RobotLinkModel server = server();
+        SimulatorConfig run = SimulatorConfig.read(settings(), given());
         started(run.values());
         PositionSource.Opener opener = run.opener(clock);
         PositionSource source = null;
@@ -189,7 +157,7 @@ public abstract class SimulatorModel implements PropagationModel {
                 + metres(pathLoss.range()) + " (cutoff " + pathLoss.cutoff() + " dBm"
                 + (run.margin() > 0 ? ", margin " + run.margin() + " dB" : "")
                 + (run.holdSeconds() > 0 ? ", hold time " + run.holdSeconds() + " s" : "") + ")");
-        poller = new Poller(run, opener, source, unreachable);
+        poller = new Poller(server, run, opener, source, unreachable);
     }
 
     /** Stops polling; a poll under way is abandoned (its connection closed) and acts on nothing more. */
@@ -325,6 +293,7 @@ public abstract class SimulatorModel implements PropagationModel {
      */
     private final class Poller implements Runnable {
 
+        private final RobotLinkModel server;
         private final SimulatorConfig run;
         private final PositionSource.Opener opener;
         private final Thread thread;
@@ -341,7 +310,8 @@ public abstract class SimulatorModel implements PropagationModel {
         private boolean saidNoWalls;
 
         /** Polls {@code source}; when it is null (unreachable at the start, for {@code unreachable}), opens one first. */
-        Poller(SimulatorConfig run, PositionSource.Opener opener, PositionSource source, IOException unreachable) {
+        Poller(RobotLinkModel server, SimulatorConfig run, PositionSource.Opener opener, PositionSource source, IOException unreachable) {
+            this.server = server;
             this.run = run;
             this.opener = opener;
             this.connection = source;
@@ -416,8 +386,7 @@ public abstract class SimulatorModel implements PropagationModel {
 
         /** One poll: positions, kicks, obstacle counts, then every pair of listed robots decided, published, broken or resumed. */
         private void poll(PositionSource simulator) throws IOException {
-            RobotLinkModel hub = linkModel;
-            List<String> registeredBefore = hub.getListOfRegisteredRobots();
+            List<String> registeredBefore = server.getListOfRegisteredRobots();
             Map<String, ReportedRobot> listed = simulator.positions(registeredBefore);
             if (stopped) {
                 return;
@@ -425,62 +394,29 @@ public abstract class SimulatorModel implements PropagationModel {
             if (ownWalls() == null) {
                 learnWalls(simulator);
             }
-            List<PollStep.Kick> kicks = PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed));
-            for (PollStep.Kick kick : kicks) {
-                log.info("kicking " + kick.robot() + ": " + kick.reason());
-                if (kick.batteryEmpty()) {
-                    listener.robotOutOfBattery(kick.robot());
-                }
-                hub.kickOutRobot(kick.robot());
-            }
-            List<String> present = PollStep.present(hub.getListOfRegisteredRobots(), listed);
+            applyPoll(new Poll(registeredBefore, listed, kicksRobotsAbsentFrom(listed), "simulator", "", walls, () -> stopped),
+                    present -> decide(present, listed, simulator));
+            failure = null;
+        }
+
+        /** The obstacle counts, then every pair of the present robots decided and published (GETSS reads it); null when stopped. */
+        private List<ModelPoll.Pair> decide(List<String> present, Map<String, ReportedRobot> listed, PositionSource simulator)
+                throws IOException {
             Map<RobotPair, Double> obstacles = obstacleCounts(listed, PollStep.pairs(present), simulator);
             if (stopped) {
-                return;
+                return null;
             }
             PollStep.Decision decision = PollStep.decide(present, listed, obstacles, clock.nanoTime(), snapshot.links(),
                     SimulatorModel.this::strength);
             // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
             snapshot = decision.snapshot();
-            listener.polled(polled(listed, kicks, decision.links(), obstacles));
-            // Every pair's state in one go: a robot that drove out of range of many stops all their ports together.
-            Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
-            decision.links().forEach(link -> inRange.put(link.pair(), link.live()));
-            Set<RobotPair> changed = hub.applyLinkStates(inRange);
+            List<ModelPoll.Pair> pairs = new ArrayList<>(decision.links().size());
             for (PollStep.Link link : decision.links()) {
-                RobotPair pair = link.pair();
-                if (!changed.contains(pair)) {
-                    continue;
-                }
-                if (link.live()) {
-                    log.fine(pair + " in range: " + link.strength() + " dBm");
-                    listener.connectionInRange(pair.first(), pair.second());
-                } else {
-                    log.fine(pair + " out of range: " + link.strength() + " dBm at " + metres(link.distance()));
-                    listener.connectionOutOfRange(pair.first(), pair.second(), link.strength(), link.distance());
-                }
-            }
-            failure = null;
-        }
-
-        /** What this poll learned and decided, for the listeners (a recording): sent before its breaks and resumes are applied. */
-        private ModelPoll polled(Map<String, ReportedRobot> listed, List<PollStep.Kick> kicks, List<PollStep.Link> links,
-                Map<RobotPair, Double> obstacles) {
-            List<ModelPoll.Robot> robots = new ArrayList<>(listed.size());
-            for (ReportedRobot robot : listed.values()) {
-                robots.add(new ModelPoll.Robot(robot.name(), new Position(robot.x(), robot.y(), robot.z()), robot.batteryEmpty()));
-            }
-            List<ModelPoll.Kick> kicked = new ArrayList<>(kicks.size());
-            for (PollStep.Kick kick : kicks) {
-                kicked.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
-            }
-            List<ModelPoll.Pair> pairs = new ArrayList<>(links.size());
-            for (PollStep.Link link : links) {
                 RobotPair pair = link.pair();
                 pairs.add(new ModelPoll.Pair(pair.first(), pair.second(), link.strength(), obstacles.getOrDefault(pair, Double.NaN),
                         link.live()));
             }
-            return new ModelPoll(robots, kicked, pairs, walls);
+            return pairs;
         }
 
         /** Takes the source's walls once they are known, and says what they are, each time it gives others. */
@@ -545,9 +481,5 @@ public abstract class SimulatorModel implements PropagationModel {
     /** The pause after a failed attempt that follows one of {@code backoffMs}: doubled, up to 10 s (or the interval, if longer). */
     static long nextBackoff(long backoffMs, int intervalMs) {
         return Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
-    }
-
-    private static String metres(double metres) {
-        return String.format(java.util.Locale.ROOT, "%.2f m", metres);
     }
 }

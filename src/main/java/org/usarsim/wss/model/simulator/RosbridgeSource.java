@@ -27,6 +27,7 @@ import org.usarsim.wss.ros.JsonException;
 import org.usarsim.wss.ros.JsonLimits;
 import org.usarsim.wss.ros.JsonNode;
 import org.usarsim.wss.ros.MessageType;
+import org.usarsim.wss.ros.OccupancyGrid;
 import org.usarsim.wss.ros.PoseDecoder;
 import org.usarsim.wss.ros.RobotPose;
 import org.usarsim.wss.ros.RosFrame;
@@ -79,6 +80,11 @@ final class RosbridgeSource implements PositionSource {
     /** Each topic subscribed, with when; removed once a message came on it. */
     private final Map<String, Long> waitingTopics = new LinkedHashMap<>();
     private final Set<String> subscribed = new LinkedHashSet<>();
+    /** The last grid on the map topic, its walls for the map; null before one came. */
+    private OccupancyGrid grid;
+    private List<Wall> gridWalls;
+    /** What the last poll listed, where the obstacles between are counted (the poller's only). */
+    private Map<String, ReportedRobot> lastListed = Map.of();
 
     /** The message being reassembled from fragments (used by the WebSocket's thread only). */
     private final StringBuilder message = new StringBuilder();
@@ -146,7 +152,7 @@ final class RosbridgeSource implements PositionSource {
             subscribe(config.topic(), config.type().rosName(), config.intervalMs());
         }
         if (config.mapTopic() != null) {
-            subscribe(config.mapTopic(), "nav_msgs/OccupancyGrid", Math.max(config.intervalMs(), 1000));
+            subscribe(config.mapTopic(), OccupancyGrid.TYPE, Math.max(config.intervalMs(), 1000));
         }
     }
 
@@ -200,7 +206,7 @@ final class RosbridgeSource implements PositionSource {
         }
         for (String topic : quiet) {
             LOG.warning("rosbridge at " + config.url() + " sent nothing on " + topic + " ("
-                    + (topic.equals(config.mapTopic()) ? "nav_msgs/OccupancyGrid" : config.type().rosName()) + ") for "
+                    + (topic.equals(config.mapTopic()) ? OccupancyGrid.TYPE : config.type().rosName()) + ") for "
                     + RosbridgeConfig.QUIET_MS / 1000 + " s since it was subscribed: is the topic or its type wrong?"
                     + " (rosbridge answers no error for either)");
         }
@@ -212,6 +218,7 @@ final class RosbridgeSource implements PositionSource {
         if (first) {
             LOG.info("positions from " + config.where() + ": " + listed.size() + " robots");
         }
+        lastListed = listed;
         return listed;
     }
 
@@ -238,7 +245,8 @@ final class RosbridgeSource implements PositionSource {
                 waitingTopics.remove(frame.topic());
             }
             if (frame.topic() != null && frame.topic().equals(config.mapTopic())) {
-                return; // the grid: counted by a later part
+                took(OccupancyGrid.of(frame.msg()));
+                return;
             }
             poses = decoder.decode(frame);
         } catch (JsonException | RuntimeException e) {
@@ -262,6 +270,23 @@ final class RosbridgeSource implements PositionSource {
         }
     }
 
+    /** A grid from the map topic: counted on from now; its walls for the map, the same list while they are the same. */
+    private void took(OccupancyGrid taken) {
+        List<Wall> walls = GridWalls.of(taken);
+        boolean firstGrid;
+        synchronized (this) {
+            firstGrid = grid == null;
+            grid = taken;
+            if (!walls.equals(gridWalls)) {
+                gridWalls = walls;
+            }
+        }
+        if (firstGrid) {
+            LOG.info("rosbridge at " + config.url() + ": an occupancy grid on " + config.mapTopic() + ", " + taken.width() + " x "
+                    + taken.height() + " cells of " + taken.resolution() + " m: the obstacles between robots are counted on it");
+        }
+    }
+
     /** A frame that is not a publish: a status line is said (limited), the rest passed over. */
     private void said(RosFrame frame) {
         if ("status".equals(frame.op())) {
@@ -281,10 +306,10 @@ final class RosbridgeSource implements PositionSource {
                 "rosbridge at " + config.url() + " sent " + what + ": keeping the last good positions", null);
     }
 
-    /** Nothing of its own: rosbridge gives no walls but the grid's. */
+    /** The grid's walls once one came on the map topic (null until then); none without a map topic. */
     @Override
-    public List<Wall> walls() {
-        return config.mapTopic() == null ? List.of() : null;
+    public synchronized List<Wall> walls() {
+        return config.mapTopic() == null ? List.of() : gridWalls;
     }
 
     @Override
@@ -292,10 +317,25 @@ final class RosbridgeSource implements PositionSource {
         return null;
     }
 
-    /** None: the counts come from the grid on the map topic, once one came. */
+    /** The walls of the grid between each pair where the last poll listed them; none before a grid came. */
     @Override
     public Map<RobotPair, Double> obstacles(Collection<RobotPair> pairs) {
-        return Map.of();
+        OccupancyGrid counted;
+        synchronized (this) {
+            counted = grid;
+        }
+        Map<RobotPair, Double> counts = new HashMap<>();
+        if (counted == null) {
+            return counts;
+        }
+        for (RobotPair pair : pairs) {
+            ReportedRobot a = lastListed.get(pair.first());
+            ReportedRobot b = lastListed.get(pair.second());
+            if (a != null && b != null) {
+                counts.put(pair, (double) counted.crossings(a.x(), a.y(), b.x(), b.y()));
+            }
+        }
+        return counts;
     }
 
     @Override

@@ -135,7 +135,7 @@ class RosbridgeSourceTest {
     @Test
     void odometryOnEachRobotsTopic() throws Exception {
         RosbridgeSource source = source(Map.of("rosbridge.topic", "/{robot}/odom"));
-        assertEquals(Map.of(), source.positions(List.of("Scout")), "subscribed to /Scout/odom, nothing yet");
+        assertNull(source.positions(List.of("Scout")), "subscribed to /Scout/odom, nothing known yet: not nobody");
         source.received(frames("Scout_odom.jsonl").get(0));
         assertEquals(43.200443269333334, source.positions(List.of("Scout")).get("Scout").x());
     }

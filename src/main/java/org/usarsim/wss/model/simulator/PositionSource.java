@@ -20,8 +20,9 @@ public interface PositionSource extends Closeable {
 
     /**
      * The robots the source lists now, by their WSS names; a robot it does not list (any longer) is
-     * absent. {@code registered} are the robots registered with the WSS, for a source that must
-     * ask for each robot by name.
+     * absent. Null while a source just opened knows nothing yet (no message came on a new
+     * WebSocket): the poll acts on nothing then, rather than kick every robot. {@code registered}
+     * are the robots registered with the WSS, for a source that must ask for each robot by name.
      *
      * @throws IOException when the source is silent or unusable (gone, unreachable, late, garbage):
      *                     the model keeps the last state, says so once and opens the source again

@@ -80,6 +80,8 @@ final class RosbridgeSource implements PositionSource {
     /** Each topic subscribed, with when; removed once a message came on it. */
     private final Map<String, Long> waitingTopics = new LinkedHashMap<>();
     private final Set<String> subscribed = new LinkedHashSet<>();
+    /** Whether a message with poses came on this WebSocket: until then it lists nothing, not "nobody". */
+    private boolean posesCame;
     /** The last grid on the map topic, its walls for the map; null before one came. */
     private OccupancyGrid grid;
     private List<Wall> gridWalls;
@@ -185,7 +187,8 @@ final class RosbridgeSource implements PositionSource {
             robots.addAll(registered);
             robots.forEach(robot -> subscribe(config.topicOf(robot), config.type().rosName(), config.intervalMs()));
         }
-        Map<String, ReportedRobot> listed = new LinkedHashMap<>();
+        Map<String, ReportedRobot> fresh = new LinkedHashMap<>();
+        Map<String, ReportedRobot> listed;
         List<String> quiet = new java.util.ArrayList<>();
         long now = clock.nanoTime();
         synchronized (this) {
@@ -201,14 +204,22 @@ final class RosbridgeSource implements PositionSource {
                 throw new IOException("nothing from rosbridge at " + config.url() + " for "
                         + TimeUnit.NANOSECONDS.toMillis(now - lastMessage) + " ms");
             }
-            latest.values().stream().filter(entry -> fresh(entry, now)).sorted(java.util.Comparator.comparing(e -> e.robot().name()))
-                    .forEach(entry -> listed.put(entry.robot().name(), entry.robot()));
+            if (!posesCame) {
+                listed = null;
+            } else {
+                latest.values().stream().filter(entry -> fresh(entry, now)).sorted(java.util.Comparator.comparing(e -> e.robot().name()))
+                        .forEach(entry -> fresh.put(entry.robot().name(), entry.robot()));
+                listed = fresh;
+            }
         }
         for (String topic : quiet) {
             LOG.warning("rosbridge at " + config.url() + " sent nothing on " + topic + " ("
                     + (topic.equals(config.mapTopic()) ? OccupancyGrid.TYPE : config.type().rosName()) + ") for "
                     + RosbridgeConfig.QUIET_MS / 1000 + " s since it was subscribed: is the topic or its type wrong?"
                     + " (rosbridge answers no error for either)");
+        }
+        if (listed == null) {
+            return null;
         }
         boolean first;
         synchronized (notes) {
@@ -254,6 +265,7 @@ final class RosbridgeSource implements PositionSource {
             return;
         }
         synchronized (this) {
+            posesCame = true;
             if (config.type() == MessageType.MODEL_STATES) {
                 latest.clear(); // each message lists every model: one it no longer lists is gone
             }

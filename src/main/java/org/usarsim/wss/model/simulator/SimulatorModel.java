@@ -352,9 +352,10 @@ public abstract class SimulatorModel extends PollingModel {
                             simulator = opener.open();
                             connection = simulator;
                         }
-                        poll(simulator);
-                        back();
-                        backoffMs = run.intervalMs();
+                        if (poll(simulator)) {
+                            back();
+                            backoffMs = run.intervalMs();
+                        }
                     } catch (IOException e) {
                         if (stopped) {
                             return;
@@ -384,12 +385,16 @@ public abstract class SimulatorModel extends PollingModel {
             return !stopped;
         }
 
-        /** One poll: positions, kicks, obstacle counts, then every pair of listed robots decided, published, broken or resumed. */
-        private void poll(PositionSource simulator) throws IOException {
+        /**
+         * One poll: positions, kicks, obstacle counts, then every pair of listed robots decided,
+         * published, broken or resumed. False when the source gave none, being just opened (the
+         * poll acts on nothing).
+         */
+        private boolean poll(PositionSource simulator) throws IOException {
             List<String> registeredBefore = server.getListOfRegisteredRobots();
             Map<String, ReportedRobot> listed = simulator.positions(registeredBefore);
-            if (stopped) {
-                return;
+            if (stopped || listed == null) {
+                return false;
             }
             if (ownWalls() == null) {
                 learnWalls(simulator);
@@ -397,6 +402,7 @@ public abstract class SimulatorModel extends PollingModel {
             applyPoll(new Poll(registeredBefore, listed, kicksRobotsAbsentFrom(listed), "simulator", "", walls, () -> stopped),
                     present -> decide(present, listed, simulator));
             failure = null;
+            return true;
         }
 
         /** The obstacle counts, then every pair of the present robots decided and published (GETSS reads it); null when stopped. */

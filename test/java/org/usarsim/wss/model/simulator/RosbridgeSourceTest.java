@@ -185,6 +185,16 @@ class RosbridgeSourceTest {
     }
 
     @Test
+    void aNewWebSocketHas5sForItsFirstMessage() throws Exception {
+        RosbridgeSource source = source(Map.of());
+        clock.advance(5_000 * MS);
+        assertNull(source.positions(List.of()), "nothing yet, not silent yet");
+        clock.advance(1 * MS);
+        assertEquals("nothing from rosbridge at ws://127.0.0.1:9090 for 5001 ms",
+                assertThrows(IOException.class, () -> source.positions(List.of())).getMessage());
+    }
+
+    @Test
     void aBadFrameIsOneLineAndTheLastGoodPositionsStay() throws Exception {
         RosbridgeSource source = source(Map.of());
         String good = frames("model_states.jsonl").get(0);

@@ -80,6 +80,8 @@ final class RosbridgeSource implements PositionSource {
     /** Each topic subscribed, with when; removed once a message came on it. */
     private final Map<String, Long> waitingTopics = new LinkedHashMap<>();
     private final Set<String> subscribed = new LinkedHashSet<>();
+    /** Whether any message came on this WebSocket. */
+    private boolean messageCame;
     /** Whether a message with poses came on this WebSocket: until then it lists nothing, not "nobody". */
     private boolean posesCame;
     /** The last grid on the map topic, its walls for the map; null before one came. */
@@ -200,7 +202,9 @@ final class RosbridgeSource implements PositionSource {
                     quiet.add(topic);
                 }
             });
-            if (!subscribed.isEmpty() && now - lastMessage > staleNs) {
+            // A new WebSocket has at least QUIET_MS for its first message: rosbridge and the client may still be warming up.
+            long limit = messageCame ? staleNs : Math.max(staleNs, TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS));
+            if (!subscribed.isEmpty() && now - lastMessage > limit) {
                 throw new IOException("nothing from rosbridge at " + config.url() + " for "
                         + TimeUnit.NANOSECONDS.toMillis(now - lastMessage) + " ms");
             }
@@ -243,6 +247,7 @@ final class RosbridgeSource implements PositionSource {
         long now = clock.nanoTime();
         synchronized (this) {
             lastMessage = now;
+            messageCame = true;
         }
         RosFrame frame;
         List<RobotPose> poses;

@@ -15,6 +15,7 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
@@ -24,6 +25,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * a resume reopens them on the same numbers, without a descriptor more; no socket that does not
  * share the number on purpose (SO_REUSEPORT, same user) can bind it meanwhile.
  */
+@Tag("slow")
 class PortDescriptorsTest {
 
     private static final int ROBOTS = 12;
@@ -63,7 +65,7 @@ class PortDescriptorsTest {
 
             // R0 out of range of every other robot: its ports stop at once, on one descriptor each.
             for (int j = 1; j < ROBOTS; j++) {
-                hub.hub.breakConnectionsForPair("R0", "R" + j);
+                hub.hub.robotLinks().breakConnectionsForPair("R0", "R" + j);
                 int toR0 = numbers[j][0];
                 int fromR0 = numbers[0][j];
                 assertEquals(0, Sockets.listeningSockets(toR0), "stopped when the break returned");
@@ -80,7 +82,7 @@ class PortDescriptorsTest {
             }
 
             for (int j = 1; j < ROBOTS; j++) {
-                hub.hub.resumeConnectionsForPair("R0", "R" + j);
+                hub.hub.robotLinks().resumeConnectionsForPair("R0", "R" + j);
                 assertEquals(1, Sockets.listeningSockets(numbers[j][0]), "listens again on the same number");
             }
             Wait.until("the link of the check ended", () -> Sockets.linkThreads() == 0);
@@ -118,12 +120,12 @@ class PortDescriptorsTest {
                 assertEquals("w", Sockets.readExactly(arrived.getInputStream(), 1));
             }
             b.dns("warmA", 0);
-            hub.hub.breakConnectionsForPair("warmA", "warmB");
-            hub.hub.resumeConnectionsForPair("warmA", "warmB");
+            hub.hub.robotLinks().breakConnectionsForPair("warmA", "warmB");
+            hub.hub.robotLinks().resumeConnectionsForPair("warmA", "warmB");
         }
         Wait.until("the warm-up robots are gone", () -> hub.hub.snapshot().robots().isEmpty());
-        hub.hub.kickOutRobot("warmA");
-        hub.hub.kickOutRobot("warmB");
+        hub.hub.robotLinks().kickOutRobot("warmA");
+        hub.hub.robotLinks().kickOutRobot("warmB");
         Wait.until("the warm-up's link ended", () -> Sockets.linkThreads() == 0);
     }
 }

@@ -109,7 +109,7 @@ public final class Json {
             skipSpace();
             Object value = value(depth);
             if (object.containsKey(key)) {
-                throw JsonException.at(keyAt, "the key \"" + shortened(key) + "\" twice in one object");
+                throw JsonException.at(keyAt, "the key \"" + JsonException.shortened(key) + "\" twice in one object");
             }
             object.put(key, value);
             skipSpace();
@@ -280,7 +280,7 @@ public final class Json {
         }
         double value = Double.parseDouble(text.substring(start, at));
         if (Double.isInfinite(value)) {
-            throw JsonException.at(start, "the number " + shortened(text.substring(start, at)) + " is not finite");
+            throw JsonException.at(start, "the number " + JsonException.shortened(text.substring(start, at)) + " is not finite");
         }
         return value;
     }
@@ -337,10 +337,6 @@ public final class Json {
 
     private static String printable(char c) {
         return c >= 0x20 && c < 0x7f ? String.valueOf(c) : String.format("\\u%04x", (int) c);
-    }
-
-    private static String shortened(String s) {
-        return s.length() <= 40 ? s : s.substring(0, 40) + "...";
     }
 
     /**

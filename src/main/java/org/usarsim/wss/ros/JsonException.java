@@ -1,5 +1,7 @@
 package org.usarsim.wss.ros;
 
+import org.usarsim.wss.LogText;
+
 /**
  * JSON that is not what was expected: text that is not strict JSON (RFC 8259) or over a
  * {@link JsonLimits} limit, with the offset of the first char found wrong, or a value of the
@@ -20,6 +22,15 @@ public final class JsonException extends Exception {
     /** A problem with the value at {@code path} in a parsed message. */
     static JsonException in(String path, String problem) {
         return new JsonException((path.isEmpty() ? "the frame" : path) + ": " + problem, -1);
+    }
+
+    /**
+     * A value of the text as a message quotes it: at most 40 chars, then "...", on one line (the
+     * line feed escaped as {@link LogText} escapes the other control chars).
+     */
+    static String shortened(String value) {
+        String cut = value.length() <= 40 ? value : value.substring(0, 40) + "...";
+        return LogText.escape(cut).replace("\n", "\\u000A");
     }
 
     private JsonException(String message, int offset) {

@@ -98,7 +98,7 @@ public final class PoseDecoder {
                 && topic.endsWith(topicSuffix)) {
             return topic.substring(topicPrefix.length(), topic.length() - topicSuffix.length());
         }
-        throw JsonException.in("topic", topic + " does not name a robot as " + topicPrefix + ROBOT + topicSuffix + " does");
+        throw JsonException.in("topic", JsonException.shortened(topic) + " does not name a robot as " + topicPrefix + ROBOT + topicSuffix + " does");
     }
 
     private static List<RobotPose> modelStates(JsonNode msg) throws JsonException {

@@ -56,7 +56,7 @@ final class TfTree {
             Transform pose = toRoot(frame);
             if (pose != null) {
                 if (!Double.isFinite(pose.x()) || !Double.isFinite(pose.y()) || !Double.isFinite(pose.z())) {
-                    throw JsonException.in("msg.transforms", "the pose of " + frame + " in " + root + " is not finite");
+                    throw JsonException.in("msg.transforms", "the pose of " + JsonException.shortened(frame) + " in " + JsonException.shortened(root) + " is not finite");
                 }
                 poses.add(new RobotPose(frame, pose.x(), pose.y(), pose.z(), entry.getValue().stampNanos()));
             }

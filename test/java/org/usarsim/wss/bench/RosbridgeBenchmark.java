@@ -28,10 +28,13 @@ import org.usarsim.wss.protocol.Replies;
  * or resume in the WSS's log; at 5 Hz (poll 200 ms) and 20 Hz (poll 100 ms, the fastest);</li>
  * <li>{@code cpu}: 100 robots moving, published at 20 Hz, polled every 100 ms: the WSS's CPU per
  * second, beside the same robots from a USARSim position socket polled every 100 ms; the heap in use
- * after a full GC at the start and the end of the rosbridge run.</li>
+ * after a full GC at the start and the end of the rosbridge run. The stale limit is 1000 ms there
+ * ({@code -Dwss.bench.stale=300} for the default of 3 polls), so that a loaded machine's pauses do
+ * not turn into reconnections that the USARSim run does not pay.</li>
  * </ul>
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RosbridgeBenchmark [--only latency|cpu] [--changes 40] [--seconds 60]
+ *     [--heap-samples 9]   (the rosbridge WSS's heap after a full GC every --seconds, this many more times)
  * </pre>
  */
 public final class RosbridgeBenchmark {
@@ -46,12 +49,14 @@ public final class RosbridgeBenchmark {
         int changes = 40;
         int seconds = 60;
         int robots = 100;
+        int heapSamples = 0;
         for (int i = 0; i < args.length; i += 2) {
             switch (args[i]) {
                 case "--only" -> only = args[i + 1];
                 case "--changes" -> changes = Integer.parseInt(args[i + 1]);
                 case "--seconds" -> seconds = Integer.parseInt(args[i + 1]);
                 case "--robots" -> robots = Integer.parseInt(args[i + 1]);
+                case "--heap-samples" -> heapSamples = Integer.parseInt(args[i + 1]);
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
             }
         }
@@ -60,7 +65,7 @@ public final class RosbridgeBenchmark {
             latency(20, 100, changes);
         }
         if (!only.equals("latency")) {
-            cpu(robots, seconds);
+            cpu(robots, seconds, heapSamples);
         }
         System.exit(0);
     }
@@ -206,12 +211,13 @@ public final class RosbridgeBenchmark {
         return new double[] {(i % 10) * 20 + 30 * Math.cos(angle), (i / 10) * 20 + 30 * Math.sin(angle)};
     }
 
-    private static void cpu(int robots, int seconds) throws Exception {
+    private static void cpu(int robots, int seconds, int heapSamples) throws Exception {
         double rosbridge;
         long[] heap;
         try (TinyRosbridge ros = new TinyRosbridge();
                 WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=rosbridge",
-                        "rosbridge.url=" + ros.url(), "positions.interval=100", "distance.n=3")) {
+                        "rosbridge.url=" + ros.url(), "positions.interval=100", "distance.n=3",
+                        "rosbridge.stale=" + System.getProperty("wss.bench.stale", "1000"))) {
             long start = System.nanoTime();
             Publisher publisher = new Publisher(ros, 20);
             Thread mover = new Thread(() -> {
@@ -241,7 +247,12 @@ public final class RosbridgeBenchmark {
             long heapStart = heapAfterGc(wss.pid());
             rosbridge = cpuPerSecond(wss, seconds);
             long heapEnd = heapAfterGc(wss.pid());
+            for (int i = 1; i <= heapSamples; i++) {
+                Thread.sleep(TimeUnit.SECONDS.toMillis(seconds));
+                System.out.println("  heap in use after a full GC, rosbridge, " + (i + 1) * seconds + " s: " + heapAfterGc(wss.pid()) + " KiB");
+            }
             heap = new long[] {heapStart, heapEnd};
+            System.out.println("  (" + wss.linesContaining("lost the simulator") + " silences of rosbridge said in the run)");
             mover.interrupt();
             publisher.stop();
             System.out.println("  (" + clients.size() + " robots registered over rosbridge)");
@@ -262,7 +273,9 @@ public final class RosbridgeBenchmark {
             try (WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=usarsim",
                     "usarsim.host=127.0.0.1", "usarsim.port=" + fake.port(), "positions.interval=100", "distance.n=3")) {
                 register(wss, robots);
+                System.out.println("  heap in use after a full GC, USARSim, start: " + heapAfterGc(wss.pid()) + " KiB");
                 usarsim = cpuPerSecond(wss, seconds);
+                System.out.println("  heap in use after a full GC, USARSim, " + seconds + " s: " + heapAfterGc(wss.pid()) + " KiB");
             }
         }
         System.out.printf(Locale.ROOT, "cpu %d robots, poll 100 ms, %d s each: rosbridge (model_states at 20 Hz) %.1f ms CPU/s,"

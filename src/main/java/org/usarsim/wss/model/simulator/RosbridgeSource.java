@@ -56,6 +56,7 @@ final class RosbridgeSource implements PositionSource {
     /** What a run says once, whichever of its connections learns it first. */
     static final class RunNotes {
         private boolean saidPositions;
+        private boolean saidGrid;
         private final Set<String> saidQuiet = new HashSet<>();
     }
 
@@ -291,8 +292,11 @@ final class RosbridgeSource implements PositionSource {
     private void took(OccupancyGrid taken) {
         List<Wall> walls = GridWalls.of(taken);
         boolean firstGrid;
+        synchronized (notes) {
+            firstGrid = !notes.saidGrid;
+            notes.saidGrid = true;
+        }
         synchronized (this) {
-            firstGrid = grid == null;
             grid = taken;
             if (!walls.equals(gridWalls)) {
                 gridWalls = walls;

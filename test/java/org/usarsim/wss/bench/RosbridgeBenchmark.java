@@ -70,18 +70,6 @@ public final class RosbridgeBenchmark {
         System.exit(0);
     }
 
-    static String modelStates(Map<String, double[]> models) {
-        StringBuilder names = new StringBuilder();
-        StringBuilder poses = new StringBuilder();
-        models.forEach((name, at) -> {
-            names.append(names.length() == 0 ? "" : ",").append('"').append(name).append('"');
-            poses.append(poses.length() == 0 ? "" : ",").append("{\"position\":{\"x\":").append(at[0]).append(",\"y\":").append(at[1])
-                    .append(",\"z\":0.0},\"orientation\":{\"x\":0.0,\"y\":0.0,\"z\":0.0,\"w\":1.0}}");
-        });
-        return "{\"op\":\"publish\",\"topic\":\"\\/gazebo\\/model_states\",\"msg\":{\"name\":[" + names + "],\"pose\":[" + poses
-                + "]}}";
-    }
-
     // ---- latency ----
 
     private static void latency(int hz, int intervalMs, int changes) throws Exception {
@@ -159,7 +147,7 @@ public final class RosbridgeBenchmark {
                     String message;
                     boolean first;
                     synchronized (this) {
-                        message = modelStates(new LinkedHashMap<>(world));
+                        message = TinyRosbridge.modelStates(new LinkedHashMap<>(world));
                         first = changed;
                         changed = false;
                     }

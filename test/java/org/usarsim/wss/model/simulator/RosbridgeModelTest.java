@@ -56,17 +56,6 @@ class RosbridgeModelTest {
         }
     }
 
-    static String modelStates(Map<String, double[]> models) {
-        StringBuilder names = new StringBuilder();
-        StringBuilder poses = new StringBuilder();
-        models.forEach((name, at) -> {
-            names.append(names.length() == 0 ? "" : ",").append('"').append(name).append('"');
-            poses.append(poses.length() == 0 ? "" : ",").append("{\"position\":{\"x\":").append(at[0]).append(",\"y\":").append(at[1])
-                    .append(",\"z\":0.0},\"orientation\":{\"x\":0.0,\"y\":0.0,\"z\":0.0,\"w\":1.0}}");
-        });
-        return "{\"op\":\"publish\",\"topic\":\"\\/gazebo\\/model_states\",\"msg\":{\"name\":[" + names + "],\"pose\":[" + poses + "]}}";
-    }
-
     private void start(Map<String, String> settings) throws Exception {
         rosbridge = new TinyRosbridge();
         startPublisher();
@@ -82,7 +71,7 @@ class RosbridgeModelTest {
         publishing = true;
         publisher = new Thread(() -> {
             while (publishing) {
-                rosbridge.publish(modelStates(new java.util.TreeMap<>(world)), fragments);
+                rosbridge.publish(TinyRosbridge.modelStates(new java.util.TreeMap<>(world)), fragments);
                 try {
                     Thread.sleep(50); // the simulator's 20 Hz, not a wait of the test
                 } catch (InterruptedException e) {

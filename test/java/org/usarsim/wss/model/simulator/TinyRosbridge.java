@@ -147,6 +147,19 @@ public final class TinyRosbridge implements AutoCloseable {
         return line.toString(StandardCharsets.US_ASCII);
     }
 
+    /** A {@code /gazebo/model_states} frame as rosbridge writes it ({@code \/} escaped): each model at (x, y, 0), in the map's order. */
+    public static String modelStates(java.util.Map<String, double[]> models) {
+        StringBuilder names = new StringBuilder();
+        StringBuilder poses = new StringBuilder();
+        models.forEach((name, at) -> {
+            names.append(names.length() == 0 ? "" : ",").append('"').append(name).append('"');
+            poses.append(poses.length() == 0 ? "" : ",").append("{\"position\":{\"x\":").append(at[0]).append(",\"y\":").append(at[1])
+                    .append(",\"z\":0.0},\"orientation\":{\"x\":0.0,\"y\":0.0,\"z\":0.0,\"w\":1.0}}");
+        });
+        return "{\"op\":\"publish\",\"topic\":\"\\/gazebo\\/model_states\",\"msg\":{\"name\":[" + names + "],\"pose\":[" + poses
+                + "]}}";
+    }
+
     /** Sends the text to every client, one frame. */
     public void publish(String text) {
         publish(text, 1);

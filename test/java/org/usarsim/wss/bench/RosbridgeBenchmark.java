@@ -62,7 +62,9 @@ public final class RosbridgeBenchmark {
         }
         if (!only.equals("cpu")) {
             latency(5, 200, changes);
+            usarsimLatency(200, changes);
             latency(20, 100, changes);
+            usarsimLatency(100, changes);
         }
         if (!only.equals("latency")) {
             cpu(robots, seconds, heapSamples);
@@ -88,7 +90,7 @@ public final class RosbridgeBenchmark {
             List<Double> links = new ArrayList<>();
             double at = 10;
             for (int i = 0; i < changes; i++) {
-                Thread.sleep(random.nextInt(intervalMs) + intervalMs); // another phase against the poll each time
+                Thread.sleep(random.nextInt(intervalMs) + intervalMs);
                 at = at == 10 ? 100 : 10;
                 int lines = wss.lineCount();
                 long published = publisher.moveAndAwaitPublish("B", at, 0);
@@ -106,6 +108,44 @@ public final class RosbridgeBenchmark {
             System.out.printf(Locale.ROOT, "latency %d Hz (poll %d ms), %d changes: publish -> GETSS median %.1f ms, p99 %.1f ms;"
                     + " publish -> break/resume median %.1f ms, p99 %.1f ms%n", hz, intervalMs, changes, median(getss), p99(getss),
                     median(links), p99(links));
+        }
+    }
+
+    /** The peer: the same jumps of B in a USARSim position socket (this JVM's), polled at the same interval. */
+    private static void usarsimLatency(int intervalMs, int changes) throws Exception {
+        try (FakeSimulator fake = new FakeSimulator()) {
+            fake.place("A", 0, 0, 0);
+            fake.place("B", 10, 0, 0);
+            try (WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=usarsim",
+                    "usarsim.host=127.0.0.1", "usarsim.port=" + fake.port(), "positions.interval=" + intervalMs, "distance.n=3",
+                    "wss.logLevel=FINE")) {
+                ControlClient a = new ControlClient(wss.controlPort, "A", 40001);
+                new ControlClient(wss.controlPort, "B", 40002);
+                awaitStrength(a, 10, System.nanoTime() + TimeUnit.SECONDS.toNanos(20));
+                Random random = new Random(23);
+                List<Double> getss = new ArrayList<>();
+                List<Double> links = new ArrayList<>();
+                double at = 10;
+                for (int i = 0; i < changes; i++) {
+                    Thread.sleep(random.nextInt(intervalMs) + intervalMs);
+                    at = at == 10 ? 100 : 10;
+                    int lines = wss.lineCount();
+                    long placed = System.nanoTime();
+                    fake.place("B", at, 0, 0);
+                    long strength = awaitStrength(a, at, placed + TimeUnit.SECONDS.toNanos(10));
+                    String event = at == 100 ? "out of range: A - B" : "in range: A - B";
+                    long link;
+                    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                    while ((link = wss.lineTime(event, lines)) < 0 && System.nanoTime() < deadline) {
+                        Thread.sleep(1);
+                    }
+                    getss.add((strength - placed) / 1e6);
+                    links.add((link - placed) / 1e6);
+                }
+                System.out.printf(Locale.ROOT, "  peer, USARSim socket (poll %d ms), %d changes: move -> GETSS median %.1f ms, p99 %.1f ms;"
+                        + " move -> break/resume median %.1f ms, p99 %.1f ms%n", intervalMs, changes, median(getss), p99(getss),
+                        median(links), p99(links));
+            }
         }
     }
 
@@ -127,8 +167,6 @@ public final class RosbridgeBenchmark {
         private final long periodNs;
         private final Map<String, double[]> world = Collections.synchronizedMap(new LinkedHashMap<>());
         private volatile boolean running = true;
-        private long changedAt = -1;
-        private boolean changed;
         private Thread thread;
 
         Publisher(TinyRosbridge ros, int hz) {
@@ -144,20 +182,8 @@ public final class RosbridgeBenchmark {
             thread = new Thread(() -> {
                 long next = System.nanoTime();
                 while (running) {
-                    String message;
-                    boolean first;
                     synchronized (this) {
-                        message = TinyRosbridge.modelStates(new LinkedHashMap<>(world));
-                        first = changed;
-                        changed = false;
-                    }
-                    long now = System.nanoTime();
-                    ros.publish(message);
-                    if (first) {
-                        synchronized (this) {
-                            changedAt = now;
-                            notifyAll();
-                        }
+                        ros.publish(modelStatesNow());
                     }
                     next += periodNs;
                     long wait = next - System.nanoTime();
@@ -174,14 +200,20 @@ public final class RosbridgeBenchmark {
             thread.start();
         }
 
-        synchronized long moveAndAwaitPublish(String name, double x, double y) throws InterruptedException {
+        /**
+         * Moves the robot and publishes at once, out of the tick, so that the change comes at a
+         * random phase of the WSS's poll (the tick's phase against the poll's stays the same for a
+         * whole run); when it went out.
+         */
+        synchronized long moveAndAwaitPublish(String name, double x, double y) {
             place(name, x, y);
-            changed = true;
-            changedAt = -1;
-            while (changedAt < 0) {
-                wait();
-            }
-            return changedAt;
+            long now = System.nanoTime();
+            ros.publish(modelStatesNow());
+            return now;
+        }
+
+        private String modelStatesNow() {
+            return TinyRosbridge.modelStates(new LinkedHashMap<>(world));
         }
 
         void stop() throws InterruptedException {

@@ -30,6 +30,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.ros.JsonLimits;
 import org.usarsim.wss.ros.MessageType;
 import org.usarsim.wss.ros.OccupancyGrid;
@@ -191,6 +192,44 @@ class RosbridgeServerTest {
             InputStream in = socket.getInputStream();
             String answer = new String(in.readAllBytes(), StandardCharsets.ISO_8859_1);
             assertTrue(answer.startsWith("HTTP/1.1 400 Bad Request\r\n"), answer);
+        }
+    }
+
+    /** A raw connection's handshake; its status line. */
+    private static String handshake(Socket socket) throws IOException {
+        socket.setSoTimeout((int) TimeUnit.SECONDS.toMillis(WAIT_S));
+        socket.getOutputStream().write(("GET / HTTP/1.1\r\nHost: 127.0.0.1\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+                + "Sec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\nSec-WebSocket-Version: 13\r\n\r\n").getBytes(StandardCharsets.ISO_8859_1));
+        StringBuilder line = new StringBuilder();
+        InputStream in = socket.getInputStream();
+        int c;
+        while ((c = in.read()) >= 0 && c != '\r') {
+            line.append((char) c);
+        }
+        return line.toString();
+    }
+
+    @Test
+    void theClientBeyondTheLimitIsAnswered503UntilOneLeaves() throws IOException {
+        List<Socket> clients = new ArrayList<>();
+        try {
+            for (int i = 0; i < RosbridgeServer.MAX_CLIENTS; i++) {
+                Socket client = new Socket(InetAddress.getLoopbackAddress(), server.port());
+                clients.add(client);
+                assertEquals("HTTP/1.1 101 Switching Protocols", handshake(client));
+            }
+            try (Socket refused = new Socket(InetAddress.getLoopbackAddress(), server.port())) {
+                assertEquals("HTTP/1.1 503 Service Unavailable", handshake(refused));
+            }
+            clients.remove(0).close();
+            Wait.until("a client's place is free", () -> server.clientCount() < RosbridgeServer.MAX_CLIENTS);
+            try (Socket again = new Socket(InetAddress.getLoopbackAddress(), server.port())) {
+                assertEquals("HTTP/1.1 101 Switching Protocols", handshake(again));
+            }
+        } finally {
+            for (Socket client : clients) {
+                client.close();
+            }
         }
     }
 }

@@ -107,6 +107,10 @@ class TfChainTest {
         assertEquals(MessageType.TF, MessageType.named("tf2_msgs/msg/TFMessage").orElseThrow());
         assertEquals(MessageType.ODOMETRY, MessageType.named("nav_msgs/msg/Odometry").orElseThrow());
         assertTrue(MessageType.named("foo_msgs/Bar").isEmpty());
+        assertEquals(MessageType.MODEL_STATES, MessageType.ofTopic("/model_states").orElseThrow());
+        assertEquals(MessageType.TF, MessageType.ofTopic("/tf_static").orElseThrow());
+        assertTrue(MessageType.ofTopic("/odom").isEmpty(), "no robot in the topic");
+        assertTrue(MessageType.ofTopic("/Scout/pose").isEmpty(), "the type must be given");
     }
 
     @Test

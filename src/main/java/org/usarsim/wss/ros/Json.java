@@ -245,14 +245,17 @@ public final class Json {
 
     private Double number() throws JsonException {
         int start = at;
-        if (peek() == '-') {
+        boolean negative = peek() == '-';
+        if (negative) {
             at++;
         }
+        int digitsStart = at;
         if (peek() == '0') {
             at++;
         } else if (!digits()) {
             throw expected("a digit");
         }
+        int digitsEnd = at;
         boolean integer = true;
         if (peek() == '.') {
             integer = false;
@@ -271,10 +274,15 @@ public final class Json {
                 throw expected("a digit in the exponent");
             }
         }
-        int length = at - start;
-        if (integer && length <= 4) {
-            int value = Integer.parseInt(text, start, at, 10);
-            if (value >= -128 && value < 128) {
+        if (integer && digitsEnd - digitsStart <= 3) {
+            int value = 0;
+            for (int i = digitsStart; i < digitsEnd; i++) {
+                value = value * 10 + text.charAt(i) - '0';
+            }
+            if (negative) {
+                value = -value;
+            }
+            if (value >= -128 && value < 128 && !(negative && value == 0)) {
                 return SMALL[value + 128];
             }
         }

@@ -42,12 +42,13 @@ public enum MessageType {
     }
 
     /**
-     * The type a topic tells: {@code /gazebo/model_states}, {@code /tf} and {@code /tf_static},
-     * any topic ending in {@code /odom}; empty for the others (the type must then be given).
+     * The type a topic tells: {@code /gazebo/model_states} (and ROS 2's gazebo_ros default
+     * {@code /model_states}), {@code /tf} and {@code /tf_static}, any topic ending in
+     * {@code /odom}; empty for the others (the type must then be given).
      */
     public static Optional<MessageType> ofTopic(String topic) {
         return switch (topic) {
-            case "/gazebo/model_states" -> Optional.of(MODEL_STATES);
+            case "/gazebo/model_states", "/model_states" -> Optional.of(MODEL_STATES);
             case "/tf", "/tf_static" -> Optional.of(TF);
             default -> topic.endsWith("/odom") && topic.length() > "/odom".length() ? Optional.of(ODOMETRY) : Optional.empty();
         };

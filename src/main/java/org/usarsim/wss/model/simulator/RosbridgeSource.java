@@ -177,8 +177,8 @@ final class RosbridgeSource implements PositionSource {
             waitingTopics.put(topic, clock.nanoTime());
             WebSocket open = socket;
             if (open != null) {
-                // One send at a time: the next goes once the last is done.
-                sending = sending.thenCompose(done -> open.sendText(text, true));
+                // One send at a time: the next goes once the last is done, or failed (the WebSocket's close says why).
+                sending = sending.handle((done, failed) -> done).thenCompose(done -> open.sendText(text, true));
             }
         }
     }

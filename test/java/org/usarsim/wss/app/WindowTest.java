@@ -568,10 +568,10 @@ class WindowTest {
         int simulatorPort = freePort();
         DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
         ModelPreferences stored = new ModelPreferences(preferences.node("models"));
-        stored.store(distanceOnly, Map.of("usarsim.port", "1", "usarsim.interval", "400", "distance.n", "2"));
+        stored.store(distanceOnly, Map.of("usarsim.port", "1", "positions.interval", "400", "distance.n", "2"));
         // As --config gives them: only the model keys the file sets.
         Map<String, String> file = Map.of("usarsim.host", "127.0.0.1", "usarsim.port", String.valueOf(simulatorPort),
-                "usarsim.interval", "150");
+                "positions.interval", "150");
         frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(file), false),
                 List.of(new NoopPropagationModel(), distanceOnly, new ObstaclePropagationModel()));
 
@@ -579,19 +579,19 @@ class WindowTest {
         java.awt.Window dialog = configureDialog(title);
         assertEquals(String.valueOf(simulatorPort), onEdt(() -> find(dialog, JTextField.class, "usarsim.port").getText()),
                 "the file's port, over the stored 1");
-        assertEquals("150", onEdt(() -> find(dialog, JTextField.class, "usarsim.interval").getText()), "the file's, over the stored 400");
+        assertEquals("150", onEdt(() -> find(dialog, JTextField.class, "positions.interval").getText()), "the file's, over the stored 400");
         assertEquals("2", onEdt(() -> find(dialog, JTextField.class, "distance.n").getText()), "the stored, which the file does not set");
-        run(() -> find(dialog, JTextField.class, "usarsim.interval").setText("175"));
+        run(() -> find(dialog, JTextField.class, "positions.interval").setText("175"));
         run(() -> find(dialog, JButton.class, "ok").doClick());
         until("the dialog closed", () -> Gui.showing(title).isEmpty());
-        assertEquals("175", stored.load(distanceOnly).get("usarsim.interval"), "OK stored what was entered");
+        assertEquals("175", stored.load(distanceOnly).get("positions.interval"), "OK stored what was entered");
         assertEquals(String.valueOf(simulatorPort), stored.load(distanceOnly).get("usarsim.port"), "and what it showed");
 
         // Another model's dialog still shows the file's values: OK stored DistanceOnly's only.
         run(() -> component(JComboBox.class, "model").setSelectedItem("ObstaclePropagationModel"));
         String obstacleTitle = "ObstaclePropagationModel Configuration";
         java.awt.Window obstacleDialog = configureDialog(obstacleTitle);
-        assertEquals("150", onEdt(() -> find(obstacleDialog, JTextField.class, "usarsim.interval").getText()));
+        assertEquals("150", onEdt(() -> find(obstacleDialog, JTextField.class, "positions.interval").getText()));
         run(() -> find(obstacleDialog, JButton.class, "cancel").doClick());
         until("the Obstacle dialog closed", () -> Gui.showing(obstacleTitle).isEmpty());
         run(() -> component(JComboBox.class, "model").setSelectedItem("DistanceOnlyPropagationModel"));

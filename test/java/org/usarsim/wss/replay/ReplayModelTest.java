@@ -283,6 +283,25 @@ class ReplayModelTest {
         assertEquals(List.of("Stranger"), links.kicked());
     }
 
+    /**
+     * Issue 26, item 10: a robot that registers while the replay applies a poll (between its look
+     * at the registered robots and the poll's end) was counted as applied without being checked,
+     * and a replay holding still at its end never looked at it again.
+     */
+    @Test
+    void aRobotThatRegistersWhileAPollIsAppliedIsKickedAtTheEnd() throws Exception {
+        links.register("Alpha", "Bravo");
+        started(new Recordings().robot("Alpha", 0, 0, false).robot("Bravo", 10, 0, false)
+                .pair("Alpha", "Bravo", -67, true).poll(100).write(dir.resolve("short.rec"), 150));
+        after(1_000);
+        Wait.until("the end said", () -> log.count(Level.INFO, "the replay reached its end at 00:00") == 1);
+        awaitAlphaBravo(-67);
+        links.registerThenAnother("Zed", "Stranger"); // the stranger registers while the replay kicks Zed
+        Wait.until("the stranger kicked", () -> links.kicked().contains("Stranger"));
+        assertEquals(List.of("Zed", "Stranger"), links.kicked());
+        assertEquals(1, log.count(Level.INFO, "kicking Stranger: the recording does not list it at 00:00"), log.toString());
+    }
+
     @Test
     void aRecordingCutShortIsReplayedWithOneWarning() throws Exception {
         Path file = dir.resolve("crashed.rec");

@@ -12,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -179,15 +180,19 @@ public final class ConfigFile {
         }
         rules.forEach((key, rule) -> values.putIfAbsent(key, rule.defaultValue()));
         List<String> ignored = new ArrayList<>();
-        for (String key : keys) {
-            String value = properties.getProperty(key).strip();
+        for (String fileKey : keys) {
+            String value = properties.getProperty(fileKey).strip();
+            String key = renamed(fileKey, rules.values());
+            if (!key.equals(fileKey) && properties.containsKey(key)) {
+                throw new ConfigFileException(source + ": " + fileKey + " is the old name of " + key + "; set only " + key);
+            }
             Setting rule = rules.get(key);
             if (rule == null) {
                 throw new ConfigFileException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
                         + String.join(", ", rules.keySet()));
             }
             if (!key.startsWith("wss.")) {
-                values.put(key, checked(rule, value, source));
+                values.put(key, checked(rule, fileKey, value, source));
                 if (Setting.find(own, key) == null) {
                     ignored.add(key);
                 }
@@ -196,11 +201,26 @@ public final class ConfigFile {
         return new ConfigFile(values, catalog, List.copyOf(ignored));
     }
 
+    /** The key a file's key stands for: itself, or the setting's whose old name it is ({@link Setting#alias()}). */
+    private static String renamed(String fileKey, Collection<Setting> rules) {
+        if (rules.stream().anyMatch(rule -> rule.key().equals(fileKey))) {
+            return fileKey;
+        }
+        Setting renamed = Setting.findAlias(rules, fileKey);
+        return renamed == null ? fileKey : renamed.key();
+    }
+
     private static String checked(Setting rule, String value, String source) throws ConfigFileException {
+        return checked(rule, rule.key(), value, source);
+    }
+
+    /** As {@link #checked(Setting, String, String)}, the value given under {@code fileKey}, the rule's key or its old name. */
+    private static String checked(Setting rule, String fileKey, String value, String source) throws ConfigFileException {
         String stripped = value.strip();
         String problem = rule.problem(stripped);
         if (problem != null) {
-            throw new ConfigFileException(source + ": " + rule.key() + " = '" + stripped + "' is not " + problem);
+            throw new ConfigFileException(source + ": " + fileKey + " = '" + stripped + "' is not " + problem
+                    + (fileKey.equals(rule.key()) ? "" : " (" + fileKey + " is the old name of " + rule.key() + ")"));
         }
         return stripped;
     }
@@ -345,8 +365,11 @@ public final class ConfigFile {
      * read from, sets, with their checked values: what the window puts over the stored model settings.
      */
     ModelSettings modelKeysSetBy(Properties file) {
+        List<Setting> rules = new ArrayList<>();
+        catalog.models().forEach(model -> rules.addAll(model.settings()));
         Map<String, String> set = new LinkedHashMap<>();
-        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
+        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted()
+                .map(key -> renamed(key, rules)).forEach(key -> set.put(key, get(key)));
         return new ModelSettings(set);
     }
 

@@ -29,6 +29,7 @@ import org.usarsim.wss.recording.Recording;
 import org.usarsim.wss.recording.RecordingException;
 import org.usarsim.wss.recording.RecordingReader;
 import org.usarsim.wss.recording.WorldExport;
+import org.usarsim.wss.world.RosbridgeServer;
 import org.usarsim.wss.world.WorldFileException;
 import org.usarsim.wss.world.WorldServer;
 import sun.misc.Signal;
@@ -37,7 +38,7 @@ import sun.misc.SignalHandler;
 /**
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
- * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS]} runs a USARSim-compatible
+ * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]} runs a USARSim-compatible
  * world server instead (docs/world.md); {@code --export-world RUN.rec [--out FILE]} writes a recording as a
  * world file (docs/replay.md). {@link #run} does it all and returns the exit code
  * ({@link #OK}, {@link #CANNOT_START}, {@link #BAD_INPUT}); {@link #main} only exits with it.
@@ -115,7 +116,7 @@ public final class Main {
                 yield OK;
             }
             case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());
-            case WORLD -> runWorld(out, options.world(), options.port(), options.bind());
+            case WORLD -> runWorld(out, options.world(), options.port(), options.bind(), options.rosbridge());
             case SERVE -> serve(out, options);
         };
     }
@@ -270,8 +271,8 @@ public final class Main {
                 .map(PropagationModel::name).toList();
     }
 
-    /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */
-    private static int runWorld(PrintStream out, Path file, int port, String bindText) throws Failure {
+    /** The world server (and its rosbridge, on a port not -1): read the file, listen, serve until SIGTERM or Ctrl-C. */
+    private static int runWorld(PrintStream out, Path file, int port, String bindText, int rosbridgePort) throws Failure {
         InetAddress address;
         try {
             address = InetAddress.getByName(bindText);
@@ -289,9 +290,21 @@ public final class Main {
             } catch (IOException e) {
                 throw new Failure(CANNOT_START, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
             }
+            RosbridgeServer rosbridge = null;
             try {
+                if (rosbridgePort >= 0) {
+                    try {
+                        rosbridge = RosbridgeServer.start(server, address, rosbridgePort);
+                    } catch (IOException e) {
+                        throw new Failure(CANNOT_START, "cannot listen for rosbridge on " + address.getHostAddress() + ":"
+                                + rosbridgePort + ": " + e.getMessage());
+                    }
+                }
                 stop.await();
             } finally {
+                if (rosbridge != null) {
+                    rosbridge.close();
+                }
                 server.close();
             }
         }

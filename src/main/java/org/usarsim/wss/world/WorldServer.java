@@ -79,6 +79,16 @@ public final class WorldServer implements AutoCloseable {
         return world.at(clock.getAsDouble());
     }
 
+    /** The seconds the world has run. */
+    double time() {
+        return clock.getAsDouble();
+    }
+
+    /** The world at a time ({@link #time()}). */
+    Snapshot at(double seconds) {
+        return world.at(seconds);
+    }
+
     /** Stops listening, at once, and closes every client connection; waits (at most a second) for their threads to end. */
     @Override
     public void close() {

@@ -102,6 +102,14 @@ class TfChainTest {
     }
 
     @Test
+    void aFrameWhosePoseAddsUpToInfinityIsLeftOut() throws JsonException {
+        decoder.decode(message(transform("map", "far", 1e308, 0, 0, 1)));
+        assertEquals(List.of(), decoder.decode(message(transform("far", "beyond", 1e308, 0, 0, 1))));
+        assertEquals(List.of("beyond", "far"), decoder.decode(message(transform("map", "far", 0, 0, 0, 1))).stream()
+                .map(RobotPose::name).sorted().toList(), "back within reach");
+    }
+
+    @Test
     void theOldTfTypeNameAndRos2TypeNamesAreTf() {
         assertEquals(MessageType.TF, MessageType.named("tf/tfMessage").orElseThrow());
         assertEquals(MessageType.TF, MessageType.named("tf2_msgs/msg/TFMessage").orElseThrow());

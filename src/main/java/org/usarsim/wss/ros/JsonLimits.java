@@ -2,7 +2,7 @@ package org.usarsim.wss.ros;
 
 /**
  * How much JSON {@link Json#parse} takes: the text's length in chars (a UTF-16 {@code String}'s
- * length; at most twice its UTF-8 bytes, never more) and the nesting of arrays and objects.
+ * length, never more than its UTF-8 bytes) and the nesting of arrays and objects.
  *
  * @param maxChars the longest text, in chars; a longer one is refused before it is read
  * @param maxDepth the deepest nesting of arrays and objects, 1 to 1000; {@code []} is depth 1

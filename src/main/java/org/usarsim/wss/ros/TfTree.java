@@ -1,9 +1,13 @@
 package org.usarsim.wss.ros;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Deque;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * The transforms tf has sent so far, each child frame with its parent, kept across messages
@@ -23,6 +27,8 @@ final class TfTree {
 
     private final String root;
     private final Map<String, Link> links = new HashMap<>();
+    /** Each parent frame's children, so that a message's frames find the frames below them. */
+    private final Map<String, Set<String>> children = new HashMap<>();
 
     TfTree(String root) {
         this.root = plain(root);
@@ -31,7 +37,8 @@ final class TfTree {
     /**
      * Takes one message's transforms (child frame to link), then gives the pose in the root frame
      * of every frame whose chain to the root changed (a frame of the message or a frame below
-     * one), each with its own link's stamp; frames with no chain to the root (yet) are left out.
+     * one), each with its own link's stamp; frames with no chain to the root (yet), and frames
+     * whose pose adds up to more than a double holds, are left out.
      *
      * @throws JsonException the message would take the tree over {@link #MAX_FRAMES} frames
      */
@@ -45,48 +52,43 @@ final class TfTree {
         if (links.size() + added > MAX_FRAMES) {
             throw JsonException.in("msg.transforms", "more than " + MAX_FRAMES + " frames in the tf tree: refused");
         }
-        links.putAll(message);
-        Map<String, Boolean> changed = new HashMap<>();
+        for (Map.Entry<String, Link> entry : message.entrySet()) {
+            Link old = links.put(entry.getKey(), entry.getValue());
+            if (old != null && !old.parent().equals(entry.getValue().parent())) {
+                Set<String> siblings = children.get(old.parent());
+                siblings.remove(entry.getKey());
+                if (siblings.isEmpty()) {
+                    children.remove(old.parent());
+                }
+            }
+            children.computeIfAbsent(entry.getValue().parent(), parent -> new LinkedHashSet<>()).add(entry.getKey());
+        }
         List<RobotPose> poses = new ArrayList<>();
-        for (Map.Entry<String, Link> entry : links.entrySet()) {
-            String frame = entry.getKey();
-            if (frame.equals(root) || !changed(frame, message, changed)) {
+        for (String frame : below(message.keySet())) {
+            if (frame.equals(root)) {
                 continue;
             }
             Transform pose = toRoot(frame);
-            if (pose != null) {
-                if (!Double.isFinite(pose.x()) || !Double.isFinite(pose.y()) || !Double.isFinite(pose.z())) {
-                    throw JsonException.in("msg.transforms", "the pose of " + JsonException.shortened(frame) + " in " + JsonException.shortened(root) + " is not finite");
-                }
-                poses.add(new RobotPose(frame, pose.x(), pose.y(), pose.z(), entry.getValue().stampNanos()));
+            // A chain of huge translations can add up to infinity: that frame is left out, as one with no chain.
+            if (pose != null && Double.isFinite(pose.x()) && Double.isFinite(pose.y()) && Double.isFinite(pose.z())) {
+                poses.add(new RobotPose(frame, pose.x(), pose.y(), pose.z(), links.get(frame).stampNanos()));
             }
         }
         return poses;
     }
 
-    /** Whether the frame or a frame on its chain up is in the message (memoised; a cycle is "not"). */
-    private boolean changed(String frame, Map<String, Link> message, Map<String, Boolean> memo) {
-        List<String> chain = new ArrayList<>();
-        String at = frame;
-        boolean result = false;
-        while (at != null && !at.equals(root) && chain.size() <= links.size()) {
-            Boolean known = memo.get(at);
-            if (known != null) {
-                result = known;
-                break;
+    /** The frames given and every frame below one of them, each once (a loop ends where it began). */
+    private Set<String> below(Set<String> frames) {
+        Set<String> found = new LinkedHashSet<>(frames);
+        Deque<String> next = new ArrayDeque<>(frames);
+        while (!next.isEmpty()) {
+            for (String child : children.getOrDefault(next.poll(), Set.of())) {
+                if (found.add(child)) {
+                    next.add(child);
+                }
             }
-            if (message.containsKey(at)) {
-                result = true;
-                break;
-            }
-            chain.add(at);
-            Link link = links.get(at);
-            at = link == null ? null : link.parent();
         }
-        for (String f : chain) {
-            memo.put(f, result);
-        }
-        return result;
+        return found;
     }
 
     /** The frame's pose in the root frame; null when its chain does not reach the root (or loops). */

@@ -16,52 +16,25 @@ import java.util.logging.Logger;
  * read waits until the next tick at most). A client that does not read its messages holds up
  * only its own thread. Its log lines go through the server's {@link RosbridgeServer#lines} limit.
  */
-final class RosbridgeClient implements Runnable, WebSocketFrames.Sink, RosbridgeSession.Out {
+final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink, RosbridgeSession.Out {
 
     private static final Logger LOG = Logger.getLogger(RosbridgeClient.class.getName());
     /** How long the handshake may take. */
     private static final int HANDSHAKE_MS = 10_000;
 
     private final RosbridgeServer server;
-    private final Socket socket;
-    private final String peer;
     /** Whether the server already serves as many clients as it may: this one is answered 503. */
     private final boolean busy;
     private final WebSocketFrames frames = new WebSocketFrames(RosbridgeServer.MAX_MESSAGE_BYTES);
     private final RosbridgeSession session;
     private OutputStream out;
     private boolean closing;
-    private volatile Thread thread;
 
     RosbridgeClient(RosbridgeServer server, Socket socket, boolean busy) {
+        super(socket, "world-rosbridge-client");
         this.server = server;
-        this.socket = socket;
         this.busy = busy;
-        this.peer = socket.getInetAddress().getHostAddress() + ":" + socket.getPort();
         this.session = new RosbridgeSession(server.world()::now, server::map, this);
-    }
-
-    void start() {
-        Thread started = new Thread(this, "world-rosbridge-client " + peer);
-        started.setDaemon(true);
-        thread = started;
-        started.start();
-    }
-
-    void awaitEnd(long deadline) throws InterruptedException {
-        Thread started = thread;
-        long left = deadline - System.nanoTime();
-        if (started != null && left > 0) {
-            started.join(Math.max(1, left / 1_000_000));
-        }
-    }
-
-    void close() {
-        try {
-            socket.close();
-        } catch (IOException e) {
-            LOG.fine(() -> "closing rosbridge client " + peer + ": " + e);
-        }
     }
 
     @Override

@@ -5,9 +5,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
-import java.util.List;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
 import java.util.logging.Logger;
@@ -37,7 +34,7 @@ public final class RosbridgeServer implements AutoCloseable {
 
     private final WorldServer world;
     private final ServerSocketChannel server;
-    private final Set<RosbridgeClient> clients = ConcurrentHashMap.newKeySet();
+    private final ServedClients<RosbridgeClient> clients = new ServedClients<>();
     private final Thread acceptor;
     private final AtomicBoolean closed = new AtomicBoolean();
     private volatile String map;
@@ -93,32 +90,13 @@ public final class RosbridgeServer implements AutoCloseable {
         if (!closed.compareAndSet(false, true)) {
             return;
         }
-        try {
-            server.close();
-        } catch (IOException e) {
-            LOG.fine(() -> "closing the rosbridge socket: " + e);
-        }
-        try {
-            acceptor.join(1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        List<RosbridgeClient> closing = List.copyOf(clients);
-        closing.forEach(RosbridgeClient::close);
-        long deadline = System.nanoTime() + 1_000_000_000L;
-        try {
-            for (RosbridgeClient client : closing) {
-                client.awaitEnd(deadline);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        clients.closeAll(server, acceptor);
         lines.close();
         LOG.info("rosbridge stopped");
     }
 
     void ended(RosbridgeClient client) {
-        clients.remove(client);
+        clients.ended(client);
     }
 
     int clientCount() {
@@ -134,17 +112,7 @@ public final class RosbridgeServer implements AutoCloseable {
         @Override
         protected void serve(SocketChannel socket) {
             boolean busy = clients.size() >= MAX_CLIENTS;
-            RosbridgeClient client = new RosbridgeClient(RosbridgeServer.this, socket.socket(), busy);
-            clients.add(client);
-            if (!server.isOpen()) {
-                client.close();
-            }
-            try {
-                client.start();
-            } catch (Throwable e) {
-                clients.remove(client);
-                throw e;
-            }
+            clients.serve(new RosbridgeClient(RosbridgeServer.this, socket.socket(), busy), server, RosbridgeClient::start);
         }
 
         @Override

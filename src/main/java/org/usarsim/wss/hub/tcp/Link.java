@@ -41,7 +41,7 @@ public final class Link implements Runnable, Connection {
     private final int chunkSize;
     private final SocketBuffers buffers;
     private final WssEventListener events;
-    private final Switchboard switchboard;
+    private final LinkHub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
     /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
@@ -54,9 +54,9 @@ public final class Link implements Runnable, Connection {
     private volatile boolean established;
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
-    public Link(Switchboard switchboard, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
+    public Link(LinkHub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
             SocketBuffers buffers, WssEventListener events, PairStats stats, Shaping shaping) throws IOException {
-        this.switchboard = switchboard;
+        this.hub = hub;
         this.shaping = shaping;
         this.stats = stats;
         this.port = port;
@@ -145,7 +145,7 @@ public final class Link implements Runnable, Connection {
             established = true;
             this.established = true;
             stats.opened();
-            switchboard.established(this);
+            hub.established(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
             // A reset or an error on a socket, or a close from another thread: the link is over.
@@ -158,7 +158,7 @@ public final class Link implements Runnable, Connection {
             close();
             stats.closed(closeReason.get());
             Closing.quietly(selector);
-            switchboard.linkEnded(this, established);
+            hub.linkEnded(this, established);
         }
     }
 
@@ -167,7 +167,7 @@ public final class Link implements Runnable, Connection {
             target.socket().connect(targetAddress, CONNECT_TIMEOUT_MS);
         } catch (IOException e) {
             if (!closed.get()) {
-                switchboard.warn(LOG, "unreachable targets", source.socket().getInetAddress(), this + ": the target at "
+                hub.warn(LOG, "unreachable targets", source.socket().getInetAddress(), this + ": the target at "
                         + targetAddress.getAddress().getHostAddress() + ":" + targetAddress.getPort() + " did not accept ("
                         + e.getMessage() + "); closing the source's connection", null);
             }
@@ -181,7 +181,7 @@ public final class Link implements Runnable, Connection {
             buffers.apply(channel);
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
-            switchboard.keepAlive().apply(channel);
+            hub.keepAlive().apply(channel);
             channel.configureBlocking(false);
         }
         Direction up = new Direction(this, source, target, key.from(), key.to(), chunkSize, stats, events);

@@ -93,6 +93,7 @@ class FixedPortsConfigTest {
         "wss.fixed|A->A:80@40021|a robot's port to itself",
         "wss.fixed|A->B:80@40021,B->A:81@40021|take the same tcp port 40021",
         "wss.fixed|udp A->B:80@40021,udp B->A:81@40021|take the same udp port 40021",
+        "wss.fixed|A->B:80@40021,A->B:80@40022|are the same way to the same port",
         "wss.fixed|A->B:80@40021,|'' is not [tcp|udp] FROM->TO:PORT@NUMBER",
         "wss.udpIdleSeconds|0|wss.udpIdleSeconds = '0' is not",
         "wss.shaping.loss|-88:10,-85:1|rows must go from the strongest to the weakest signal",
@@ -100,7 +101,7 @@ class FixedPortsConfigTest {
     })
     void aBadFixedPortIsOneLineNamingTheKeyAndTheValue(String key, String given, String why) {
         String number = String.valueOf(free());
-        String value = given.replace("40021", number);
+        String value = given.replace("40021", number).replace("40022", String.valueOf(free()));
         String message = refused("wss.robot.A", "", "wss.robot.B", "", key, value);
         assertTrue(message.contains(key + " = '" + value + "' is not "), message);
         assertTrue(message.contains(why.replace("40021", number)), message);

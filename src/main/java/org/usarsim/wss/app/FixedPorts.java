@@ -53,6 +53,7 @@ final class FixedPorts {
         }
         Set<String> names = declared.stream().map(DeclaredRobot::name).collect(Collectors.toSet());
         Map<String, FixedPort> numbers = new HashMap<>();
+        Map<String, FixedPort> keys = new HashMap<>();
         for (FixedPort port : ports) {
             for (String robot : List.of(port.key().from(), port.key().to())) {
                 if (!names.contains(robot)) {
@@ -63,6 +64,10 @@ final class FixedPorts {
             if (before != null) {
                 throw refused(fixed, port + " and " + before + " take the same " + port.transport().word() + " port "
                         + port.number());
+            }
+            FixedPort sameKey = keys.put(port.transport() + ":" + port.key(), port);
+            if (sameKey != null) {
+                throw refused(fixed, port + " and " + sameKey + " are the same way to the same port: one fixed port is enough");
             }
             if (port.transport() == FixedPort.Transport.TCP && port.number() == controlPort) {
                 throw refused(fixed, port + " takes the control port (wss.port = " + controlPort + ")");

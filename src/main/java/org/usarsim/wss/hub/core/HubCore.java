@@ -61,6 +61,10 @@ public final class HubCore {
     private final Set<RobotPair> broken = new HashSet<>();
     /** Pairs an operator forced down or up: they win over {@link #broken} and the model's answers. */
     private final ForcedPairs forcedPairs = new ForcedPairs();
+    /** The robots declared instead of registering (docs/fixed-ports.md): they never leave. */
+    private final Set<String> declared = new HashSet<>();
+    /** The fixed TCP ports: WSS ports made at Start, kept to Stop. */
+    private final Set<PortKey> fixed = new HashSet<>();
     /** The control connections whose robots are leaving: their ports drain, their names are freed soon. */
     private final Set<RobotSession> leaving = new HashSet<>();
     /** The statistics of every pair seen, forgotten with the pair's ports. */
@@ -160,8 +164,59 @@ public final class HubCore {
         remember(name, nowNs, out);
     }
 
+    /**
+     * A robot declared in the configuration: registered now, as if it had sent INIT, until the hub
+     * closes; an INIT of its name is refused as for any taken name.
+     */
+    public NameCheck declare(RegisteredRobot robot, long nowNs, Changes out) {
+        NameCheck check = register(robot, nowNs, out);
+        if (check == NameCheck.REGISTERED) {
+            declared.add(robot.name());
+        }
+        return check;
+    }
+
+    /**
+     * A fixed TCP port (docs/fixed-ports.md): the WSS port of {@code key}, allocated as a DNS would
+     * with the number configured, and kept: its robots are declared, so it is never forgotten.
+     */
+    public DnsResult fix(PortKey key, boolean allowed, int number, long nowNs, Changes out) {
+        DnsResult result = dns(key.from(), key.to(), key.targetPort(), allowed, number, nowNs, out);
+        if (result.outcome() == DnsOutcome.OK) {
+            fixed.add(key);
+        }
+        return result;
+    }
+
+    /** Whether the port is a fixed one, made at Start, rather than one a DNS asked for. */
+    public boolean isFixed(PortKey key) {
+        return fixed.contains(key);
+    }
+
+    /**
+     * A fixed UDP port's pair (docs/fixed-ports.md): its counters and its conditions both ways,
+     * live (from the port's source to its target: {@code up}), and the target's address.
+     */
+    public Admission relay(PortKey key, long nowNs, Changes out) {
+        RegisteredRobot target = robots.get(key.to());
+        if (target == null || !robots.containsKey(key.from())) {
+            return new Admission("no such robot", null, null, null, null);
+        }
+        PairStats pairStats = seen(key.pair(), nowNs, out);
+        OrderedPair up = new OrderedPair(key.from(), key.to());
+        return new Admission(null, new InetSocketAddress(target.address(), key.targetPort()), pairStats,
+                conditions.get(up), conditions.get(up.reversed()));
+    }
+
     /** The model kicked the robot out: its ports are given back at once, its links closed, its control connection closed. */
     public void kick(String name, long nowNs, Changes out) {
+        if (declared.contains(name)) { // declared: it stays, its ports too; its connections close
+            for (WssPort port : ports.of(name)) {
+                out.close(port.links(), CloseReason.KICKED);
+            }
+            out.add(new HubEvent.Said(Level.INFO, "kicked out " + name + "'s connections (a declared robot: it stays)"));
+            return;
+        }
         RegisteredRobot robot = robots.remove(name);
         if (robot != null) {
             out.add(new HubEvent.Deregistered(name));
@@ -562,7 +617,7 @@ public final class HubCore {
         long rate = pin.pinsRate() ? pin.bitsPerSecond()
                 : measurement.quality().map(LinkQuality::bitsPerSecond).orElseGet(() -> shaping.rates().rateFor(measurement.strength()));
         int delay = pin.pinsDelay() ? pin.delayMs() : measurement.quality().map(LinkQuality::delayMs).orElse(shaping.delayMs());
-        return new PairCondition(state, rate, delay);
+        return new PairCondition(state, rate, delay, shaping.lossPercent(measurement.strength()));
     }
 
     /** Recomputes the pair's conditions both ways (those kept); a rate that changed is said. */

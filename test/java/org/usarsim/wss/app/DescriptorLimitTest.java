@@ -9,6 +9,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.StringJoiner;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.Sockets;
@@ -19,6 +20,7 @@ import org.usarsim.wss.hub.TestRobot;
  * gets Could.Not.Allocate.Port, and the server goes on; remembered ports of robots that left never
  * cost a robot that is here its port.
  */
+@Tag("slow")
 class DescriptorLimitTest {
 
     private static final int LIMIT = 256;

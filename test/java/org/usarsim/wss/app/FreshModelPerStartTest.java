@@ -29,6 +29,7 @@ import javax.swing.JTextArea;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.gui.Gui;
@@ -53,6 +54,7 @@ import org.usarsim.wss.model.WssEventListener;
  * instance again and again.
  */
 @Timeout(60)
+@Tag("slow")
 class FreshModelPerStartTest {
 
     private static final Pattern LISTENING = Pattern.compile("WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");

@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Stream;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
@@ -21,6 +22,7 @@ import org.usarsim.wss.hub.TestRobot;
  * Forcing from the properties file (wss.force.down, wss.force.up) and the operator command, in a
  * real headless server process run by Main, with real robots.
  */
+@Tag("slow")
 class HeadlessForceTest {
 
     @TempDir

@@ -8,6 +8,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
@@ -16,6 +17,7 @@ import org.usarsim.wss.replay.Recordings;
 import org.usarsim.wss.protocol.Replies;
 
 /** Headless with the replay model: a recording served to robots; a bad one is bad input (exit 2, one line). */
+@Tag("slow")
 class HeadlessReplayTest {
 
     @TempDir

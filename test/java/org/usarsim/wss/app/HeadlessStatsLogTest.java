@@ -8,6 +8,7 @@ import java.net.Socket;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
@@ -17,6 +18,7 @@ import org.usarsim.wss.hub.TestRobot;
  * StatsLog), with real robots exchanging data: the table in the log with the bytes sent, and no
  * table at all with the default 0.
  */
+@Tag("slow")
 class HeadlessStatsLogTest {
 
     private static final String TITLE = "INFO link statistics, 1 pair";

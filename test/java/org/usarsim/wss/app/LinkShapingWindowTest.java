@@ -32,6 +32,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.gui.Gui;
@@ -52,6 +53,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * --config file's keys over it.
  */
 @Timeout(60)
+@Tag("slow")
 class LinkShapingWindowTest {
 
     private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");

@@ -29,6 +29,7 @@ import javax.swing.JFrame;
 import javax.swing.JTextArea;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -55,6 +56,7 @@ import org.usarsim.wss.world.WorldServer;
  * window the application opens, robots registered over real sockets; the map read back.
  */
 @Timeout(60)
+@Tag("slow")
 class MapWindowTest {
 
     private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");

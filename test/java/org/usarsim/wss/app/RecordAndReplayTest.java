@@ -13,7 +13,9 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.time.LocalTime;
+import java.time.ZoneId;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
@@ -21,6 +23,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -34,19 +37,30 @@ import org.usarsim.wss.recording.RecordingReader;
 import org.usarsim.wss.world.WorldServer;
 
 /**
- * Issue 17's "faithful": a minute of {@code docs/examples/building.world} with the Obstacle model
+ * Issue 17's "faithful": the minute of {@code docs/examples/building.world} with the Obstacle model
  * and its four robots, recorded by the real server; then the recording replayed by another
  * server, with no simulator, to the same four robots. The two CSV event logs hold the same breaks
- * and resumes in the same order, each within one poll interval (1 s, the example's) of its
- * recorded time; every GETSS during the replay equals the recorded strength of the poll the
- * replay was at.
+ * and resumes in the same order, each within one poll interval of its recorded time; every GETSS
+ * during the replay equals the recorded strength of the poll the replay was at.
+ *
+ * <p>The minute runs {@link #FASTER} times faster, so that recording and replay take 30 s each
+ * rather than a minute: the world's speeds are multiplied and Scout's battery divided by it, and so
+ * is the example's poll interval (1 s): every poll finds the robots where the example's would. (Not
+ * faster: the world's clock starts before the recording server does, so its start costs that many
+ * times more of the minute. The replay at its own speed: a GETSS is checked against the polls
+ * within 0.1 s of the replay's time, which a faster replay would make a race on a loaded machine.)
  */
 @Timeout(value = 240, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class RecordAndReplayTest {
 
     private static final List<String> ROBOTS = List.of("Operator", "Explorer", "Mapper", "Scout");
-    private static final long POLL_INTERVAL_MS = 1000;
+    /** How much faster than the example the world runs (and the WSS polls it). */
+    private static final int FASTER = 2;
+    private static final long POLL_INTERVAL_MS = 1000 / FASTER;
     private static final Pattern LOG_TIME = Pattern.compile("^\\d{4}-\\d\\d-\\d\\d (\\d\\d:\\d\\d:\\d\\d\\.\\d{3}) ");
+    private static final Pattern SPEED = Pattern.compile("^path .* speed ([0-9.]+) ");
+    private static final Pattern BATTERY = Pattern.compile("^robot .* battery ([0-9.]+)");
     private static final Pattern REPLAY_TIME = Pattern.compile("\\{Time ([0-9.]+)\\}");
 
     @TempDir
@@ -71,12 +85,12 @@ class RecordAndReplayTest {
 
     @Test
     void aReplayHasTheRecordedBreaksAndResumesAndStrengths() throws Exception {
-        world = WorldServer.start(Path.of("docs/examples/building.world"), InetAddress.getByName("127.0.0.1"), 0);
+        world = WorldServer.start(faster(Path.of("docs/examples/building.world")), InetAddress.getByName("127.0.0.1"), 0);
         Path recording = dir.resolve("building.rec");
         Path recordedLogs = dir.resolve("recorded");
-        ServerProcess recorder = start(Map.of("usarsim.port", String.valueOf(world.port()), "wss.record", recording.toString(),
-                "wss.eventLogDir", recordedLogs.toString()));
-        long recordedStart = startedAt(recorder, "ObstaclePropagationModel polls the simulator");
+        ServerProcess recorder = start(Map.of("usarsim.port", String.valueOf(world.port()), "usarsim.interval",
+                String.valueOf(POLL_INTERVAL_MS), "wss.record", recording.toString(), "wss.eventLogDir", recordedLogs.toString()));
+        recorder.awaitLine(text -> text.contains("ObstaclePropagationModel polls the simulator"));
         int port = Integer.parseInt(recorder.awaitListening().group(1));
         runRobots(recorder, port, null);
         // The poll that kicked Scout is written once the poll is whole (its obstacles counted): a stop before would abandon it.
@@ -89,7 +103,13 @@ class RecordAndReplayTest {
         assertEquals(0, recorder.awaitExit());
         Recording recorded = RecordingReader.read(recording);
         assertFalse(recorded.cutShort(), "a clean stop ends the recording");
-        assertTrue(recorded.polls().size() >= 55, recorded.polls().size() + " polls in a minute at 1 s");
+        // The world's clock ran while the server started: the recording holds most of the minute, a poll each interval.
+        assertTrue(recorded.durationMillis() >= 45_000 / FASTER, recorded.durationMillis() + " ms recorded");
+        assertTrue(recorded.polls().size() >= recorded.durationMillis() / POLL_INTERVAL_MS - 2,
+                recorded.polls().size() + " polls in " + recorded.durationMillis() + " ms");
+        // The recording's times count from its start (its header's): the recorded log's times too.
+        long recordedStart = LocalTime.ofInstant(Instant.parse(recorded.header().started()), ZoneId.systemDefault()).toNanoOfDay()
+                / 1_000_000;
 
         Path replayedLogs = dir.resolve("replayed");
         world.close();
@@ -121,6 +141,21 @@ class RecordAndReplayTest {
                 checked);
     }
 
+    /** The world file with its robots {@link #FASTER} times faster and the batteries as much shorter, in the test's folder. */
+    private Path faster(Path world) throws Exception {
+        StringBuilder text = new StringBuilder();
+        for (String line : Files.readAllLines(world)) {
+            text.append(scaled(scaled(line, SPEED, FASTER), BATTERY, 1.0 / FASTER)).append('\n');
+        }
+        return Files.writeString(dir.resolve(world.getFileName()), text);
+    }
+
+    private static String scaled(String line, Pattern number, double factor) {
+        Matcher matcher = number.matcher(line);
+        return matcher.find() ? line.substring(0, matcher.start(1)) + Double.parseDouble(matcher.group(1)) * factor
+                + line.substring(matcher.end(1)) : line;
+    }
+
     private ServerProcess start(Map<String, String> settings) throws Exception {
         List<String> lines = new ArrayList<>(Files.readAllLines(Path.of("docs/examples/building.properties")));
         lines.add("wss.port = 0");
@@ -142,7 +177,7 @@ class RecordAndReplayTest {
     }
 
     /**
-     * The four robots register and stay until Scout's battery runs out (60 s: the model kicks it);
+     * The four robots register and stay until Scout's battery runs out (at the minute's end: the model kicks it);
      * with {@code recorded}, Operator asks GETSS of the others all along, each between two
      * {@code REPLAY} questions, and each answer must be the recorded strength of a poll the
      * replay was at meanwhile. Returns how many were checked.

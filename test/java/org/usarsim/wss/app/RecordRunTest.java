@@ -13,6 +13,7 @@ import java.util.Properties;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -32,6 +33,7 @@ import org.usarsim.wss.world.WorldServer;
  * out of range behind a wall and back, one the world does not know kicked; then the file read back.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class RecordRunTest {
 
     /** Runner drives from 10 m to 90 m east of Base and back at 50 m/s (a lap in 3.2 s), through a wall at 40 m. */

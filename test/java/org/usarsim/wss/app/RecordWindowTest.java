@@ -28,6 +28,7 @@ import javax.swing.JTextArea;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -47,6 +48,7 @@ import org.usarsim.wss.recording.RecordingReader;
 
 /** The window's "Record": ticked, Start records the run to a new file in the event log's folder (or to a --config file's wss.record). */
 @Timeout(60)
+@Tag("slow")
 class RecordWindowTest {
 
     private static final Pattern LISTENING = Pattern.compile("WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");

@@ -23,6 +23,7 @@ import javax.swing.JFrame;
 import javax.swing.JTextArea;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.gui.Gui;
@@ -38,6 +39,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.replay.ReplayPropagationModel;
 
 /** The window with the replay model: a bad recording's Start says why in a dialog, as any failed Start does. */
+@Tag("slow")
 class ReplayWindowTest {
 
     @TempDir

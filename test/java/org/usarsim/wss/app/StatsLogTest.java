@@ -6,6 +6,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.List;
 import java.util.Map;
 import java.util.logging.Level;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.HubSnapshot;
@@ -23,6 +24,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * wss.statsInterval: the whole statistics table in the headless log, every so many seconds; with
  * links shaped, the rates each way and the robots' airtime too, and without, the table as it was.
  */
+@Tag("slow")
 class StatsLogTest {
 
     @Test

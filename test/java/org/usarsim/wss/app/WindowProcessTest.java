@@ -12,6 +12,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -23,6 +24,7 @@ import org.usarsim.wss.gui.Gui;
  * display at all. The command line's mistakes and --help: CommandLineTest.
  */
 @Timeout(60)
+@Tag("slow")
 class WindowProcessTest {
 
     @TempDir

@@ -43,6 +43,7 @@ import javax.swing.JTextField;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -71,6 +72,7 @@ import org.usarsim.wss.world.WorldServer;
  * servers the application itself starts ({@link WindowServers}).
  */
 @Timeout(60)
+@Tag("slow")
 class WindowTest {
 
     private static final Pattern LISTENING = Pattern.compile("debug: WSS listening for robots on 127\\.0\\.0\\.1:(\\d+)");

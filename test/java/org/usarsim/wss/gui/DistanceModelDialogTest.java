@@ -18,6 +18,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
@@ -29,6 +30,7 @@ import org.usarsim.wss.model.simulator.SimulatorModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /** The dialog for real: a window on a display (xvfb-run under CI), driven from the test's thread. */
+@Tag("slow")
 class DistanceModelDialogTest {
 
     /** The preferences nodes of the real models the dialogs are opened for. */

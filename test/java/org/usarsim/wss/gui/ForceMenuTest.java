@@ -33,6 +33,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Hub;
@@ -54,6 +55,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * shaped, "Limit rate..." asks a rate and a delay in a {@link RateLimitDialog} and pins them.
  */
 @Timeout(60)
+@Tag("slow")
 class ForceMenuTest {
 
     private HubServers servers;

@@ -29,6 +29,7 @@ import javax.swing.SwingUtilities;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.model.DialogLayout;
@@ -50,6 +51,7 @@ import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
  * constructing them is cheap (no thread, no socket until start()). What a model was configured
  * with shows in its start failure, which names the simulator's address, on a port nobody listens on.
  */
+@Tag("slow")
 class ModelDialogsTest {
 
     /** A model of a plugin, not a simulator model: records what the dialogs do to it. */

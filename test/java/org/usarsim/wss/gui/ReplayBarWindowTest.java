@@ -26,6 +26,7 @@ import javax.swing.JTable;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.TestHub;
@@ -47,6 +48,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * the statistics and the map; at Stop the bar goes.
  */
 @Timeout(60)
+@Tag("slow")
 class ReplayBarWindowTest {
 
     /**

@@ -9,9 +9,11 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.logging.LogRecord;
 import javax.swing.JTextArea;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /** The window's parts that need no server: the filter's wildcards, the log's lines and its bound. */
+@Tag("slow")
 class WindowPartsTest {
 
     @Test

@@ -27,6 +27,7 @@ import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.model.RobotLinkModel;
@@ -39,6 +40,7 @@ import org.usarsim.wss.model.WssEventListener;
  * it is over no thread nor descriptor is left behind. {@code -Dwss.soak=true} runs it for a minute.
  */
 @Timeout(value = 5, unit = TimeUnit.MINUTES)
+@Tag("slow")
 class BreakResumeStormTest {
 
     private static final boolean SOAK = Boolean.getBoolean("wss.soak");

@@ -20,6 +20,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -29,6 +30,7 @@ import org.junit.jupiter.api.Test;
  * afterwards. Seeded: the seed is in every failure message, and {@code -Dwss.fuzz.seed=N} replays
  * a run ({@code -Dwss.fuzz.lines=N} sets the number of lines, 100,000 by default).
  */
+@Tag("slow")
 class ControlFuzzTest {
 
     private static final int CONNECTIONS = 8;

@@ -34,6 +34,7 @@ import java.util.stream.Collectors;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.model.RobotLinkModel;
@@ -44,6 +45,7 @@ import org.usarsim.wss.model.WssEventListener;
  * robots), what a lost control connection does, and what it all costs in threads and descriptors.
  * Everything over real loopback sockets, driven by a {@link ScriptedModel}.
  */
+@Tag("slow")
 class LinkLifecycleTest {
 
     private ScriptedModel model;

@@ -20,6 +20,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.hub.core.CloseReason;
@@ -30,6 +31,7 @@ import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.model.RobotLinkModel;
 
 /** The statistics of each pair of robots (issue 12), over real loopback sockets. */
+@Tag("slow")
 class LinkStatsTest {
 
     private ScriptedModel model;

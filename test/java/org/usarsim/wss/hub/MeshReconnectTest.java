@@ -9,12 +9,14 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 
 /**
  * A whole team in full mesh loses its control connections at once and every robot reconnects
  * at once (a robot team's client does): every INIT again is accepted, every port listens again.
  */
+@Tag("slow")
 class MeshReconnectTest {
 
     private static final int ROBOTS = 40;

@@ -15,6 +15,7 @@ import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
@@ -24,6 +25,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * a resume reopens them on the same numbers, without a descriptor more; no socket that does not
  * share the number on purpose (SO_REUSEPORT, same user) can bind it meanwhile.
  */
+@Tag("slow")
 class PortDescriptorsTest {
 
     private static final int ROBOTS = 12;

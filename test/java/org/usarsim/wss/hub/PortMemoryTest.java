@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.logging.Level;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
@@ -26,6 +27,7 @@ import org.usarsim.wss.model.noop.NoopPropagationModel;
  * wss.portMemory and wss.maxPortsPerRobot: what a robot that leaves, or one that asks for many
  * ports, leaves behind. Over real sockets; descriptors and threads read from this process.
  */
+@Tag("slow")
 class PortMemoryTest {
 
     private final List<AutoCloseable> toClose = new ArrayList<>();

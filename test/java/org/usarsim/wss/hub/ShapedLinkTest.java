@@ -16,6 +16,7 @@ import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.RateTable;
@@ -27,6 +28,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * and nothing lost. Bounds are generous: these check the wiring; the accuracy is the benchmark's
  * and the pure classes' (org.usarsim.wss.shaping, on a moved clock).
  */
+@Tag("slow")
 class ShapedLinkTest {
 
     private static final RateTable TABLE = RateTable.parse("-50:8M,-70:2M,-90:1M");

@@ -9,10 +9,12 @@ import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
 
 /** The limit on warnings one client can cause, with a clock and a timer moved by hand. */
+@Tag("slow")
 class WarningLimiterTest {
 
     private static final String LOGGER = "org.usarsim.wss.hub.WarningLimiterTest";

@@ -10,6 +10,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -142,6 +143,9 @@ public final class PluginJars {
         SOURCES.put(name, "package " + PACKAGE + ";\n\nimport org.usarsim.wss.model.*;\n\n" + body + "\n");
     }
 
+    /** The test plugins' classes, compiled once in this JVM (see {@link #compile}). */
+    private static Path compiled;
+
     private PluginJars() {
     }
 
@@ -154,8 +158,47 @@ public final class PluginJars {
         }
     }
 
-    /** Compiles every test plugin into {@code dir}/classes, against the server's classes; returns that folder. */
+    /**
+     * Every test plugin's classes in {@code dir}/classes, compiled against the server's classes;
+     * returns that folder. The compiler runs once in a test JVM (the first call); later calls copy its classes.
+     */
     public static Path compile(Path dir) throws IOException {
+        Path classes = Files.createDirectories(dir.resolve("classes"));
+        Path once = compiledOnce();
+        try (var files = Files.walk(once)) {
+            for (Path file : files.filter(Files::isRegularFile).toList()) {
+                Path copy = classes.resolve(once.relativize(file).toString());
+                Files.createDirectories(copy.getParent());
+                Files.copy(file, copy);
+            }
+        }
+        return classes;
+    }
+
+    /**
+     * The classes the compiler wrote on the first call, into a temporary folder of this JVM's own,
+     * removed as the JVM exits.
+     */
+    private static synchronized Path compiledOnce() throws IOException {
+        if (compiled == null) {
+            Path dir = Files.createTempDirectory("wss-test-plugins");
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> removeTree(dir)));
+            compiled = javac(dir);
+        }
+        return compiled;
+    }
+
+    private static void removeTree(Path dir) {
+        try (var files = Files.walk(dir)) {
+            for (Path file : files.sorted(Comparator.reverseOrder()).toList()) {
+                Files.deleteIfExists(file);
+            }
+        } catch (IOException e) {
+            // the JVM is exiting: what is left stays in the temporary folder
+        }
+    }
+
+    private static Path javac(Path dir) throws IOException {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         assertNotNull(javac, "the tests run on a JDK");
         Path sources = Files.createDirectories(dir.resolve("src"));

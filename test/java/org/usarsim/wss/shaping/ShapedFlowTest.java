@@ -10,10 +10,12 @@ import java.nio.ByteBuffer;
 import java.nio.channels.Channels;
 import java.nio.channels.WritableByteChannel;
 import java.util.Random;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.shaping.SimulatedLinks.Lane;
 
 /** One shaped direction, and several sharing radios, on a clock the test moves: no sleeps, no threads. */
+@Tag("slow")
 class ShapedFlowTest {
 
     private static final long MS = 1_000_000;

@@ -19,12 +19,14 @@ import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.app.ServerProcess;
 
 /** {@code Main --world FILE --bind 127.0.0.1 --port 0} as a user runs it, in a child process; its mistakes: WorldCommandLineTest. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class WorldProcessTest {
 
     private static final String CORRIDOR = "docs/examples/corridor.world";

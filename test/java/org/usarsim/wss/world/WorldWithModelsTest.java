@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
@@ -24,6 +25,7 @@ import org.usarsim.wss.protocol.Replies;
 
 /** The two simulator models against our world server, over real sockets, as a team would run them. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class WorldWithModelsTest {
 
     /** distance.n 3: a range of 55.6 m. */

@@ -54,30 +54,6 @@ public final class Main {
      */
     public static final int BAD_INPUT = 2;
 
-    static final String USAGE = "usage: java -jar wss.jar [--config FILE] [--start]\n"
-            + "       java -jar wss.jar --headless [--config FILE]\n"
-            + "       java -jar wss.jar --world FILE [--port N] [--bind ADDRESS]\n"
-            + "       java -jar wss.jar --export-world RUN.rec [--out FILE]\n"
-            + "       java -jar wss.jar --version | --help";
-
-    private static final String HELP = USAGE + "\n"
-            + "  (no option)         open the WSS's window (docs/gui.md); without a display, run headless\n"
-            + "  --start             in the window, press Start at once\n"
-            + "  --headless          run the WSS without a window\n"
-            + "  --config FILE       the WSS's properties file (docs/headless.md); in the window, its wss.port,\n"
-            + "                      wss.model and wss.eventLog override the stored ones, its wss.record ticks\n"
-            + "                      Record and is where Start records, its model settings the stored ones\n"
-            + "                      for this session\n"
-            + "  --world FILE        instead of the WSS, serve USARSim's position protocol from a world file (docs/world.md)\n"
-            + "  --port N            the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")\n"
-            + "  --bind ADDRESS      the address the world server listens on (default " + Defaults.ALL_INTERFACES
-            + ": every interface)\n"
-            + "  --export-world RUN.rec  write a world file whose robots follow the recording's paths, with its walls\n"
-            + "                      (docs/replay.md); to standard output, or to the file of --out FILE\n"
-            + "  --out FILE          where --export-world writes the world file\n"
-            + "  --version           print the version and exit\n"
-            + "  --help, -h          print this and every property of --config FILE, and exit";
-
     /** Why a run ends before it serves: the exit code and the one line for standard error. */
     private static final class Failure extends Exception {
         final int code;
@@ -114,96 +90,31 @@ public final class Main {
     }
 
     private static int parseAndRun(PrintStream out, PrintStream err, String... args) throws Failure {
-        Path config = null;
-        boolean headless = false;
-        boolean start = false;
-        Path world = null;
-        String port = null;
-        String bind = null;
-        Path export = null;
-        Path exportTo = null;
-        for (int i = 0; i < args.length; i++) {
-            switch (args[i]) {
-                case "--headless":
-                    headless = true;
-                    break;
-                case "--start":
-                    start = true;
-                    break;
-                case "--config":
-                    if (i + 1 == args.length) {
-                        throw badInput("--config needs a file\n" + USAGE);
-                    }
-                    config = Path.of(args[++i]);
-                    break;
-                case "--world":
-                case "--port":
-                case "--bind": {
-                    String option = args[i];
-                    if (i + 1 == args.length) {
-                        throw badInput(option + " needs a value\n" + USAGE);
-                    }
-                    String value = args[++i];
-                    if (option.equals("--world")) {
-                        world = Path.of(value);
-                    } else if (option.equals("--port")) {
-                        port = value;
-                    } else {
-                        bind = value;
-                    }
-                    break;
-                }
-                case "--export-world":
-                case "--out": {
-                    String option = args[i];
-                    if (i + 1 == args.length) {
-                        throw badInput(option + " needs a file\n" + USAGE);
-                    }
-                    if (option.equals("--export-world")) {
-                        export = Path.of(args[++i]);
-                    } else {
-                        exportTo = Path.of(args[++i]);
-                    }
-                    break;
-                }
-                case "--version":
-                    out.println("wss " + Version.current());
-                    return OK;
-                case "--help":
-                case "-h":
-                    out.println(HELP);
-                    out.print(ConfigFile.help(ConfigFile.defaults().catalog()));
-                    return OK;
-                default:
-                    throw badInput("unknown argument " + args[i] + "\n" + USAGE);
+        Options options;
+        try {
+            options = OptionsParser.parse(args);
+        } catch (OptionsParser.Mistake e) {
+            throw badInput(e.getMessage());
+        }
+        return switch (options.action()) {
+            case VERSION -> {
+                out.println("wss " + Version.current());
+                yield OK;
             }
-        }
-        if (export != null && (headless || config != null || start || world != null || port != null || bind != null)) {
-            throw badInput("--export-world only writes a world file: no --headless, --config, --start, --world, --port or --bind\n"
-                    + USAGE);
-        }
-        if (exportTo != null && export == null) {
-            throw badInput("--out is where --export-world writes: it needs --export-world RUN.rec\n" + USAGE);
-        }
-        if (export != null) {
-            return exportWorld(out, err, export, exportTo);
-        }
-        if (world != null && (headless || config != null)) {
-            throw badInput("--world runs the world server alone, without --headless or --config\n" + USAGE);
-        }
-        if (world != null && start) {
-            throw badInput("--start presses the window's Start; the world server starts at once\n" + USAGE);
-        }
-        if (headless && start) {
-            throw badInput("--start is for the window; headless, the server starts at once\n" + USAGE);
-        }
-        if (world == null && (port != null || bind != null)) {
-            throw badInput("--port and --bind are for the world server: they need --world FILE\n" + USAGE);
-        }
-        if (world != null) {
-            return runWorld(out, world, port == null ? String.valueOf(Defaults.WORLD_PORT) : port,
-                    bind == null ? Defaults.ALL_INTERFACES : bind);
-        }
+            case HELP -> {
+                out.println(OptionsParser.help());
+                out.print(ConfigFile.help(ConfigFile.defaults().catalog()));
+                yield OK;
+            }
+            case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());
+            case WORLD -> runWorld(out, options.world(), options.port(), options.bind());
+            case SERVE -> serve(out, options);
+        };
+    }
+
+    /** The WSS, in its window or headless, from the defaults and the --config file. */
+    private static int serve(PrintStream out, Options options) throws Failure {
+        Path config = options.config();
         Properties file = new Properties();
         ConfigFile configFile;
         try {
@@ -219,14 +130,14 @@ public final class Main {
         } catch (ConfigFileException e) {
             throw badInput(e.getMessage());
         }
-        String noDisplay = headless ? null : noDisplay();
-        if (headless || noDisplay != null) {
+        String noDisplay = options.headless() ? null : noDisplay();
+        if (options.headless() || noDisplay != null) {
             if (noDisplay != null) {
                 Logger.getLogger(Main.class.getName()).info(noDisplay + ": running headless");
             }
             return runHeadless(configFile, config);
         }
-        return runWindow(configFile, file, config != null, start);
+        return runWindow(configFile, file, config != null, options.start());
     }
 
     /**
@@ -352,16 +263,7 @@ public final class Main {
     }
 
     /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */
-    private static int runWorld(PrintStream out, Path file, String portText, String bindText) throws Failure {
-        int port = -1;
-        try {
-            port = Integer.parseInt(portText);
-        } catch (NumberFormatException e) {
-            // reported below
-        }
-        if (port < 0 || port > 65535) {
-            throw badInput("--port " + portText + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
-        }
+    private static int runWorld(PrintStream out, Path file, int port, String bindText) throws Failure {
         InetAddress address;
         try {
             address = InetAddress.getByName(bindText);

@@ -19,6 +19,7 @@ import java.util.logging.Level;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.TestHub;
@@ -39,6 +40,7 @@ import org.usarsim.wss.protocol.Replies;
  * robots on a hub talking the text protocol and forwarding data.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class DistanceOnlyModelTest {
 
     private static final Pattern STRENGTH = Pattern.compile("SS \\{Robot B\\} \\{Strength (\\S+)\\}");

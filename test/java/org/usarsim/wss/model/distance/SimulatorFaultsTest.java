@@ -18,6 +18,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Sockets;
@@ -36,6 +37,7 @@ import org.usarsim.wss.protocol.Replies;
  * fault, and the log says each fault and each return once.
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class SimulatorFaultsTest {
 
     private static final long ASK_EVERY_MS = 100;

@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.TestRobot;
@@ -26,6 +27,7 @@ import org.usarsim.wss.protocol.Replies;
 
 /** The Obstacle model for real: a fake simulator answering GETPOS and GETOBS, robots on a hub. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class ObstacleModelTest {
 
     private static final PathLoss DEFAULT = new PathLoss(-49.67, 1, 2, -93);

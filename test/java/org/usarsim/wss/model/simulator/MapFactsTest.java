@@ -9,6 +9,7 @@ import java.util.Optional;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Wait;
@@ -19,6 +20,7 @@ import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 
 /** What the map asks a simulator model: positions, ranges, the cutoff and the walls (GETWALLS), over real sockets. */
 @Timeout(value = 30, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class MapFactsTest {
 
     private ModelRig rig;

@@ -15,6 +15,7 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.hub.Wait;
@@ -25,6 +26,7 @@ import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 
 /** What both simulator models share: a poll that fails, a stop and a new start, a reply cut by a timeout. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class SimulatorModelTest {
 
     /** DistanceOnly whose strength throws while told to: a bug in a model, not the simulator's fault. */

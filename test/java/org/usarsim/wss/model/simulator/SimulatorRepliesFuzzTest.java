@@ -10,6 +10,7 @@ import java.util.Map;
 import java.util.Random;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
+import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
@@ -24,6 +25,7 @@ import org.usarsim.wss.hub.Wait;
  * lines, 100,000 by default).
  */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
+@Tag("slow")
 class SimulatorRepliesFuzzTest {
 
     private static final String[] VALID = {

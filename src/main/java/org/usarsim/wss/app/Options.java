@@ -1,0 +1,27 @@
+package org.usarsim.wss.app;
+
+import java.nio.file.Path;
+
+/**
+ * What the command line asks for, read and checked by {@link OptionsParser} before anything
+ * runs; {@link Main} only dispatches on {@link #action}. What an action does not use is null
+ * (or false): {@code port} and {@code bind} are the world server's, with their defaults filled
+ * in; {@code export} and {@code out} are --export-world's.
+ */
+record Options(Action action, boolean headless, boolean start, Path config, Path world, int port, String bind,
+        Path export, Path out) {
+
+    /** What Main does. */
+    enum Action {
+        /** The WSS: its window, or headless ({@code --headless}, or no display). */
+        SERVE,
+        /** {@code --world FILE}: the world server. */
+        WORLD,
+        /** {@code --export-world RUN.rec}: a recording written as a world file. */
+        EXPORT_WORLD,
+        /** {@code --version}: print the version. */
+        VERSION,
+        /** {@code --help}: print the help and every property of --config FILE. */
+        HELP
+    }
+}

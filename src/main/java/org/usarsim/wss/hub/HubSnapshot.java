@@ -37,7 +37,7 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
 
     /** How a WSS port came to be: a DNS asked for it, or it is a fixed port of the configuration, TCP or UDP (docs/fixed-ports.md). */
     public enum PortKind {
-        DNS(""), FIXED_TCP("fixed tcp"), FIXED_UDP("fixed udp");
+        DNS("DNS"), FIXED_TCP("fixed TCP"), FIXED_UDP("fixed UDP");
 
         private final String text;
 
@@ -45,7 +45,7 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
             this.text = text;
         }
 
-        /** As the Connections tab and the log say it: empty for a DNS'd port. */
+        /** As the Connections tab says it. */
         public String text() {
             return text;
         }

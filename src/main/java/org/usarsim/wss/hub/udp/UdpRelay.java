@@ -207,13 +207,31 @@ public final class UdpRelay implements AutoCloseable {
                 socket.register(selector, SelectionKey.OP_READ, session);
             }
         }
+        if (!condition.shaped() && forward.idle()) { // unshaped: sent at once, not held
+            sendToTarget(session, data);
+            return;
+        }
         forward.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
         if (!forward.offer(data, session, now)) {
             pair.upCounts().droppedQueue();
         }
     }
 
-    private void fromTarget(UdpSessions.Session<DatagramChannel> session, byte[] data, long now) {
+    private void sendToTarget(UdpSessions.Session<DatagramChannel> session, byte[] data) {
+        try {
+            session.socket().write(ByteBuffer.wrap(data));
+            pair.upCounts().sent(data.length);
+        } catch (IOException e) { // the target refuses (its port unreachable): lost, as UDP's is
+            LOG.fine("fixed UDP port " + port.number() + ": not sent to " + target + ": " + e);
+        }
+    }
+
+    private void sendToSender(InetSocketAddress sender, byte[] data) throws IOException {
+        front.send(ByteBuffer.wrap(data), sender);
+        pair.downCounts().sent(data.length);
+    }
+
+    private void fromTarget(UdpSessions.Session<DatagramChannel> session, byte[] data, long now) throws IOException {
         PairCondition condition = pair.down().get();
         if (!condition.passes()) {
             pair.downCounts().droppedBroken();
@@ -221,6 +239,10 @@ public final class UdpRelay implements AutoCloseable {
         }
         synchronized (sessions) {
             sessions.answered(session, now);
+        }
+        if (!condition.shaped() && back.idle()) {
+            sendToSender(session.sender(), data);
+            return;
         }
         back.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
         if (!back.offer(data, session.sender(), now)) {
@@ -230,16 +252,10 @@ public final class UdpRelay implements AutoCloseable {
 
     private void sendDue(long now) throws IOException {
         for (DatagramFlow.Datagram<UdpSessions.Session<DatagramChannel>> datagram : forward.due(now)) {
-            try {
-                datagram.to().socket().write(ByteBuffer.wrap(datagram.data()));
-                pair.upCounts().sent(datagram.data().length);
-            } catch (IOException e) { // the session's socket closed as it expired, or the target refuses: lost, as UDP's is
-                LOG.fine("fixed UDP port " + port.number() + ": not sent to " + target + ": " + e);
-            }
+            sendToTarget(datagram.to(), datagram.data());
         }
         for (DatagramFlow.Datagram<InetSocketAddress> datagram : back.due(now)) {
-            front.send(ByteBuffer.wrap(datagram.data()), datagram.to());
-            pair.downCounts().sent(datagram.data().length);
+            sendToSender(datagram.to(), datagram.data());
         }
         pair.upCounts().lost(forward.lost() - lostForward);
         lostForward = forward.lost();

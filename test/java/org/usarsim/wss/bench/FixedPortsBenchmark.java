@@ -176,7 +176,7 @@ public final class FixedPortsBenchmark {
                 waitListening(socatTcp);
                 String[] names = {"direct loopback", "socat UDP-LISTEN", "WSS, fixed UDP port"};
                 int[] tcpPorts = {iperfPort, socatTcp, fixedTcp}; // iperf3's control connection: TCP on the same number
-                System.out.printf("%n## UDP through iperf3 -u (%d s, 1,400-byte datagrams, median of %d runs, paths in turn)%n%n", seconds, runs);
+                System.out.printf("%n## UDP through iperf3 -u (%d s, iperf3's default datagram length, -w 4M, median of %d runs, paths in turn)%n%n", seconds, runs);
                 System.out.println("| path | at 200 Mbit/s: received Mbit/s, loss % | highest rate of 100, 200, 300, 400, 600, 800, 1000 Mbit/s with < 0.1 % loss (each run) |");
                 System.out.println("|---|---|---|");
                 for (int path = 0; path < names.length; path++) {
@@ -229,17 +229,23 @@ public final class FixedPortsBenchmark {
         }
     }
 
-    /** Received Mbit/s and loss % of one iperf3 -u run at {@code mbits}. */
+    /**
+     * Received Mbit/s and loss % of one iperf3 -u run at {@code mbits} (iperf3's default datagram
+     * length, 4 MiB socket buffers at both ends as the WSS's own); a run that could not start is tried again, twice at most.
+     */
     private double[] iperfUdp(int port, int mbits) throws Exception {
-        String json = run("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-u", "-b", mbits + "M", "-l", "1400",
-                "-t", Integer.toString(seconds), "-J");
-        Matcher m = UDP_SUM.matcher(json);
-        if (!m.find()) {
-            System.err.println("  iperf3 -u through " + port + " failed: " + json.replaceAll("\\s+", " ").replaceAll(".*\"error\"", "error"));
+        String json = "";
+        for (int attempt = 0; attempt < 3; attempt++) {
+            json = run("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-u", "-b", mbits + "M", "-w", "4M",
+                    "-t", Integer.toString(seconds), "-J");
+            Matcher m = UDP_SUM.matcher(json);
+            if (m.find()) {
+                return new double[] {Double.parseDouble(m.group(1)) / 1e6, Double.parseDouble(m.group(2))};
+            }
+            System.err.println("  iperf3 -u through " + port + " failed, again: " + json.replaceAll("\\s+", " ").replaceAll(".*\"error\"", "error"));
             Thread.sleep(500);
-            return new double[] {0, 100};
         }
-        return new double[] {Double.parseDouble(m.group(1)) / 1e6, Double.parseDouble(m.group(2))};
+        throw new IOException("no iperf3 -u result: " + json);
     }
 
     private static Thread udpEcho(DatagramSocket echo) {

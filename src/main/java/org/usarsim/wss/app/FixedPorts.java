@@ -105,6 +105,10 @@ final class FixedPorts {
                     try (ServerSocket socket = new ServerSocket()) {
                         socket.setReuseAddress(true);
                         socket.bind(at);
+                    } catch (IOException e) {
+                        if (listens(at)) {
+                            throw e;
+                        } // else: only the last run's connections in TIME_WAIT, which the port's own sockets share the number with
                     }
                 } else {
                     try (DatagramSocket socket = new DatagramSocket(null)) {
@@ -115,6 +119,22 @@ final class FixedPorts {
                 throw refused(fixed, port + ": " + port.transport().word() + " port " + port.number() + " is in use ("
                         + e.getMessage() + ")");
             }
+        }
+    }
+
+    /**
+     * Whether something accepts connections at the address (the loopback address for the wildcard):
+     * a bind refused because of a previous run's connections still in TIME_WAIT (their listener
+     * shared its number, as a WSS port's sockets do) is not a port in use.
+     */
+    private static boolean listens(InetSocketAddress at) {
+        InetSocketAddress target = at.getAddress().isAnyLocalAddress()
+                ? new InetSocketAddress(InetAddress.getLoopbackAddress(), at.getPort()) : at;
+        try (java.net.Socket probe = new java.net.Socket()) {
+            probe.connect(target, 1000);
+            return true;
+        } catch (IOException e) {
+            return false;
         }
     }
 

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.net.LogLimiter;
 
 /** The limit on warnings one client can cause, with a clock and a timer moved by hand. */
 @Tag("slow")
@@ -27,7 +28,7 @@ class WarningLimiterTest {
     private final List<Long> dueAt = new ArrayList<>();
     private final List<Runnable> due = new ArrayList<>();
     private boolean timerStopped;
-    private final WarningLimiter limiter = new WarningLimiter(5, MINUTE, () -> now, new WarningLimiter.Timer() {
+    private final WarningLimiter limiter = new WarningLimiter(5, LogLimiter.ALL_FIRST, MINUTE, () -> now, new WarningLimiter.Timer() {
         @Override
         public void after(long delayNs, Runnable task) {
             dueAt.add(now + delayNs);
@@ -140,7 +141,7 @@ class WarningLimiterTest {
     @Test
     void theServersTimerWritesTheSummaryOnItsOwnThenItsThreadEnds() throws Exception {
         long before = warningsThreads();
-        WarningLimiter real = new WarningLimiter(2, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
+        WarningLimiter real = new WarningLimiter(2, LogLimiter.ALL_FIRST, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
         for (int i = 0; i < 5; i++) {
             real.warn(log, "refused connections", address("127.0.0.5"), "refused " + i);
         }

@@ -111,6 +111,14 @@ class FixedPortsTest {
             try (TestHub test = hub(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number));
                     DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0));
                     DatagramSocket second = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                test.hub.addListener(new org.usarsim.wss.model.WssEventListener() {
+                    @Override
+                    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+                        if (from.equals("Scout")) {
+                            reported.add(new long[] {datagrams, bytes, droppedQueue, lost, droppedBroken});
+                        }
+                    }
+                });
                 base.setSoTimeout(5000);
                 scout.setSoTimeout(5000);
                 second.setSoTimeout(5000);
@@ -144,11 +152,15 @@ class FixedPortsTest {
                 assertEquals(65_507 + 3, counts[0].bytes());
                 base.setSoTimeout(300);
                 assertThrows(SocketTimeoutException.class, () -> base.receive(new DatagramPacket(new byte[10], 10)));
+                Wait.until("the event log's listeners told, within a second or so", () -> reported.stream().mapToLong(r -> r[4]).sum() == 1
+                        && reported.stream().mapToLong(r -> r[0]).sum() == 2);
             }
         }
     }
 
     /** Base - Scout's UDP counts from Scout to Base ("Base" is the pair's first name). */
+    private final java.util.List<long[]> reported = new java.util.concurrent.CopyOnWriteArrayList<>();
+
     private static UdpCounts.Reading udp(TestHub test, String from) {
         HubSnapshot.PairEntry pair = test.hub.snapshot().pairs().get(0);
         return from.equals(pair.first()) ? pair.udpFirstToSecond() : pair.udpSecondToFirst();

@@ -16,6 +16,7 @@ import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.hub.udp.UdpRelay;
+import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -41,7 +42,8 @@ final class FixedPortsStart {
      * @return the UDP relays, for the hub to close at Stop
      * @throws IOException when a fixed port's number cannot be bound (the relays started are closed)
      */
-    static List<UdpRelay> open(HubConfig config, StepExecutor executor, ModelAnswers answers, Airtime airtime, LongSupplier clock)
+    static List<UdpRelay> open(HubConfig config, StepExecutor executor, ModelAnswers answers, Airtime airtime, LongSupplier clock,
+            WssEventListener events)
             throws IOException {
         FixedSetup setup = config.fixed();
         for (DeclaredRobot robot : setup.robots()) {
@@ -54,7 +56,7 @@ final class FixedPortsStart {
                 if (port.transport() == FixedPort.Transport.TCP) {
                     fixTcp(port, config.bindAddress(), executor, answers);
                 } else {
-                    relays.add(relay(port, config, executor, airtime, clock));
+                    relays.add(relay(port, config, executor, airtime, clock, events));
                 }
                 LOG.info("fixed port " + port.number() + "/" + port.transport().word() + ": " + port.key().from() + " -> "
                         + port.key().to() + ":" + port.key().targetPort());
@@ -88,7 +90,8 @@ final class FixedPortsStart {
         }
     }
 
-    private static UdpRelay relay(FixedPort port, HubConfig config, StepExecutor executor, Airtime airtime, LongSupplier clock)
+    private static UdpRelay relay(FixedPort port, HubConfig config, StepExecutor executor, Airtime airtime, LongSupplier clock,
+            WssEventListener events)
             throws IOException {
         HubCore.Admission pair = executor.step((core, now, out) -> core.relay(port.key(), now, out));
         if (pair.refusal() != null) {
@@ -100,7 +103,9 @@ final class FixedPortsStart {
         try {
             relay = new UdpRelay(port, config.bindAddress(), pair.target(), source,
                     new UdpRelay.Pair(pair.up(), pair.down(), pair.stats().udpFrom(port.key().from()), pair.stats().udpFrom(port.key().to())),
-                    airtime, TimeUnit.SECONDS.toNanos(config.fixed().udpIdleSeconds()), clock);
+                    airtime, TimeUnit.SECONDS.toNanos(config.fixed().udpIdleSeconds()), clock,
+                    (from, to, udp) -> events.udpCounted(from, to, udp.datagrams(), udp.bytes(), udp.droppedBroken(), udp.droppedQueue(),
+                            udp.lost()));
         } catch (IOException e) {
             throw new IOException("cannot listen on fixed port " + port + ": " + e.getMessage(), e);
         }

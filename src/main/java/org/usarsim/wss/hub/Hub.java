@@ -118,7 +118,7 @@ public final class Hub implements AutoCloseable {
         config.forced().forEach((pair, force) -> controlSide.force(pair.first(), pair.second(), force,
                 config.pins().getOrDefault(pair, RatePin.NONE)));
         try {
-            relays = FixedPortsStart.open(config, executor, answers, airtime, clock);
+            relays = FixedPortsStart.open(config, executor, answers, airtime, clock, events);
         } catch (IOException | RuntimeException e) {
             controlListener.close();
             model.shutdown();

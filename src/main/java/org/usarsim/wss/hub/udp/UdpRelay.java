@@ -35,6 +35,14 @@ public final class UdpRelay implements AutoCloseable {
     /** The socket buffers, so that a burst at full speed is not dropped by the kernel before the thread reads it. */
     private static final int SOCKET_BUFFER = 4 * 1024 * 1024;
 
+    /** How often the counts are reported, when they changed. */
+    private static final long REPORT_NS = 1_000_000_000L;
+
+    /** Where the relay reports what its datagrams did, each way, at most once a second (the event log). */
+    public interface Report {
+        void counted(String from, String to, UdpCounts.Reading since);
+    }
+
     /** The pair's side of the relay: conditions and counters each way, from the hub's core. */
     public record Pair(AtomicReference<PairCondition> up, AtomicReference<PairCondition> down, UdpCounts upCounts, UdpCounts downCounts) {
     }
@@ -56,6 +64,10 @@ public final class UdpRelay implements AutoCloseable {
     private long lostForward;
     private long lostBack;
     private long refusedSenders;
+    private final Report report;
+    private UdpCounts.Reading reportedUp = UdpCounts.Reading.NONE;
+    private UdpCounts.Reading reportedDown = UdpCounts.Reading.NONE;
+    private long nextReportNs;
 
     /**
      * Binds the port's number; {@link #start} starts relaying.
@@ -64,7 +76,8 @@ public final class UdpRelay implements AutoCloseable {
      * @throws IOException when the number cannot be bound
      */
     public UdpRelay(FixedPort port, InetAddress bindAddress, InetSocketAddress target, InetAddress source, Pair pair,
-            Airtime airtime, long idleNs, LongSupplier clock) throws IOException {
+            Airtime airtime, long idleNs, LongSupplier clock, Report report) throws IOException {
+        this.report = report;
         this.port = port;
         this.target = target;
         this.source = source;
@@ -125,6 +138,7 @@ public final class UdpRelay implements AutoCloseable {
                 synchronized (sessions) {
                     waitNs = Math.min(Math.min(forward.nanosUntilNext(now), back.nanosUntilNext(now)), sessions.nanosUntilExpiry(now));
                 }
+                waitNs = Math.min(waitNs, REPORT_NS);
                 if (waitNs <= 0) {
                     selector.selectNow();
                 } else if (waitNs == Long.MAX_VALUE) {
@@ -139,14 +153,44 @@ public final class UdpRelay implements AutoCloseable {
                 }
                 selector.selectedKeys().clear();
                 sendDue(clock.getAsLong());
+                if (clock.getAsLong() - nextReportNs >= 0) {
+                    reportCounts();
+                    nextReportNs = clock.getAsLong() + REPORT_NS;
+                }
             }
         } catch (IOException | RuntimeException e) {
             if (!closed) {
                 LOG.log(Level.WARNING, "fixed UDP port " + port.number() + " (" + port + ") stopped: " + e, e);
             }
         } finally {
+            reportCounts();
             closeAll();
         }
+    }
+
+    /** The counts since the last report, each way that has any. */
+    private void reportCounts() {
+        UdpCounts.Reading up = pair.upCounts().read();
+        UdpCounts.Reading down = pair.downCounts().read();
+        UdpCounts.Reading upSince = since(up, reportedUp);
+        UdpCounts.Reading downSince = since(down, reportedDown);
+        reportedUp = up;
+        reportedDown = down;
+        try {
+            if (!upSince.none()) {
+                report.counted(port.key().from(), port.key().to(), upSince);
+            }
+            if (!downSince.none()) {
+                report.counted(port.key().to(), port.key().from(), downSince);
+            }
+        } catch (RuntimeException e) {
+            LOG.log(Level.WARNING, "fixed UDP port " + port.number() + ": reporting its counts failed: " + e, e);
+        }
+    }
+
+    private static UdpCounts.Reading since(UdpCounts.Reading now, UdpCounts.Reading before) {
+        return new UdpCounts.Reading(now.datagrams() - before.datagrams(), now.bytes() - before.bytes(),
+                now.droppedBroken() - before.droppedBroken(), now.droppedQueue() - before.droppedQueue(), now.lost() - before.lost());
     }
 
     @SuppressWarnings("unchecked")

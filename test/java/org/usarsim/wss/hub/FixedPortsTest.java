@@ -16,6 +16,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -159,6 +160,29 @@ class FixedPortsTest {
     }
 
     /** Base - Scout's UDP counts from Scout to Base ("Base" is the pair's first name). */
+    @Test
+    void aShapedFixedUdpPortLosesWhatTheLossTableSaysAndCountsIt() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int number = freeUdp();
+            HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
+                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true,
+                            org.usarsim.wss.shaping.LossTable.parse("0:100")), Map.of())
+                    .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
+                            List.of(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number)), 60));
+            try (TestHub test = new TestHub(new NoopPropagationModel(), config);
+                    DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                for (int i = 0; i < 5; i++) {
+                    scout.send(new DatagramPacket(new byte[100], 100, LOCAL, number));
+                }
+                Wait.until("five datagrams lost to the signal (the Noop model's 0 dBm, a table of 100 % at 0 dBm)",
+                        () -> udp(test, "Scout").lost() == 5);
+                assertEquals(0, udp(test, "Scout").datagrams());
+                base.setSoTimeout(300);
+                assertThrows(SocketTimeoutException.class, () -> base.receive(new DatagramPacket(new byte[200], 200)));
+            }
+        }
+    }
+
     private final java.util.List<long[]> reported = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     private static UdpCounts.Reading udp(TestHub test, String from) {

@@ -5,12 +5,15 @@ import java.net.InetAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.DeclaredRobot;
 import org.usarsim.wss.hub.core.FixedPort;
 import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.Measurement;
+import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.tcp.Closing;
@@ -54,9 +57,9 @@ final class FixedPortsStart {
         try {
             for (FixedPort port : setup.ports()) {
                 if (port.transport() == FixedPort.Transport.TCP) {
-                    fixTcp(port, config.bindAddress(), executor, answers);
+                    fixTcp(port, config.bindAddress(), config.shaping().on(), executor, answers);
                 } else {
-                    relays.add(relay(port, config, executor, airtime, clock, events));
+                    relays.add(relay(port, config, executor, answers, airtime, clock, events));
                 }
                 LOG.info("fixed port " + port.number() + "/" + port.transport().word() + ": " + port.key().from() + " -> "
                         + port.key().to() + ":" + port.key().targetPort());
@@ -68,7 +71,8 @@ final class FixedPortsStart {
         return relays;
     }
 
-    private static void fixTcp(FixedPort port, InetAddress bindAddress, StepExecutor executor, ModelAnswers answers) throws IOException {
+    private static void fixTcp(FixedPort port, InetAddress bindAddress, boolean shaped, StepExecutor executor, ModelAnswers answers)
+            throws IOException {
         boolean allowed = answers.allows(port.key().from(), port.key().to());
         executor.portSelector().start();
         ServerSocketChannel socket;
@@ -77,7 +81,11 @@ final class FixedPortsStart {
         } catch (IOException e) {
             throw new IOException("cannot listen on fixed port " + port + ": " + e.getMessage(), e);
         }
+        Map<OrderedPair, Measurement> measurements = shaped ? answers.measure(List.of(port.key().pair())) : Map.of();
         HubCore.DnsResult result = executor.step((core, now, out) -> {
+            if (!measurements.isEmpty()) {
+                core.measured(measurements, out);
+            }
             HubCore.DnsResult answer = core.fix(port.key(), allowed, port.number(), now, out);
             if (answer.numberUsed()) {
                 executor.adopt(core.port(answer.key()), socket, out);
@@ -90,10 +98,18 @@ final class FixedPortsStart {
         }
     }
 
-    private static UdpRelay relay(FixedPort port, HubConfig config, StepExecutor executor, Airtime airtime, LongSupplier clock,
-            WssEventListener events)
+    private static UdpRelay relay(FixedPort port, HubConfig config, StepExecutor executor, ModelAnswers answers, Airtime airtime,
+            LongSupplier clock, WssEventListener events)
             throws IOException {
-        HubCore.Admission pair = executor.step((core, now, out) -> core.relay(port.key(), now, out));
+        // Shaped, the pair starts at its own rate and loss, not those of a strength not known yet.
+        Map<OrderedPair, Measurement> measurements = config.shaping().on() ? answers.measure(List.of(port.key().pair())) : Map.of();
+        HubCore.Admission pair = executor.step((core, now, out) -> {
+            HubCore.Admission admission = core.relay(port.key(), now, out);
+            if (!measurements.isEmpty()) {
+                core.measured(measurements, out);
+            }
+            return admission;
+        });
         if (pair.refusal() != null) {
             throw new IOException("cannot make fixed port " + port + ": " + pair.refusal());
         }

@@ -219,7 +219,7 @@ public final class UdpRelay implements AutoCloseable {
         }
     }
 
-    private void fromSender(InetSocketAddress sender, byte[] data, long now) throws IOException {
+    private void fromSender(InetSocketAddress sender, byte[] data, long now) {
         if (source != null && !source.equals(sender.getAddress())) {
             if (refusedSenders++ % 1000 == 0) {
                 LOG.warning("fixed UDP port " + port.number() + " (" + port + "): dropped a datagram from "
@@ -236,19 +236,25 @@ public final class UdpRelay implements AutoCloseable {
         synchronized (sessions) {
             session = sessions.from(sender, now);
             if (session == null) {
-                DatagramChannel socket = DatagramChannel.open();
+                DatagramChannel socket = null;
                 try {
+                    socket = DatagramChannel.open();
                     socket.setOption(StandardSocketOptions.SO_RCVBUF, SOCKET_BUFFER);
                     socket.setOption(StandardSocketOptions.SO_SNDBUF, SOCKET_BUFFER);
                     socket.bind(new InetSocketAddress(bindAddress, 0));
                     socket.connect(target);
                     socket.configureBlocking(false);
-                } catch (IOException e) {
-                    socket.close();
-                    throw e;
+                    socket.register(selector, SelectionKey.OP_READ);
+                } catch (IOException e) { // no descriptor left, say: this datagram is lost, the port goes on
+                    if (socket != null) {
+                        closeQuietly(socket);
+                    }
+                    LOG.warning("fixed UDP port " + port.number() + " (" + port + "): no socket toward " + target + " for "
+                            + sender + ": " + e);
+                    return;
                 }
                 session = sessions.open(sender, socket, now);
-                socket.register(selector, SelectionKey.OP_READ, session);
+                socket.keyFor(selector).attach(session);
             }
         }
         if (!condition.shaped() && forward.idle()) { // unshaped: sent at once, not held

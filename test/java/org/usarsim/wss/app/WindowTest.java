@@ -229,8 +229,8 @@ class WindowTest {
 
             int toR2 = r1.dns("r2", 0);
             int toR1 = r2.dns("r1", 0);
-            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes");
-            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes");
+            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes", "DNS");
+            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes", "DNS");
             waitForTable("ports", List.of(r1r2, r2r1));
 
             try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
@@ -276,7 +276,7 @@ class WindowTest {
     }
 
     private static List<String> no(List<String> portRow) {
-        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no");
+        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no", "DNS");
     }
 
     @Test
@@ -293,14 +293,14 @@ class WindowTest {
                 atR2.getOutputStream().write(new byte[678]);
                 assertEquals(678, data.getInputStream().readNBytes(678).length);
                 // Robot A, B, state, strength, distance, bytes A>B, B>A, rate A>B, B>A (links not shaped),
-                // connections, breaks, resumes, up %, last close
+                // connections, breaks, resumes, up %, UDP (none), last close
                 until("the statistics count the bytes", () -> statistics(stats).equals(
-                        List.of("r1", "r2", "up", "0.0", "", "12345", "678", "-", "-", "1", "0", "0", "100.0", "")));
+                        List.of("r1", "r2", "up", "0.0", "", "12345", "678", "-", "-", "1", "0", "0", "100.0", "", "")));
                 model.links().breakConnectionsForPair("r1", "r2");
                 until("the statistics show the break", () -> {
                     List<String> row = statistics(stats);
                     return row.subList(0, 12).equals(List.of("r1", "r2", "broken", "0.0", "", "12345", "678", "-", "-", "1", "1", "0"))
-                            && row.get(13).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
+                            && row.get(14).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
                 });
             }
             // The filter works as on the other tables.

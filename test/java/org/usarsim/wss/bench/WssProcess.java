@@ -57,6 +57,18 @@ final class WssProcess implements AutoCloseable {
         }
     }
 
+    /** The last line the server wrote so far that contains the text; null when none does. */
+    String lastLineContaining(String text) {
+        synchronized (lines) {
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (lines.get(i).contains(text)) {
+                    return lines.get(i);
+                }
+            }
+            return null;
+        }
+    }
+
     /** How many lines the server wrote so far that contain the text. */
     long linesContaining(String text) {
         synchronized (lines) {

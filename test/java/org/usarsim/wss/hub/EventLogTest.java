@@ -153,6 +153,16 @@ class EventLogTest {
     }
 
     @Test
+    void aFixedUdpPortsCountsAreOneLineADirection() throws Exception {
+        CsvEventLog log = CsvEventLog.create(dir);
+        log.udpCounted("Scout", "Base", 1200, 1_680_000, 3, 2, 14);
+        log.close();
+        List<String> lines = Files.readAllLines(log.file());
+        assertEquals(1, lines.size(), lines.toString());
+        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,1200,1680000,3,2,14"), lines.get(0));
+    }
+
+    @Test
     void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
         StuckWriter writer = new StuckWriter();
         CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8);

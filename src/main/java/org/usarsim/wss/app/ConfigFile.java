@@ -23,6 +23,8 @@ import java.util.Set;
 import java.util.function.Function;
 import java.util.logging.Level;
 import org.usarsim.wss.LogText;
+import org.usarsim.wss.hub.FixedSetup;
+import org.usarsim.wss.hub.core.FixedPort;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
@@ -30,6 +32,7 @@ import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.shaping.LossTable;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
 import org.usarsim.wss.model.ModelSettings;
@@ -49,6 +52,8 @@ public final class ConfigFile {
     /** The link shaping keys, read together by ShapingConfig. */
     private static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
             ShapingConfig.AIRTIME);
+    /** What wss.shaping.loss takes, in words. */
+    private static final String LOSS_WORDS = "rows dBm:percent from the strongest signal to the weakest (-85:1,-87:10,-90:50)";
     /** What wss.shaping.rates takes, in words. */
     private static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
@@ -104,6 +109,16 @@ public final class ConfigFile {
                     .help("Bytes reach the target no sooner than this after the WSS read them, plus their time on the air"),
             Setting.bool(ShapingConfig.AIRTIME, "Shared airtime", true)
                     .help("A robot's radio is one channel all its links share, by time"),
+            Setting.text(ShapingConfig.LOSS, "Loss by strength", LossTable.DEFAULT.toString()).orEmpty("no loss")
+                    .noun(LOSS_WORDS)
+                    .help("With links shaped, a UDP datagram of a pair whose strength is at or below a row's dBm is lost with"
+                            + " that row's percent, the last such row counting (docs/shaping.md); TCP is never dropped"),
+            Setting.text(FixedPorts.KEY, "Fixed ports", "").orEmpty("none").noun(FixedPort.WORDS)
+                    .help("WSS ports made at Start and kept, between robots declared with wss.robot.NAME = ADDRESS"
+                            + " (default address 127.0.0.1; docs/fixed-ports.md)"),
+            Setting.integer(FixedPorts.UDP_IDLE, "UDP session expiry", FixedSetup.DEFAULT_UDP_IDLE_SECONDS).from(1).to(86400).unit("s")
+                    .help("A fixed UDP port forgets a sender (and closes its socket toward the target) after this long without"
+                            + " a datagram either way"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -165,12 +180,21 @@ public final class ConfigFile {
         for (String key : keys) {
             if (rules.containsKey(key)) {
                 values.put(key, checked(rules.get(key), properties.getProperty(key), source));
+            } else if (key.startsWith(FixedPorts.ROBOT)) {
+                values.put(key, properties.getProperty(key).strip());
             }
         }
         ConfigFile server = new ConfigFile(values, null, List.of());
         server.forcedPairs(source);
         server.shaping(source);
         server.recordFile(source);
+        try {
+            FixedPorts.checkFree(server.fixed(source), server.get(FixedPorts.KEY), InetAddress.getByName(server.get("wss.bindAddress")));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + e.getMessage());
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("wss.bindAddress was checked", e);
+        }
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
         List<Setting> own = chosen == null ? List.of() : chosen.settings();
@@ -187,6 +211,9 @@ public final class ConfigFile {
                 throw new ConfigFileException(source + ": " + fileKey + " is the old name of " + key + "; set only " + key);
             }
             Setting rule = rules.get(key);
+            if (rule == null && key.startsWith(FixedPorts.ROBOT)) {
+                continue;
+            }
             if (rule == null) {
                 throw new ConfigFileException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
                         + String.join(", ", rules.keySet()));
@@ -335,9 +362,10 @@ public final class ConfigFile {
                     Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
                     Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
                     .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins())
-                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")));
+                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")))
+                    .withFixed(fixed(null));
         } catch (UnknownHostException | ConfigFileException e) {
-            throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.* and wss.shaping.* were checked", e);
+            throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.*, wss.shaping.*, wss.robot.* and wss.fixed were checked", e);
         }
     }
 
@@ -352,6 +380,13 @@ public final class ConfigFile {
         } catch (IllegalArgumentException e) {
             throw new ConfigFileException(source + ": " + ShapingConfig.RATES + " = '" + get(ShapingConfig.RATES) + "' is not "
                     + RATES_WORDS + ": " + e.getMessage());
+        }
+        shapingValues.put(ShapingConfig.LOSS, get(ShapingConfig.LOSS));
+        try {
+            LossTable.parse(get(ShapingConfig.LOSS));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + ShapingConfig.LOSS + " = '" + get(ShapingConfig.LOSS) + "' is not "
+                    + LOSS_WORDS + ": " + e.getMessage());
         }
         try {
             return ShapingConfig.from(shapingValues);
@@ -386,6 +421,20 @@ public final class ConfigFile {
             }
         }
         return set;
+    }
+
+    /** The declared robots and the fixed ports, checked together (docs/fixed-ports.md). */
+    private FixedSetup fixed(String source) throws ConfigFileException {
+        Map<String, String> robots = new LinkedHashMap<>();
+        values.keySet().stream().filter(key -> key.startsWith(FixedPorts.ROBOT)).sorted().forEach(key -> robots.put(key, get(key)));
+        try {
+            return FixedPorts.setup(robots, get(FixedPorts.KEY), Integer.parseInt(get(FixedPorts.UDP_IDLE)),
+                    Integer.parseInt(get("wss.port")), InetAddress.getByName(get("wss.bindAddress")));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + e.getMessage());
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("wss.bindAddress was checked", e);
+        }
     }
 
     /**

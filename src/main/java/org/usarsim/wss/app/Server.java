@@ -98,7 +98,7 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog, recorder);
     }
 
-    /** A recording's settings: every setting the model declares with this run's value, then the four wss.shaping* keys. */
+    /** A recording's settings: every setting the model declares with this run's value, then the five wss.shaping* keys. */
     private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
@@ -108,6 +108,7 @@ final class Server implements AutoCloseable {
         settings.put(ShapingConfig.RATES, shaping.rates().toString());
         settings.put(ShapingConfig.DELAY_MS, String.valueOf(shaping.delayMs()));
         settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
+        settings.put(ShapingConfig.LOSS, shaping.loss().toString());
         return settings;
     }
 

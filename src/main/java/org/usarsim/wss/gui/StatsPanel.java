@@ -2,6 +2,7 @@ package org.usarsim.wss.gui;
 
 import java.util.List;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
+import org.usarsim.wss.hub.core.UdpCounts;
 
 /**
  * "Link statistics": a row per pair of robots the hub has seen (docs/gui.md), from the same
@@ -27,11 +28,27 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 new RowsModel.Column<>("Breaks", Long.class, PairEntry::breaks),
                 new RowsModel.Column<>("Resumes", Long.class, PairEntry::resumes),
                 new RowsModel.Column<>("Up %", Double.class, pair -> Math.round(pair.upShare() * 1000) / 10.0),
+                new RowsModel.Column<>("UDP", String.class, StatsPanel::udp),
                 new RowsModel.Column<>("Last close", String.class, pair -> pair.lastClose() == null ? "" : pair.lastClose())));
-        // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Rate x2, Conns, Breaks, Resumes, Up %, Last close
-        preferredWidths(57, 57, 75, 60, 55, 78, 78, 60, 60, 70, 70, 50, 55, 70, 45, 115);
+        // Robot A, Robot B, State, dBm, Metres, Bytes x2, B/s x2, Rate x2, Conns, Breaks, Resumes, Up %, UDP, Last close
+        preferredWidths(57, 57, 75, 60, 52, 78, 78, 60, 60, 70, 70, 50, 55, 70, 45, 30, 118);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
+    }
+
+    /**
+     * The pair's fixed UDP ports (docs/fixed-ports.md), each way: datagrams sent/dropped broken/dropped
+     * by the queue/lost to the signal, {@code 120/0/3/12 | 118/0/0/9}; empty for a pair no fixed UDP port carried.
+     */
+    static String udp(PairEntry pair) {
+        if (pair.udpFirstToSecond().none() && pair.udpSecondToFirst().none()) {
+            return "";
+        }
+        return counts(pair.udpFirstToSecond()) + " | " + counts(pair.udpSecondToFirst());
+    }
+
+    private static String counts(UdpCounts.Reading udp) {
+        return udp.datagrams() + "/" + udp.droppedBroken() + "/" + udp.droppedQueue() + "/" + udp.lost();
     }
 
     /** A value the model knows; null (an empty cell, sorted first) for its NaN, "does not know". */

@@ -166,6 +166,11 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        event("UDP", from, to, datagrams, bytes, droppedBroken, droppedQueue, lost);
+    }
+
+    @Override
     public void pairForced(String first, String second, boolean up) {
         event("FORCED", first, second, up ? "UP" : "DOWN");
     }

@@ -126,6 +126,11 @@ final class EventFanOut implements EventSink {
         each(l -> l.polled(poll));
     }
 
+    @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        each(l -> l.udpCounted(from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
+    }
+
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */
     @Override
     public void dataSent(String from, String to, int bytes) {

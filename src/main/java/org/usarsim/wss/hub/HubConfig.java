@@ -31,10 +31,11 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * @param forced             the pairs forced down or up from the start (wss.force.down, wss.force.up)
  * @param pins               the rates and delays pinned with the pairs forced up from the start
  * @param shaping            how links are shaped (wss.shaping and its keys, docs/shaping.md)
+ * @param fixed              the declared robots and fixed ports (docs/fixed-ports.md)
  */
 public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
         boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int maxPortsPerAddress, int deadPeerSeconds,
-        Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
+        Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping, FixedSetup fixed) {
 
     /**
      * wss.maxPortsPerAddress's default: a full mesh of 100 robots simulated on one computer asks
@@ -59,6 +60,15 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
         forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
         pins = Map.copyOf(pins);
         Objects.requireNonNull(shaping, "shaping");
+        Objects.requireNonNull(fixed, "fixed");
+    }
+
+    /** No robot declared, no fixed port. */
+    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
+            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int maxPortsPerAddress, int deadPeerSeconds,
+            Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
+        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds, maxPortsPerRobot,
+                maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, FixedSetup.NONE);
     }
 
     /** Links not shaped, no rate pinned, wss.maxPortsPerAddress at its default. */
@@ -79,18 +89,24 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */
     public HubConfig withControlPort(int port) {
         return new HubConfig(bindAddress, port, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, fixed);
     }
 
     /** The same, with another cap on the WSS ports of the robots of one address. */
     public HubConfig withMaxPortsPerAddress(int ports) {
         return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, ports, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, ports, deadPeerSeconds, operators, forced, pins, shaping, fixed);
     }
 
     /** The same, with links shaped so (and these rates pinned from the start). */
     public HubConfig withShaping(ShapingConfig shaping, Map<RobotPair, RatePin> pins) {
         return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, fixed);
+    }
+
+    /** The same, with these robots declared and these fixed ports. */
+    public HubConfig withFixed(FixedSetup setup) {
+        return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, setup);
     }
 }

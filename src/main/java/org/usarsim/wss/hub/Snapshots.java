@@ -12,6 +12,7 @@ import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.WssPort;
+import org.usarsim.wss.hub.udp.UdpRelay;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -30,7 +31,7 @@ final class Snapshots {
     }
 
     /** Under the hub's lock. @param airtime the robots' radios, or null when links are not shaped */
-    static Copied copy(HubCore core, Airtime airtime, long nowNs) {
+    static Copied copy(HubCore core, Airtime airtime, List<UdpRelay> relays, long nowNs) {
         List<HubSnapshot.RobotEntry> robots = new ArrayList<>();
         for (RegisteredRobot robot : core.robots()) {
             double inUse = airtime == null ? Double.NaN : airtime.inUse(robot.name(), nowNs);
@@ -40,14 +41,22 @@ final class Snapshots {
         List<HubSnapshot.LinkEntry> links = new ArrayList<>();
         for (WssPort port : core.ports()) {
             var key = port.key;
-            ports.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening()));
+            ports.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), port.number, port.listening(),
+                    core.isFixed(key) ? HubSnapshot.PortKind.FIXED_TCP : HubSnapshot.PortKind.DNS));
             for (Connection link : port.links()) {
                 if (link.isEstablished() && !link.isClosed()) {
                     links.add(new HubSnapshot.LinkEntry(key.from(), key.to(), key.targetPort(), port.number, link.outgoingPort()));
                 }
             }
         }
-        return new Copied(robots, ports, links, core.pairStats(), core.conditions());
+        Map<OrderedPair, PairCondition> conditions = core.conditions();
+        for (UdpRelay relay : relays) {
+            var key = relay.port().key();
+            PairCondition up = conditions.get(new OrderedPair(key.from(), key.to()));
+            ports.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), relay.number(), up != null && up.passes(),
+                    HubSnapshot.PortKind.FIXED_UDP));
+        }
+        return new Copied(robots, ports, links, core.pairStats(), conditions);
     }
 
     /** After the lock: the pairs' rows (the model asked here), every list sorted. */
@@ -62,14 +71,15 @@ final class Snapshots {
                     model.distance(first, second), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1],
                     pair.connections(), pair.breaks(), pair.resumes(), pair.upShare(nowNs),
                     lastClose == null ? null : lastClose.toString(),
-                    rateOf(copied.conditions(), first, second), rateOf(copied.conditions(), second, first)));
+                    rateOf(copied.conditions(), first, second), rateOf(copied.conditions(), second, first),
+                    pair.udpFrom(first).read(), pair.udpFrom(second).read()));
         }
         List<HubSnapshot.RobotEntry> robots = new ArrayList<>(copied.robots());
         List<HubSnapshot.PortEntry> ports = new ArrayList<>(copied.ports());
         List<HubSnapshot.LinkEntry> links = new ArrayList<>(copied.links());
         robots.sort(Comparator.comparing(HubSnapshot.RobotEntry::name));
         ports.sort(Comparator.comparing(HubSnapshot.PortEntry::from).thenComparing(HubSnapshot.PortEntry::to)
-                .thenComparingInt(HubSnapshot.PortEntry::targetPort));
+                .thenComparingInt(HubSnapshot.PortEntry::targetPort).thenComparing(HubSnapshot.PortEntry::kind));
         links.sort(Comparator.comparing(HubSnapshot.LinkEntry::from).thenComparing(HubSnapshot.LinkEntry::to)
                 .thenComparingInt(HubSnapshot.LinkEntry::targetPort).thenComparingInt(HubSnapshot.LinkEntry::outgoingPort));
         pairs.sort(Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second));

@@ -58,6 +58,14 @@ public sealed interface Entry {
     record Rate(long millis, String from, String to, long bitsPerSecond) implements Entry {
     }
 
+    /**
+     * A fixed UDP port's datagrams one way since its last such entry (docs/fixed-ports.md): sent,
+     * their bytes, dropped because the pair was broken, dropped by its shaped queue, lost to the signal.
+     */
+    record Udp(long millis, String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost)
+            implements Entry {
+    }
+
     /** Entries the recorder could not queue since the last such line (its queue was full). */
     record Dropped(long millis, long count) implements Entry {
     }

@@ -79,6 +79,9 @@ public final class EntryLines {
             words(out, t, "release", escape(r.first()), escape(r.second()));
         } else if (entry instanceof Entry.Rate r) {
             words(out, t, "rate", escape(r.from()), escape(r.to()), Long.toString(r.bitsPerSecond()));
+        } else if (entry instanceof Entry.Udp u) {
+            words(out, t, "udp", escape(u.from()), escape(u.to()), Long.toString(u.datagrams()), Long.toString(u.bytes()),
+                    Long.toString(u.droppedBroken()), Long.toString(u.droppedQueue()), Long.toString(u.lost()));
         } else if (entry instanceof Entry.Dropped d) {
             words(out, t, "dropped", Long.toString(d.count()));
         } else if (entry instanceof Entry.End) {
@@ -284,6 +287,11 @@ public final class EntryLines {
             case "rate" -> {
                 fields(f, 5);
                 yield new Whole(new Entry.Rate(t, unescape(f[2]), unescape(f[3]), whole(f[4])));
+            }
+            case "udp" -> {
+                fields(f, 9);
+                yield new Whole(new Entry.Udp(t, unescape(f[2]), unescape(f[3]), whole(f[4]), whole(f[5]), whole(f[6]), whole(f[7]),
+                        whole(f[8])));
             }
             case "dropped" -> {
                 fields(f, 3);

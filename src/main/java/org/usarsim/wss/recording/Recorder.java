@@ -243,6 +243,11 @@ public final class Recorder implements WssEventListener, AutoCloseable {
         offer(new Entry.Rate(millis(), from, to, bitsPerSecond));
     }
 
+    @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        offer(new Entry.Udp(millis(), from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
+    }
+
     /** A poll: its kicks, its walls when they changed and the poll itself, at the time it is offered. */
     @Override
     public void polled(ModelPoll poll) {

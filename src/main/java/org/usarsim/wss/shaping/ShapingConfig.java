@@ -14,13 +14,15 @@ import java.util.Objects;
  * @param rates the rate of a pair for its strength
  * @param delayMs the delay, from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}
  * @param airtime whether links sharing a robot share its radio's airtime
+ * @param loss the share of datagrams a pair loses for its strength ({@code wss.shaping.loss}; UDP only)
  */
-public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, LossTable loss) {
 
     public static final String SHAPING = "wss.shaping";
     public static final String RATES = "wss.shaping.rates";
     public static final String DELAY_MS = "wss.shaping.delayMs";
     public static final String AIRTIME = "wss.shaping.airtime";
+    public static final String LOSS = "wss.shaping.loss";
 
     public static final int DEFAULT_DELAY_MS = 2;
     public static final int MIN_DELAY_MS = 0;
@@ -31,15 +33,21 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
 
     public ShapingConfig {
         Objects.requireNonNull(rates, "rates");
+        Objects.requireNonNull(loss, "loss");
         String problem = delayProblem(delayMs);
         if (problem != null) {
             throw new IllegalArgumentException(DELAY_MS + ": " + delayMs + " " + problem);
         }
     }
 
+    /** With the default loss table. */
+    public ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+        this(on, rates, delayMs, airtime, LossTable.DEFAULT);
+    }
+
     /**
      * The settings {@code values} give by key ({@link #SHAPING}, {@link #RATES}, {@link #DELAY_MS},
-     * {@link #AIRTIME}; a key not there takes its default; other keys are ignored), each checked,
+     * {@link #AIRTIME}, {@link #LOSS}; a key not there takes its default; other keys are ignored), each checked,
      * even with shaping off, so that a mistake is found before the day it is switched on.
      *
      * @throws IllegalArgumentException for the first bad value, naming its key and the value:
@@ -73,7 +81,13 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         if (!airtimeText.equalsIgnoreCase("true") && !airtimeText.equalsIgnoreCase("false")) {
             throw refused(AIRTIME, airtimeText, "is not true or false");
         }
-        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()));
+        LossTable loss;
+        try {
+            loss = LossTable.parse(value(values, LOSS, LossTable.DEFAULT.toString()));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(LOSS + ": " + e.getMessage(), e);
+        }
+        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), loss);
     }
 
     /**
@@ -109,6 +123,16 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
             return "is above " + MAX_DELAY_MS;
         }
         return null;
+    }
+
+    /** The same with another loss table (the window's dialog sets the other four keys, a --config file this one). */
+    public ShapingConfig withLoss(LossTable table) {
+        return new ShapingConfig(on, rates, delayMs, airtime, table);
+    }
+
+    /** The percent of datagrams a pair of this strength loses: none with shaping off. */
+    public double lossPercent(double dBm) {
+        return on ? loss.percentFor(dBm) : 0;
     }
 
     private static String value(Map<String, String> values, String key, String defaultValue) {

@@ -69,6 +69,58 @@ class ShapedFlowTest {
     }
 
     @Test
+    void aLinkAtAnyRateFrom1BitPerSecondTakesHalfTheRadioBeside54MbitPerSecond() {
+        long fast = 54_000_000;
+        for (long slow : new long[] {1, 100, 1_000, 4_000, 64_000, 1_000_000, fast}) {
+            long seconds = slow < 100 ? 400 : 20; // at 1 bit/s half the airtime is a byte every 16 s
+            SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+            Lane pinned = links.add("A", "B", slow, 2, CHUNK, SimulatedLinks.endless());
+            Lane near = links.add("A", "C", fast, 2, CHUNK, SimulatedLinks.endless());
+            links.runFor(seconds * SECOND);
+            double pinnedShare = pinned.delivered * 8.0 / slow / seconds;
+            double nearShare = near.delivered * 8.0 / fast / seconds;
+            String at = Bitrate.format(slow) + " beside 54 Mbit/s";
+            assertEquals(0.5, pinnedShare, 0.05, at + ": the pinned link's airtime");
+            assertEquals(0.5, nearShare, 0.05, at + ": the 54 Mbit/s link's airtime");
+            assertEquals(1, links.airtime.inUse("A", links.now), 0.03, at + ": A's airtime in use");
+        }
+    }
+
+    @Test
+    void aByteAt1BitPerSecondIsCarriedOverManyGrantsAndIsNeverEarly() {
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
+        Lane lane = links.add("A", "B", 1, 2, CHUNK, SimulatedLinks.finite(1));
+        links.runUntil(8 * SECOND + 2 * MS - 1);
+        assertEquals(0, lane.delivered, "8 s on the air and 2 ms of delay are not over");
+        links.runUntil(8 * SECOND + 2 * MS);
+        assertEquals(1, lane.delivered);
+    }
+
+    @Test
+    void aRateRaisedReachesTheLinkWithinItsTurnAndTheDelay() {
+        long fast = 54_000_000;
+        int delayMs = 2;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        Lane pinned = links.add("A", "B", 1, delayMs, CHUNK, SimulatedLinks.endless());
+        Lane near = links.add("A", "C", fast, delayMs, CHUNK, SimulatedLinks.endless());
+        links.runFor(10 * SECOND);
+        long before = pinned.delivered;
+        long raisedAt = links.now;
+        pinned.flow.setConditions(fast, delayMs);
+        // The grant on the air keeps its rate (one quantum at most), the other link has its turn (one
+        // quantum), then the raised link's next grant is at 54 Mbit/s: its bytes arrive after it and the delay.
+        long waiting = pinned.flow.held();
+        links.runUntil(raisedAt + 2 * Airtime.QUANTUM_NS + delayMs * MS);
+        assertTrue(pinned.delivered - before >= waiting, "the " + waiting + " bytes that waited at 1 bit/s arrive within "
+                + "two quanta and the delay: " + (pinned.delivered - before) + " bytes");
+        long nearBefore = near.delivered;
+        long pinnedBefore = pinned.delivered;
+        links.runFor(10 * SECOND);
+        assertEquals(0.5, (pinned.delivered - pinnedBefore) * 8.0 / fast / 10, 0.05, "then half the airtime each");
+        assertEquals(0.5, (near.delivered - nearBefore) * 8.0 / fast / 10, 0.05);
+    }
+
+    @Test
     void aRelayThatReceivesAndSendsAgainHalvesTheGoodput() {
         long rate = 11_000_000;
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
@@ -104,12 +156,12 @@ class ShapedFlowTest {
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
         lane.flow.setConditions(8_000_000, 0);
-        // Four grants of 250 bytes were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked
-        // ahead); the 4096 bytes still waiting go at 8 Mbit/s: 4.096 ms more. At 1 Mbit/s they
-        // would take 32.8.
-        links.runUntil(12_096_000 - 1);
-        assertTrue(lane.delivered < capacity);
-        links.runUntil(12_096_000);
+        // Four grants of 2 ms were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked ahead). The
+        // one on the air keeps its rate (250 bytes); the three not begun carry 2,000 bytes each at
+        // 8 Mbit/s: the 4,846 bytes left are all on the air by 8 ms. At 1 Mbit/s they would take 38.8.
+        links.runUntil(8 * MS - 1);
+        assertEquals(250 + 2 * 2000, lane.delivered);
+        links.runUntil(8 * MS);
         assertEquals(capacity, lane.delivered);
         assertEquals(lane.sent.getValue(), lane.got.getValue());
     }

@@ -518,6 +518,11 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
     }
 
     @Override
+    public void say(Logger log, String kind, InetAddress client, String message) {
+        warnings.say(log, Level.INFO, kind, client, message);
+    }
+
+    @Override
     public void note(Logger log, String category, InetAddress client, String message) {
         warnings.info(log, category, client, message);
     }

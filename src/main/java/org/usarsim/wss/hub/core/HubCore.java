@@ -179,7 +179,7 @@ public final class HubCore {
         remember(name, nowNs, out); // its pairs' statistics are remembered as long as its ports would have been
         if (robot != null) {
             out.closeSession(robot.session());
-            out.add(new HubEvent.Said(Level.INFO, "kicked out " + name));
+            out.add(new HubEvent.Said(Level.INFO, "kicked out robots", "kicked out " + name));
         }
     }
 
@@ -270,7 +270,7 @@ public final class HubCore {
             port.listen();
             out.port(Changes.PortWork.LISTEN, port);
         }
-        out.add(new HubEvent.Said(Level.INFO, "allocated " + port + (listens ? "" : ", not listening")));
+        out.add(new HubEvent.Said(Level.INFO, "allocated WSS ports", "allocated " + port + (listens ? "" : ", not listening")));
         out.add(new HubEvent.PortAllocated(key, port.number, listens));
         return new DnsResult(DnsOutcome.OK, port.number, key, true);
     }
@@ -389,7 +389,7 @@ public final class HubCore {
             port.stopListening();
             out.add(new HubEvent.PortListening(port.key, port.number, false));
         }
-        out.add(new HubEvent.Said(Level.WARNING, port + ": could not listen again: " + why));
+        out.add(new HubEvent.Said(Level.WARNING, "ports that could not listen again", port + ": could not listen again: " + why));
     }
 
     public List<WssPort> ports() {
@@ -611,7 +611,7 @@ public final class HubCore {
         PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
         if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), nowNs) && say) {
-            out.add(new HubEvent.Said(Level.INFO, "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+            out.add(new HubEvent.Said(Level.INFO, "pair changes", "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
         }
     }
 
@@ -665,7 +665,7 @@ public final class HubCore {
             }
         }
         if (forgotten > 0) {
-            out.add(new HubEvent.Said(Level.INFO, "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name
+            out.add(new HubEvent.Said(Level.INFO, "forgotten WSS ports", "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name
                     + ", gone for " + memory.goneSeconds(name, nowNs) + " s"));
         }
         if (!kept) {
@@ -700,7 +700,7 @@ public final class HubCore {
             }
         }
         if (given > 0) {
-            out.add(new HubEvent.Said(Level.INFO, "descriptors ran short: gave back " + given + " remembered WSS port"
+            out.add(new HubEvent.Said(Level.INFO, "ports given back", "descriptors ran short: gave back " + given + " remembered WSS port"
                     + (given == 1 ? "" : "s") + " of " + of + " robot" + (of == 1 ? "" : "s") + " that left, the longest gone first"));
         }
         return given;

@@ -102,10 +102,13 @@ public sealed interface HubEvent {
         }
     }
 
-    /** A line of the hub's log about its own changes. */
-    record Said(Level level, String line) implements HubEvent {
+    /**
+     * A line of the hub's log about its own changes; {@code kind} names what such lines have in
+     * common, for the limit on them ("allocated WSS ports": docs/reliability.md).
+     */
+    record Said(Level level, String kind, String line) implements HubEvent {
         public void deliverTo(EventSink sink) {
-            sink.say(level, line);
+            sink.say(level, kind, line);
         }
     }
 

@@ -279,14 +279,14 @@ public final class MeshBenchmark {
             }
         }
         if (together) {
-            hub.applyLinkStates(inRange);
+            hub.robotLinks().applyLinkStates(inRange);
             return;
         }
         inRange.keySet().forEach(pair -> {
             if (live) {
-                hub.resumeConnectionsForPair(pair.first(), pair.second());
+                hub.robotLinks().resumeConnectionsForPair(pair.first(), pair.second());
             } else {
-                hub.breakConnectionsForPair(pair.first(), pair.second());
+                hub.robotLinks().breakConnectionsForPair(pair.first(), pair.second());
             }
         });
     }

@@ -151,7 +151,7 @@ class DrainNumberTest {
                 for (Thread probe : probes) {
                     probe.join();
                 }
-                hub.hub.kickOutRobot("leaver"); // forget its ports for the next round
+                hub.hub.robotLinks().kickOutRobot("leaver"); // forget its ports for the next round
             }
             assertEquals(0, freed.get(), "binds that got a number the hub still owned");
             assertEquals(0, log.count(Level.WARNING, "could not"), log.toString());

@@ -63,7 +63,7 @@ class PortDescriptorsTest {
 
             // R0 out of range of every other robot: its ports stop at once, on one descriptor each.
             for (int j = 1; j < ROBOTS; j++) {
-                hub.hub.breakConnectionsForPair("R0", "R" + j);
+                hub.hub.robotLinks().breakConnectionsForPair("R0", "R" + j);
                 int toR0 = numbers[j][0];
                 int fromR0 = numbers[0][j];
                 assertEquals(0, Sockets.listeningSockets(toR0), "stopped when the break returned");
@@ -80,7 +80,7 @@ class PortDescriptorsTest {
             }
 
             for (int j = 1; j < ROBOTS; j++) {
-                hub.hub.resumeConnectionsForPair("R0", "R" + j);
+                hub.hub.robotLinks().resumeConnectionsForPair("R0", "R" + j);
                 assertEquals(1, Sockets.listeningSockets(numbers[j][0]), "listens again on the same number");
             }
             Wait.until("the link of the check ended", () -> Sockets.linkThreads() == 0);
@@ -118,12 +118,12 @@ class PortDescriptorsTest {
                 assertEquals("w", Sockets.readExactly(arrived.getInputStream(), 1));
             }
             b.dns("warmA", 0);
-            hub.hub.breakConnectionsForPair("warmA", "warmB");
-            hub.hub.resumeConnectionsForPair("warmA", "warmB");
+            hub.hub.robotLinks().breakConnectionsForPair("warmA", "warmB");
+            hub.hub.robotLinks().resumeConnectionsForPair("warmA", "warmB");
         }
         Wait.until("the warm-up robots are gone", () -> hub.hub.snapshot().robots().isEmpty());
-        hub.hub.kickOutRobot("warmA");
-        hub.hub.kickOutRobot("warmB");
+        hub.hub.robotLinks().kickOutRobot("warmA");
+        hub.hub.robotLinks().kickOutRobot("warmB");
         Wait.until("the warm-up's link ended", () -> Sockets.linkThreads() == 0);
     }
 }

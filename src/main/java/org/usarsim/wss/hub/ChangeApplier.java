@@ -1,18 +1,22 @@
 package org.usarsim.wss.hub;
 
 import java.io.IOException;
+import java.net.InetAddress;
+import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.usarsim.wss.hub.core.Changes;
+import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closes;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.tcp.PortSockets;
-import org.usarsim.wss.hub.tcp.Switchboard;
 
 /**
  * Applies what a step of the core decided: under the hub's lock the step's events are numbered
@@ -39,7 +43,8 @@ final class ChangeApplier {
 
     private final Outbox outbox;
     private final ForgetTimer forgetTimer;
-    private final Switchboard switchboard;
+    private final Descriptors descriptors;
+    private final InetAddress bindAddress;
     private final ListenFailure listenFailure;
     private final PortSelector selector;
     private final SocketTurns turns = new SocketTurns();
@@ -47,20 +52,33 @@ final class ChangeApplier {
     /** Ports allocated by the step being taken that do not listen: their sockets, bound listening, stop in its turn. */
     private final List<PortTask> settling = new ArrayList<>();
     /** Ports allocated by the step being taken that listen already: their LISTEN is done. */
-    private final java.util.Set<WssPort> listenedNow = new java.util.HashSet<>();
+    private final Set<WssPort> listenedNow = new HashSet<>();
 
-    ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Switchboard switchboard, PortSelector selector,
+    ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Descriptors descriptors, PortSelector selector, InetAddress bindAddress,
             ListenFailure listenFailure) {
         this.outbox = outbox;
         this.forgetTimer = forgetTimer;
-        this.switchboard = switchboard;
+        this.descriptors = descriptors;
+        this.bindAddress = bindAddress;
         this.selector = selector;
         this.listenFailure = listenFailure;
     }
 
     /**
-     * Under the hub's lock, before the step is {@link #taken}: the sockets of a port the core just
-     * allocated, bound listening by the DNS. A port allocated listening starts accepting at once:
+     * Under the hub's lock, inside the DNS's step, before it is {@link #taken}: the socket of a
+     * port the core just allocated, bound by the DNS before the lock ({@link #put}); a port that
+     * cannot start accepting does not listen after all.
+     */
+    void adopt(HubCore core, WssPort port, ServerSocketChannel bound, Changes out) {
+        try {
+            put(port, PortSockets.adopt(port, bindAddress, selector, bound));
+        } catch (IOException e) {
+            core.couldNotListen(port, port.epoch(), e.getMessage(), out);
+        }
+    }
+
+    /**
+     * The sockets of a port the core just allocated, bound listening by the DNS. A port allocated listening starts accepting at once:
      * its socket only joins the selector (a queue and a wake-up, no I/O on the socket), nothing of
      * an earlier step can concern a port that did not exist, and every later step comes after; so
      * a DNS takes no turn (a mesh forming takes 9,900 in a row). A port allocated not listening
@@ -68,7 +86,7 @@ final class ChangeApplier {
      *
      * @throws IOException when the port cannot start accepting: the core must be told it does not listen
      */
-    void put(WssPort port, PortSockets portSockets) throws IOException {
+    private void put(WssPort port, PortSockets portSockets) throws IOException {
         sockets.put(port, portSockets);
         if (!port.listening()) {
             settling.add(new PortTask(new Changes.PortAction(Changes.PortWork.STOP, port, port.epoch()), portSockets));
@@ -181,17 +199,11 @@ final class ChangeApplier {
     private void listen(PortTask task, Closes closes) {
         Changes.PortAction action = task.action();
         try {
-            task.sockets().listen(action.epoch(), closes);
+            descriptors.retrying(() -> {
+                task.sockets().listen(action.epoch(), closes);
+                return null;
+            });
         } catch (IOException e) {
-            if (Descriptors.ranOut(e) && switchboard.descriptorsShort()) {
-                try {
-                    task.sockets().listen(action.epoch(), closes);
-                    return;
-                } catch (IOException again) {
-                    listenFailure.failed(action, again);
-                    return;
-                }
-            }
             listenFailure.failed(action, e);
         }
     }

@@ -16,14 +16,14 @@ public final class ControlListener extends AcceptLoop {
 
     private static final Logger LOG = Logger.getLogger(ControlListener.class.getName());
 
-    private final Switchboard switchboard;
+    private final ControlHub hub;
     private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
     private final Thread thread;
 
     /** Binds at once, so that a port in use is known before anything else starts. */
-    public ControlListener(Switchboard switchboard, InetSocketAddress address) throws IOException {
+    public ControlListener(ControlHub hub, InetSocketAddress address) throws IOException {
         super(AcceptLoop.bind(address, AcceptLoop.BACKLOG), LOG, "the control port", "the control connection from");
-        this.switchboard = switchboard;
+        this.hub = hub;
         this.thread = new Thread(this, "wss-control-listener");
         thread.setDaemon(true);
     }
@@ -63,7 +63,7 @@ public final class ControlListener extends AcceptLoop {
 
     @Override
     protected void serve(SocketChannel channel) {
-        ControlSession session = new ControlSession(switchboard, this, channel);
+        ControlSession session = new ControlSession(hub, this, channel);
         sessions.add(session);
         if (!server.isOpen()) {
             session.close();
@@ -80,7 +80,7 @@ public final class ControlListener extends AcceptLoop {
     @Override
     protected boolean acceptFailed(IOException e) {
         // Out of descriptors: remembered ports of robots that left give theirs back first.
-        if (Descriptors.ranOut(e) && switchboard.descriptorsShort()) {
+        if (hub.descriptors().gaveBack(e)) {
             return true;
         }
         // Otherwise robots must still be able to connect once it passes.
@@ -90,6 +90,6 @@ public final class ControlListener extends AcceptLoop {
 
     @Override
     protected void warnDropped(InetAddress peer, String message, Throwable e) {
-        switchboard.warn(LOG, "connections not served", peer, message, e);
+        hub.warn(LOG, "connections not served", peer, message, e);
     }
 }

@@ -34,7 +34,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     private static final Logger LOG = Logger.getLogger(ControlSession.class.getName());
 
-    private final Switchboard switchboard;
+    private final ControlHub hub;
     private final ControlListener listener;
     private final SocketChannel channel;
     private final InetAddress address;
@@ -43,8 +43,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     /** The name this connection registered, once INIT succeeded. Only the session's thread touches it. */
     private String robot;
 
-    ControlSession(Switchboard switchboard, ControlListener listener, SocketChannel channel) {
-        this.switchboard = switchboard;
+    ControlSession(ControlHub hub, ControlListener listener, SocketChannel channel) {
+        this.hub = hub;
         this.listener = listener;
         this.channel = channel;
         this.address = channel.socket().getInetAddress();
@@ -71,7 +71,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         LOG.fine(() -> "control connection from " + peer);
         try {
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
-            switchboard.keepAlive().apply(channel);
+            hub.keepAlive().apply(channel);
             ByteBuffer buffer = ByteBuffer.allocate(16 * 1024);
             int read;
             while ((read = channel.read(buffer)) >= 0) {
@@ -85,14 +85,14 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
             if (robot == null) {
                 LOG.fine(() -> "control connection from " + peer + " ended: " + e);
             } else {
-                switchboard.say(LOG, "lost control connections", address, "lost the control connection of " + robot + " from "
+                hub.say(LOG, "lost control connections", address, "lost the control connection of " + robot + " from "
                         + peer + " (" + e.getMessage() + "); deregistering it");
             }
         } finally {
             close();
             listener.ended(this);
             if (robot != null) {
-                switchboard.deregister(robot, this);
+                hub.deregister(robot, this);
             }
             LOG.fine(() -> "control connection from " + peer + " closed");
         }
@@ -110,7 +110,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         } catch (ProtocolException e) {
             reply = e.reply();
         } catch (RuntimeException e) {
-            switchboard.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
+            hub.warn(LOG, "failed answers", address, peer + ": failed to answer '" + line + "': " + e, e);
             reply = Replies.error(Replies.INTERNAL_ERROR);
         }
         String answered = reply;
@@ -120,7 +120,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     @Override
     public void lineTooLong() {
-        switchboard.warn(LOG, "over-long lines", address,
+        hub.warn(LOG, "over-long lines", address,
                 peer + ": a control line longer than " + LineSplitter.MAX_LINE_BYTES + " bytes; answered with an error", null);
         send(Replies.error(Replies.LINE_TOO_LONG));
     }
@@ -154,7 +154,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     private String init(Command command) throws ProtocolException {
         String name = Arguments.robot(command);
         List<Integer> ports = Arguments.portList(command);
-        if (!switchboard.register(name, address, ports, this)) {
+        if (!hub.register(name, address, ports, this)) {
             return Replies.error(Replies.ALREADY_EXISTS);
         }
         robot = name;
@@ -166,14 +166,14 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (other.equals(robot)) {
             return Replies.signalToSelf(other);
         }
-        OptionalDouble strength = switchboard.signalStrength(robot, other);
+        OptionalDouble strength = hub.signalStrength(robot, other);
         return strength.isPresent() ? Replies.signal(other, strength.getAsDouble()) : Replies.signalUnknownRobot(other);
     }
 
     private String dns(Command command) throws ProtocolException {
         String other = Arguments.robot(command);
         int targetPort = Arguments.targetPort(command);
-        HubCore.DnsResult result = switchboard.dns(robot, other, targetPort);
+        HubCore.DnsResult result = hub.dns(robot, other, targetPort);
         switch (result.outcome()) {
             case OK:
                 return Replies.dns(other, result.port());
@@ -188,7 +188,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
 
     private String reverseDns(Command command) throws ProtocolException {
         String asked = Arguments.askedPort(command);
-        String source = switchboard.reverseDns(robot, Integer.parseInt(asked));
+        String source = hub.reverseDns(robot, Integer.parseInt(asked));
         return source == null ? Replies.reverseDnsUnknown(asked) : Replies.reverseDns(asked, source);
     }
 
@@ -197,8 +197,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
      * Only from an address of wss.operators; the names need not be registered.
      */
     private String force(Command command) throws ProtocolException {
-        if (!switchboard.isOperator(address)) {
-            switchboard.warn(LOG, "operator commands refused", address,
+        if (!hub.isOperator(address)) {
+            hub.warn(LOG, "operator commands refused", address,
                     peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators", null);
             return Replies.error(Replies.NOT_AN_OPERATOR);
         }
@@ -236,11 +236,11 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         String shape = pin.equals(RatePin.NONE) ? "" : (pin.pinsRate() ? " rate " + Bitrate.format(pin.bitsPerSecond()) : "")
                 + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "");
         // Who, before what it does; limited like the WARNINGs, as an operator can send FORCEs as fast as it likes.
-        switchboard.note(LOG, "operator commands", address, "operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape);
+        hub.note(LOG, "operator commands", address, "operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape);
         switch (wanted) {
-            case "down" -> switchboard.force(first, second, Force.DOWN);
-            case "up" -> switchboard.force(first, second, Force.UP, pin);
-            default -> switchboard.release(first, second);
+            case "down" -> hub.force(first, second, Force.DOWN);
+            case "up" -> hub.force(first, second, Force.UP, pin);
+            default -> hub.release(first, second);
         }
         return Replies.forceOk();
     }
@@ -251,12 +251,12 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
      * the model replays a recording. Every field is checked before anything changes.
      */
     private String replay(Command command) throws ProtocolException {
-        if (!switchboard.isOperator(address)) {
-            switchboard.warn(LOG, "operator commands refused", address,
+        if (!hub.isOperator(address)) {
+            hub.warn(LOG, "operator commands refused", address,
                     peer + ": REPLAY refused: " + address.getHostAddress() + " is not in wss.operators", null);
             return Replies.error(Replies.NOT_AN_OPERATOR);
         }
-        Optional<Replay> found = switchboard.replay();
+        Optional<Replay> found = hub.replay();
         if (found.isEmpty()) {
             return Replies.error(Replies.NOT_A_REPLAY);
         }
@@ -265,7 +265,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         OptionalDouble speed = Arguments.replaySpeed(command, Replay.MIN_SPEED, Replay.MAX_SPEED);
         Boolean play = Arguments.replayPlays(command);
         if (time.isPresent() || speed.isPresent() || play != null) {
-            switchboard.note(LOG, "operator commands", address, "operator " + peer + ": REPLAY"
+            hub.note(LOG, "operator commands", address, "operator " + peer + ": REPLAY"
                     + (time.isPresent() ? " time " + time.getAsDouble() + " s" : "")
                     + (speed.isPresent() ? " speed " + speed.getAsDouble() + "x" : "")
                     + (play == null ? "" : play ? " play" : " pause"));

@@ -14,7 +14,7 @@ import java.util.logging.Logger;
  * accepted ({@code wss-port-handover}). The selector's thread never calls the hub: the hub may
  * wait for the selector (a break waits for its ports to close), and the hub's work on an accepted
  * connection asks the model and takes the hub's lock. So the selector only queues, and this
- * thread calls {@link Switchboard#accepted}; a listener's end comes through the same queue, after
+ * thread calls {@link LinkHub#accepted}; a listener's end comes through the same queue, after
  * every connection it accepted, which is what a departure's drain waits for.
  *
  * <p>The queue never refuses (the selector must never wait for it); the selector stops accepting
@@ -34,15 +34,15 @@ final class HandOver implements Runnable {
 
     private static final Item STOP = new Item(null, null, null);
 
-    private final Switchboard switchboard;
+    private final LinkHub hub;
     private final PortSelector selector;
     private final LinkedBlockingQueue<Item> queue = new LinkedBlockingQueue<>();
     private final AtomicInteger connections = new AtomicInteger();
     /** A failed accept waits to be reported: at most one at a time is queued. */
     private final AtomicBoolean failureQueued = new AtomicBoolean();
 
-    HandOver(Switchboard switchboard, PortSelector selector) {
-        this.switchboard = switchboard;
+    HandOver(LinkHub hub, PortSelector selector) {
+        this.hub = hub;
         this.selector = selector;
     }
 
@@ -101,7 +101,7 @@ final class HandOver implements Runnable {
 
     private void handOver(PortListener listener, SocketChannel connection) {
         try {
-            switchboard.accepted(listener.port, listener.epoch, connection);
+            hub.accepted(listener.port, listener.epoch, connection);
         } catch (Throwable e) {
             // As net.AcceptLoop's policy: the connection is dropped alone, and said.
             InetAddress peer = connection.socket().getInetAddress();
@@ -112,17 +112,17 @@ final class HandOver implements Runnable {
                 selector.close(); // clients are refused rather than left waiting
                 throw (VirtualMachineError) e;
             }
-            switchboard.warn(LOG, "connections not served", peer, "cannot serve a connection on " + listener.port + " from " + from
+            hub.warn(LOG, "connections not served", peer, "cannot serve a connection on " + listener.port + " from " + from
                     + " (" + e + "): dropped it; accepting the next", e);
         }
     }
 
     private void reportFailure(PortListener listener, IOException failure) {
-        if (Descriptors.ranOut(failure) && switchboard.descriptorsShort()) {
+        if (hub.descriptors().gaveBack(failure)) {
             return; // some were given back: the port accepts again after its pause
         }
         InetAddress address = listener.channel.socket().getInetAddress();
-        switchboard.warn(LOG, "failed accepts", address, listener.port + ": accept failed, trying again: " + failure, null);
+        hub.warn(LOG, "failed accepts", address, listener.port + ": accept failed, trying again: " + failure, null);
     }
 
     /** At the end: connections never handed over are closed, and every listener waited for has ended. */

@@ -39,8 +39,7 @@ public final class PortSelector implements AutoCloseable {
     /** How long a close may take before the one waiting for it says so and goes on. */
     static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(10);
 
-    private final Switchboard switchboard;
-    private final HandOver handOver;
+        private final HandOver handOver;
     private final Queue<Runnable> tasks = new ConcurrentLinkedQueue<>();
     /** Opened with the first listener, under this object's monitor; read without it once open. */
     private volatile Selector selector;
@@ -57,9 +56,8 @@ public final class PortSelector implements AutoCloseable {
     /** Ports whose accept failed, and when they accept again (System.nanoTime()). */
     private final Map<SelectionKey, Long> paused = new HashMap<>();
 
-    public PortSelector(Switchboard switchboard) {
-        this.switchboard = switchboard;
-        this.handOver = new HandOver(switchboard, this);
+    public PortSelector(LinkHub hub) {
+        this.handOver = new HandOver(hub, this);
     }
 
     /** Opens the selector and starts its threads, unless done: before the first port listens. */

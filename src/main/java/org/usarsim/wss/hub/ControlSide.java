@@ -1,0 +1,210 @@
+package org.usarsim.wss.hub;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.nio.channels.ServerSocketChannel;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.OptionalDouble;
+import java.util.concurrent.TimeUnit;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubCore;
+import org.usarsim.wss.hub.core.Measurement;
+import org.usarsim.wss.hub.core.OrderedPair;
+import org.usarsim.wss.hub.core.RatePin;
+import org.usarsim.wss.hub.core.RegisteredRobot;
+import org.usarsim.wss.hub.tcp.Closes;
+import org.usarsim.wss.hub.tcp.Closing;
+import org.usarsim.wss.hub.tcp.ControlHub;
+import org.usarsim.wss.hub.tcp.ControlSession;
+import org.usarsim.wss.hub.tcp.KeepAlive;
+import org.usarsim.wss.hub.tcp.PortListener;
+import org.usarsim.wss.hub.tcp.PortSockets;
+import org.usarsim.wss.model.Replay;
+import org.usarsim.wss.model.RobotPair;
+
+/**
+ * The hub as the control sessions see it ({@link ControlHub}): each command one step of the core
+ * through the {@link StepExecutor}, the model asked before it, without the lock.
+ */
+final class ControlSide extends SocketSide implements ControlHub {
+
+    /** How long an INIT of a taken name waits for the name to be freed. */
+    private static final long NAME_RELEASE_WAIT_NS = TimeUnit.MILLISECONDS.toNanos(250);
+    /** How long a departure waits for its ports to hand over the connections already completed. */
+    private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
+
+    private final StepExecutor executor;
+    private final ModelAnswers answers;
+    private final HubConfig config;
+
+    ControlSide(StepExecutor executor, ModelAnswers answers, HubConfig config, WarningLimiter warnings, KeepAlive keepAlive) {
+        super(warnings, keepAlive, executor.descriptors());
+        this.executor = executor;
+        this.answers = answers;
+        this.config = config;
+    }
+
+    /**
+     * Registers a robot. When the name is taken, waits a moment for it to be freed: a robot whose
+     * control connection dropped reconnects at once, and its old connection's end may not have
+     * been read yet; one that is leaving frees it once its ports drained.
+     *
+     * @return false when the name stays taken (nothing changes then)
+     */
+    @Override
+    public boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
+        RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
+        return executor.stepWaiting((core, now, out) -> core.register(robot, now, out), ControlSide::patience)
+                == HubCore.NameCheck.REGISTERED;
+    }
+
+    /** How long a registration waits for the name, from its first try. */
+    private static long patience(HubCore.NameCheck check) {
+        return check == HubCore.NameCheck.TAKEN ? NAME_RELEASE_WAIT_NS
+                : check == HubCore.NameCheck.TAKEN_BY_LEAVING ? NAME_RELEASE_WAIT_NS + DRAIN_NS : 0;
+    }
+
+    /**
+     * The robot's control connection closed: it is gone, its ports stop listening, its links live
+     * on. First every connection the kernel already completed on its listening ports is forwarded
+     * (a robot that sends and leaves at once loses nothing): the robot stays registered until its
+     * ports have drained, for at most {@link #DRAIN_NS}.
+     */
+    @Override
+    public void deregister(String name, ControlSession session) {
+        List<PortSockets> toDrain = executor.beginLeaving(name, session);
+        if (toDrain == null) {
+            return;
+        }
+        // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
+        List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
+        long deadline = System.nanoTime() + DRAIN_NS;
+        draining.forEach(listener -> listener.awaitEnd(deadline));
+        // Drained, they stop now, together: once the robot is gone, a connect to them is refused. The
+        // departure's step stops them in its turn too (nothing left to do then); stopping is the
+        // same whenever it is done, and a port that listens again later is a new listening.
+        Closes closes = executor.portSelector().closes();
+        toDrain.forEach(sockets -> sockets.stop(closes));
+        closes.await();
+        executor.run((core, now, out) -> core.left(name, session, now, out));
+    }
+
+    @Override
+    public boolean isOperator(InetAddress address) {
+        return config.operators().contains(address);
+    }
+
+    @Override
+    public Optional<Replay> replay() {
+        return answers.replay();
+    }
+
+    @Override
+    public OptionalDouble signalStrength(String from, String to) {
+        if (!executor.locked(core -> core.isRegistered(to))) {
+            return OptionalDouble.empty();
+        }
+        return answers.signalStrength(from, to);
+    }
+
+    /**
+     * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
+     * first), in one step. Before it, without the lock: the model is asked, and a new port's
+     * number and listening socket are bound (out of descriptors, some are given back first), since
+     * whether the port is new is only known under the lock; a DNS of a port that exists closes
+     * the socket unused. A port that cannot listen is not allocated (Could.Not.Allocate.Port).
+     * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
+     */
+    @Override
+    public HubCore.DnsResult dns(String from, String to, int targetPort) {
+        if (from.equals(to)) {
+            return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
+        }
+        boolean allowed = answers.allows(from, to);
+        // Shaped, a new pair starts at its own rate, not the lowest.
+        Map<OrderedPair, Measurement> measurements = config.shaping().on() ? answers.measure(List.of(RobotPair.of(from, to))) : Map.of();
+        ServerSocketChannel bound = null;
+        String noNumber = null;
+        try {
+            executor.portSelector().start(); // once: not under the lock, where a new port joins it
+            bound = executor.descriptors().retrying(() -> PortSockets.bindNew(config.bindAddress()));
+        } catch (IOException e) {
+            noNumber = e.getMessage();
+        }
+        ServerSocketChannel socket = bound;
+        String why = noNumber;
+        HubCore.DnsResult result = executor.step((core, now, out) -> {
+            if (!measurements.isEmpty() && core.isRegistered(from) && core.isRegistered(to)) {
+                core.measured(measurements, out);
+            }
+            int number = socket == null ? -1 : PortSockets.numberOf(socket);
+            HubCore.DnsResult answer = core.dns(from, to, targetPort, allowed, number, now, out);
+            if (answer.outcome() == HubCore.DnsOutcome.NEEDS_NUMBER) { // new, and no socket could be bound
+                core.couldNotAllocate(answer.key(), why, out);
+                return new HubCore.DnsResult(HubCore.DnsOutcome.NO_PORT, -1, answer.key(), false);
+            }
+            if (answer.numberUsed()) {
+                executor.adopt(core.port(answer.key()), socket, out);
+            }
+            return answer;
+        });
+        if (!result.numberUsed()) {
+            Closing.quietly(bound); // the port exists, or the DNS is refused
+        }
+        return result;
+    }
+
+    @Override
+    public String reverseDns(String asker, int port) {
+        return executor.locked(core -> core.reverseDns(asker, port));
+    }
+
+    // ---- forced pairs: an operator's hand on the switch (issue 12) ----
+
+    /**
+     * Forces the pair down or up: a forced state wins over the model's verdict until
+     * {@link #release}. Forced down stops the pair's ports and closes its connections as a break
+     * does, and the model's resume does not reopen them; forced up lets them listen (where both
+     * robots are registered) and forwards their connections whatever the model breaks or forbids.
+     * The names need not be registered: the state holds for the pair whenever its robots come,
+     * leave and come back.
+     *
+     * @throws IllegalArgumentException when the names are empty or the same
+     */
+    @Override
+    public void force(String robotA, String robotB, Force force) {
+        force(robotA, robotB, force, RatePin.NONE);
+    }
+
+    /** As {@link #force(String, String, Force)}, up with the pair's rate and delay pinned (docs/shaping.md). */
+    @Override
+    public void force(String robotA, String robotB, Force force, RatePin pin) {
+        RobotPair pair = pairOf(robotA, robotB);
+        Objects.requireNonNull(force, "force");
+        Objects.requireNonNull(pin, "pin");
+        executor.run((core, now, out) -> core.force(pair, force, pin, now, out));
+    }
+
+    /**
+     * Gives the pair back to the model: its verdict counts again at once. That verdict is the
+     * model's last break or resume of the pair, and {@code connectionIsPossibleForPair} asked now
+     * for each direction.
+     */
+    @Override
+    public void release(String robotA, String robotB) {
+        RobotPair pair = pairOf(robotA, robotB);
+        boolean firstToSecond = answers.allows(pair.first(), pair.second());
+        boolean secondToFirst = answers.allows(pair.second(), pair.first());
+        executor.run((core, now, out) -> core.release(pair, firstToSecond, secondToFirst, now, out));
+    }
+
+    private static RobotPair pairOf(String robotA, String robotB) {
+        if (robotA == null || robotB == null || robotA.isEmpty() || robotB.isEmpty() || robotA.equals(robotB)) {
+            throw new IllegalArgumentException("a pair is two different robot names, not '" + robotA + "' and '" + robotB + "'");
+        }
+        return RobotPair.of(robotA, robotB);
+    }
+}

@@ -1,0 +1,148 @@
+package org.usarsim.wss.hub.tcp;
+
+import java.io.IOException;
+import java.nio.channels.SelectionKey;
+import java.nio.channels.Selector;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.concurrent.locks.LockSupport;
+import org.usarsim.wss.hub.core.PairCondition;
+import org.usarsim.wss.shaping.ShapedFlow;
+
+/**
+ * The loop of a shaped link (wss.shaping = on, docs/shaping.md): each direction reads only what
+ * its {@link ShapedFlow} has room for, and writes its bytes when they are due (their airtime's
+ * end plus the delay), waiting on the selector at most until the next is due. The pair's
+ * condition is read at every turn, so a rate change reaches the bytes still waiting within one
+ * poll of the hub's. As unshaped, a side's end stops the reading, and both streams end once what
+ * was read is written.
+ */
+final class ShapedForwarding extends Forwarding {
+
+    private final Shaping shaping;
+    private final Way upWay;
+    private final Way downWay;
+
+    ShapedForwarding(Link link, Selector selector, Direction up, Direction down, Shaping shaping) throws IOException {
+        super(link, selector, up, down);
+        this.shaping = shaping;
+        long now = shaping.clock().getAsLong();
+        this.upWay = new Way(up, shaping, shaping.up(), now);
+        this.downWay = new Way(down, shaping, shaping.down(), now);
+    }
+
+    @Override
+    void forward() throws IOException {
+        try {
+            while (!link.isClosed()) {
+                long now = shaping.clock().getAsLong();
+                upWay.follow();
+                downWay.follow();
+                upWay.writeDue(now);
+                downWay.writeDue(now);
+                boolean ended = up.ended() || down.ended();
+                if (ended && upWay.flow.held() == 0 && downWay.flow.held() == 0) {
+                    finish();
+                    return;
+                }
+                sourceKey.interestOps(interest(ended, upWay, downWay, now));
+                targetKey.interestOps(interest(ended, downWay, upWay, now));
+                waitAtMost(Math.min(upWay.flow.nanosUntilNext(now), downWay.flow.nanosUntilNext(now)));
+                boolean sourceReadable = sourceKey.isValid() && selector.selectedKeys().contains(sourceKey) && sourceKey.isReadable();
+                boolean targetReadable = targetKey.isValid() && selector.selectedKeys().contains(targetKey) && targetKey.isReadable();
+                selector.selectedKeys().clear();
+                if (link.isClosed()) {
+                    return;
+                }
+                if (sourceReadable && !up.ended() && !down.ended()) {
+                    upWay.read(shaping.clock().getAsLong());
+                }
+                if (targetReadable && !up.ended() && !down.ended()) {
+                    downWay.read(shaping.clock().getAsLong());
+                }
+            }
+        } finally {
+            upWay.flow.close();
+            downWay.flow.close();
+        }
+    }
+
+    /**
+     * Waits for the sockets, at most until something falls due: whole milliseconds on the
+     * selector (rounded down, so it wakes no later than due), and the last fraction of a
+     * millisecond parked, which the selector cannot wait for; rounding up instead made every hop
+     * up to a millisecond late.
+     */
+    private void waitAtMost(long nanos) throws IOException {
+        if (nanos == 0) {
+            selector.selectNow();
+        } else if (nanos == Long.MAX_VALUE) {
+            selector.select();
+        } else if (nanos >= 1_000_000) {
+            selector.select(TimeUnit.NANOSECONDS.toMillis(nanos));
+        } else {
+            LockSupport.parkNanos(nanos);
+            selector.selectNow();
+        }
+    }
+
+    /** A channel is read while its direction has room, and written while bytes due for it wait. */
+    private static int interest(boolean ended, Way from, Way to, long now) {
+        int ops = !ended && from.flow.room() > 0 ? SelectionKey.OP_READ : 0;
+        return to.flow.due(now) > 0 ? ops | SelectionKey.OP_WRITE : ops;
+    }
+
+    /** One direction's flow and its pair's live condition one way. */
+    private static final class Way {
+        private final Direction direction;
+        private final ShapedFlow flow;
+        private final AtomicReference<PairCondition> condition;
+        private PairCondition followed;
+
+        Way(Direction direction, Shaping shaping, AtomicReference<PairCondition> condition, long now) {
+            this.direction = direction;
+            this.condition = condition;
+            this.followed = condition.get();
+            this.flow = new ShapedFlow(shaping.airtime().open(direction.fromRobot, direction.toRobot, now), followed.bitsPerSecond(),
+                    followed.delayMs(), direction.buffer.capacity());
+        }
+
+        /** Takes the pair's condition now: a new rate or delay applies to the bytes not yet on the air. */
+        void follow() {
+            PairCondition now = condition.get();
+            if (now != followed) {
+                followed = now;
+                if (now.shaped()) {
+                    flow.setConditions(now.bitsPerSecond(), now.delayMs());
+                }
+            }
+        }
+
+        /** Reads what the flow has room for, a chunk at a time, while each read fills what it asked. */
+        void read(long now) {
+            for (int i = 0; i < Direction.CHUNKS_PER_TURN; i++) {
+                int room = flow.room();
+                if (room == 0) {
+                    return;
+                }
+                direction.buffer.clear();
+                direction.buffer.limit(Math.min(room, direction.buffer.capacity()));
+                int asked = direction.buffer.limit();
+                int read = direction.read();
+                if (read <= 0) {
+                    return; // drained for now, or ended
+                }
+                direction.buffer.flip();
+                flow.accept(direction.buffer, now);
+                if (read < asked) {
+                    return;
+                }
+            }
+        }
+
+        /** Writes what is due, counted as unshaped. */
+        void writeDue(long now) throws IOException {
+            direction.sent(flow.writeTo(direction.out, now));
+        }
+    }
+}

@@ -44,6 +44,8 @@ public final class Link implements Runnable, Connection {
     private final LinkHub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** Held while a direction writes and reports what it wrote, and by {@link #close}: no byte is sent once closed. */
+    final Object sending = new Object();
     /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
     private final PairStats stats;
     /** With links shaped: how; null forwards as fast as the machine goes (wss.shaping = off). */
@@ -121,10 +123,12 @@ public final class Link implements Runnable, Connection {
     @Override
     public void close(CloseReason reason) {
         closeReason.compareAndSet(null, reason);
-        if (closed.compareAndSet(false, true)) {
-            Closing.quietly(source);
-            Closing.quietly(target);
-            selector.wakeup();
+        synchronized (sending) { // a write under way is written and reported first; none after
+            if (closed.compareAndSet(false, true)) {
+                Closing.quietly(source);
+                Closing.quietly(target);
+                selector.wakeup();
+            }
         }
     }
 

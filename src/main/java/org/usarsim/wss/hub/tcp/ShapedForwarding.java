@@ -142,7 +142,7 @@ final class ShapedForwarding extends Forwarding {
 
         /** Writes what is due, counted as unshaped. */
         void writeDue(long now) throws IOException {
-            direction.sent(flow.writeTo(direction.out, now));
+            direction.send(flow, now);
         }
     }
 }

@@ -35,7 +35,7 @@ class ShapedFlowTest {
     @Test
     void aChunkIsDueAfterTheDelayAndItsTimeOnTheAir() throws IOException {
         long start = -1_000_000_000_000L; // nanoTime may be negative
-        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", start), 1_000_000, 50, CHUNK);
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", start), 1_000_000, 50, ShapingConfig.DEFAULT_QUEUE_MS);
         flow.accept(ByteBuffer.wrap(new byte[64]), start);
         long due = start + 50 * MS + 512_000; // 64 x 8 / 1 Mbit/s = 512 us
         assertEquals(0, flow.due(start));
@@ -150,8 +150,8 @@ class ShapedFlowTest {
     @Test
     void aRateChangeReachesTheBytesStillWaiting() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
-        long capacity = ShapedFlow.capacity(1_000_000, 0, CHUNK);
-        assertEquals(5096, capacity, "1 Mbit/s x 8 ms / 8 + a chunk");
+        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 100 ms / 8");
+        long capacity = 5096;
         Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
@@ -167,9 +167,23 @@ class ShapedFlowTest {
     }
 
     @Test
+    void aDirectionHoldsItsDelayAndItsQueueAtItsRateAndNoMore() {
+        for (long rate : new long[] {1_000_000, 6_000_000, 24_000_000}) {
+            SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+            Lane lane = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
+            links.runFor(2 * SECOND);
+            long most = Bitrate.bytesIn((2 + ShapingConfig.DEFAULT_QUEUE_MS) * MS, rate);
+            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and 100 ms at the rate, the default queue");
+            assertEquals(rate * 2 / 8.0, lane.delivered, rate * 2 / 8.0 / 100, Bitrate.format(rate) + ": and the rate is kept");
+        }
+        assertEquals(ShapedFlow.MIN_HELD, ShapedFlow.capacity(1, 2, ShapingConfig.DEFAULT_QUEUE_MS), "a frame at least");
+        assertThrows(IllegalArgumentException.class, () -> new ShapedFlow(Airtime.shared().open("A", "B", 0), 1, 2, 9));
+    }
+
+    @Test
     void aThreadThatWakesLateLosesNoRateItsGrantsAreBookedAhead() throws Exception {
         long rate = 24_000_000;
-        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", 0), rate, 2, CHUNK);
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", 0), rate, 2, ShapingConfig.DEFAULT_QUEUE_MS);
         Sink target = new Sink();
         long now = 0;
         long late = 3 * MS; // a busy machine: every wake-up 3 ms after it was due
@@ -209,13 +223,13 @@ class ShapedFlowTest {
     void aDirectionNeverHoldsMoreThanItsCapacity() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
         Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
-        assertEquals(6_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity(), "rate x (delay + 4 quanta) / 8 + a chunk");
+        assertEquals(6_000_000 * 200 / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
         links.runFor(2 * SECOND);
         assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
         assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
 
         lane.flow.setConditions(1_000_000, 100);
-        assertEquals(1_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity());
+        assertEquals(1_000_000 * 200 / 1000 / 8, lane.flow.capacity());
         assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
         assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
         lane.mostHeld = 0;

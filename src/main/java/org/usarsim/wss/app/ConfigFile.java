@@ -47,7 +47,7 @@ public final class ConfigFile {
 
     /** The link shaping keys, read together by ShapingConfig. */
     private static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
-            ShapingConfig.AIRTIME);
+            ShapingConfig.AIRTIME, ShapingConfig.QUEUE_MS);
     /** What wss.shaping.rates takes, in words. */
     private static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
@@ -103,6 +103,9 @@ public final class ConfigFile {
                     .help("Bytes reach the target no sooner than this after the WSS read them, plus their time on the air"),
             Setting.bool(ShapingConfig.AIRTIME, "Shared airtime", true)
                     .help("A robot's radio is one channel all its links share, by time"),
+            Setting.integer(ShapingConfig.QUEUE_MS, "Queue", ShapingConfig.DEFAULT_QUEUE_MS)
+                    .from(ShapingConfig.MIN_QUEUE_MS).to(ShapingConfig.MAX_QUEUE_MS).unit("ms")
+                    .help("The most a shaped link holds each way beyond its delay, in time at its rate (a radio's queue)"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 

@@ -20,9 +20,9 @@ import java.util.ArrayDeque;
  * read at t over an idle radio is due at t + delay + its bytes x 8 / rate.
  *
  * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
- * memory is bounded by {@link #capacity()}: about rate x delay, plus four grants' worth (the one
- * on the air, one starting, and two booked ahead), plus one chunk; a direction that holds that much reads no more,
- * and TCP's back-pressure reaches the sender.
+ * memory is bounded by {@link #capacity()}: rate x (delay + queue), the queue
+ * ({@code wss.shaping.queueMs}, 100 ms by default) being what a radio's queue would hold; a
+ * direction that holds that much reads no more, and TCP's back-pressure reaches the sender.
  *
  * <p>Used by one thread; it never reads a clock nor blocks.
  */
@@ -36,8 +36,11 @@ public final class ShapedFlow {
      */
     static final long LOOKAHEAD_NS = 2 * Airtime.QUANTUM_NS;
 
+    /** The least a direction may hold whatever its rate: one frame's payload (so that a link at 1 bit/s still reads). */
+    public static final int MIN_HELD = 1500;
+
     private final Airtime.Hop hop;
-    private final int chunkSize;
+    private final int queueMs;
     private long bitsPerSecond;
     private int delayMs;
     private long capacity;
@@ -83,24 +86,27 @@ public final class ShapedFlow {
 
     /**
      * A direction that sends through {@code hop} at {@code bitsPerSecond} with {@code delayMs}
-     * of delay, read {@code chunkSize} bytes at a time at most; it owns the hop and closes it.
+     * of delay and a queue of {@code queueMs} ({@code wss.shaping.queueMs}); it owns the hop and closes it.
      */
-    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int chunkSize) {
-        if (chunkSize < 1) {
-            throw new IllegalArgumentException("a chunk of 1 byte or more, not " + chunkSize);
+    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int queueMs) {
+        if (queueMs < ShapingConfig.MIN_QUEUE_MS || queueMs > ShapingConfig.MAX_QUEUE_MS) {
+            throw new IllegalArgumentException("a queue of " + ShapingConfig.MIN_QUEUE_MS + " to " + ShapingConfig.MAX_QUEUE_MS
+                    + " ms, not " + queueMs);
         }
         this.hop = hop;
-        this.chunkSize = chunkSize;
+        this.queueMs = queueMs;
         setConditions(bitsPerSecond, delayMs);
     }
 
     /**
-     * The bytes a direction may hold: rate x (delay + 2 x {@link Airtime#QUANTUM_NS} +
-     * {@link #LOOKAHEAD_NS}) / 8 + one chunk. Enough to keep the radio busy at that rate (bytes wait out the delay and their grants
-     * while more are read), and no more.
+     * The bytes a direction may hold: rate x (delay + queue) / 8, at least {@link #MIN_HELD}.
+     * The delay's bytes are in flight; the queue's wait their turn on the air, as a radio's
+     * queue holds frames (issue 27: a link held seconds). A queue of at least
+     * {@link ShapingConfig#MIN_QUEUE_MS} covers the grants booked ahead (8 ms), so the radio is
+     * kept busy at full rate.
      */
-    public static long capacity(long bitsPerSecond, int delayMs, int chunkSize) {
-        return Bitrate.bytesIn(delayMs * 1_000_000L + 2 * Airtime.QUANTUM_NS + LOOKAHEAD_NS, bitsPerSecond) + chunkSize;
+    public static long capacity(long bitsPerSecond, int delayMs, int queueMs) {
+        return Math.max(MIN_HELD, Bitrate.bytesIn((delayMs + (long) queueMs) * 1_000_000L, bitsPerSecond));
     }
 
     /**
@@ -118,7 +124,7 @@ public final class ShapedFlow {
         changed |= bitsPerSecond != this.bitsPerSecond || delayMs != this.delayMs;
         this.bitsPerSecond = bitsPerSecond;
         this.delayMs = delayMs;
-        this.capacity = capacity(bitsPerSecond, delayMs, chunkSize);
+        this.capacity = capacity(bitsPerSecond, delayMs, queueMs);
     }
 
     /** The rate in bit/s. */

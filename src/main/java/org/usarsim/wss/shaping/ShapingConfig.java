@@ -15,12 +15,19 @@ import java.util.Objects;
  * @param delayMs the delay, from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}
  * @param airtime whether links sharing a robot share its radio's airtime
  */
-public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, int queueMs) {
 
     public static final String SHAPING = "wss.shaping";
     public static final String RATES = "wss.shaping.rates";
     public static final String DELAY_MS = "wss.shaping.delayMs";
     public static final String AIRTIME = "wss.shaping.airtime";
+    /** The most a direction queues, in milliseconds of its rate (issue 27; docs/shaping.md, "The queue"). */
+    public static final String QUEUE_MS = "wss.shaping.queueMs";
+    /** About what an 802.11 radio holds: a few hundred frames, 100 ms at its rate. */
+    public static final int DEFAULT_QUEUE_MS = 100;
+    /** Below 10 ms a direction could not keep its radio busy (it books its airtime 8 ms ahead). */
+    public static final int MIN_QUEUE_MS = 10;
+    public static final int MAX_QUEUE_MS = 10_000;
 
     public static final int DEFAULT_DELAY_MS = 2;
     public static final int MIN_DELAY_MS = 0;
@@ -35,6 +42,15 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         if (problem != null) {
             throw new IllegalArgumentException(DELAY_MS + ": " + delayMs + " " + problem);
         }
+        String queueProblem = queueProblem(queueMs);
+        if (queueProblem != null) {
+            throw new IllegalArgumentException(QUEUE_MS + ": " + queueMs + " " + queueProblem);
+        }
+    }
+
+    /** With the default queue ({@link #DEFAULT_QUEUE_MS}). */
+    public ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+        this(on, rates, delayMs, airtime, DEFAULT_QUEUE_MS);
     }
 
     /**
@@ -73,7 +89,28 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         if (!airtimeText.equalsIgnoreCase("true") && !airtimeText.equalsIgnoreCase("false")) {
             throw refused(AIRTIME, airtimeText, "is not true or false");
         }
-        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()));
+        String queueText = value(values, QUEUE_MS, String.valueOf(DEFAULT_QUEUE_MS));
+        int queueMs;
+        try {
+            queueMs = Integer.parseInt(queueText);
+        } catch (NumberFormatException e) {
+            throw refused(QUEUE_MS, queueText, "is not a whole number of milliseconds");
+        }
+        String queueProblem = queueProblem(queueMs);
+        if (queueProblem != null) {
+            throw refused(QUEUE_MS, queueText, queueProblem);
+        }
+        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), queueMs);
+    }
+
+    private static String queueProblem(long queueMs) {
+        if (queueMs < MIN_QUEUE_MS) {
+            return "is below " + MIN_QUEUE_MS;
+        }
+        if (queueMs > MAX_QUEUE_MS) {
+            return "is above " + MAX_QUEUE_MS;
+        }
+        return null;
     }
 
     /**

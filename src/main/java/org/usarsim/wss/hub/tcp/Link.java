@@ -7,7 +7,9 @@ import java.nio.channels.CancelledKeyException;
 import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
@@ -125,10 +127,31 @@ public final class Link implements Runnable, Connection {
         closeReason.compareAndSet(null, reason);
         synchronized (sending) { // a write under way is written and reported first; none after
             if (closed.compareAndSet(false, true)) {
+                if (CUTS.contains(reason)) {
+                    resetOnClose(source);
+                    resetOnClose(target);
+                }
                 Closing.quietly(source);
                 Closing.quietly(target);
                 selector.wakeup();
             }
+        }
+    }
+
+    /**
+     * The closes that cut a stream (a break, a kick, a FORCE down, the server's stop): both ends get
+     * a reset, not an end of stream, so that neither robot takes a cut stream for a finished one
+     * (issue 27; docs/protocol.md section 4.3). An end's own close or reset ends the link cleanly.
+     */
+    private static final Set<CloseReason> CUTS = EnumSet.of(CloseReason.OUT_OF_RANGE, CloseReason.KICKED, CloseReason.FORCED,
+            CloseReason.SERVER_STOPPED);
+
+    /** SO_LINGER 0: the close sends a reset (RST) instead of an end of stream (FIN). */
+    private static void resetOnClose(SocketChannel channel) {
+        try {
+            channel.setOption(StandardSocketOptions.SO_LINGER, 0);
+        } catch (IOException | RuntimeException e) {
+            // Not connected or already closed: nothing to reset.
         }
     }
 

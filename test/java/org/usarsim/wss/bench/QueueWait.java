@@ -67,21 +67,23 @@ public final class QueueWait {
         System.out.printf("%n## Queue: a 64-byte message behind a saturating stream (%d markers, 2 s apart, after 4 s; the sender's"
                 + " send buffer %s; load average %s)%n%n", MARKERS, sendBuffer == 0 ? "the OS's" : sendBuffer + " bytes",
                 Files.readString(Path.of("/proc/loadavg")).strip());
-        System.out.println("| rate | WSS (wss.shaping.queueMs 100, delay 2 ms): waits, s | tbf (latency 100ms): waits, s | WSS median / tbf median |");
+        System.out.println("| rate | WSS (delay 2 ms; " + System.getProperty("wss.bench.properties", "wss.shaping.queueMs=100").strip()
+                + "): waits, s | tbf (latency 100ms): waits, s | WSS median / tbf median |");
         System.out.println("|---|---|---|---|");
         for (String rate : rates) {
             long[] wss = throughWss(rate, sendBuffer);
             long[] viaTbf = tbf ? throughTbf(rate, sendBuffer) : null;
             System.out.printf(Locale.ROOT, "| %s | %s | %s | %s |%n", Bitrate.format(Bitrate.parse(rate)), seconds(wss),
                     viaTbf == null ? "(no tbf here)" : seconds(viaTbf),
-                    viaTbf == null ? "" : String.format(Locale.ROOT, "**%.2f**", (double) median(wss) / median(viaTbf)));
+                    viaTbf == null || median(wss) < 0 ? "" : String.format(Locale.ROOT, "**%.2f**", (double) median(wss) / median(viaTbf)));
         }
     }
 
     private static String seconds(long[] waits) {
         StringBuilder text = new StringBuilder();
         for (long wait : waits) {
-            text.append(text.length() == 0 ? "" : ", ").append(String.format(Locale.ROOT, "%.3f", wait / 1e9));
+            text.append(text.length() == 0 ? "" : ", ").append(wait < 0 ? "none within 60 s of the end"
+                    : String.format(Locale.ROOT, "%.3f", wait / 1e9));
         }
         return text.toString();
     }

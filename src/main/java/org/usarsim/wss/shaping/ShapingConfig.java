@@ -103,16 +103,6 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), queueMs);
     }
 
-    private static String queueProblem(long queueMs) {
-        if (queueMs < MIN_QUEUE_MS) {
-            return "is below " + MIN_QUEUE_MS;
-        }
-        if (queueMs > MAX_QUEUE_MS) {
-            return "is above " + MAX_QUEUE_MS;
-        }
-        return null;
-    }
-
     /**
      * A delay in whole milliseconds from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}, as
      * {@code wss.shaping.delayMs} and an operator's {@code FORCE ... {Delay 50}} write it;
@@ -139,13 +129,16 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     }
 
     private static String delayProblem(long delayMs) {
-        if (delayMs < MIN_DELAY_MS) {
-            return "is below " + MIN_DELAY_MS;
-        }
-        if (delayMs > MAX_DELAY_MS) {
-            return "is above " + MAX_DELAY_MS;
-        }
-        return null;
+        return outside(delayMs, MIN_DELAY_MS, MAX_DELAY_MS);
+    }
+
+    private static String queueProblem(long queueMs) {
+        return outside(queueMs, MIN_QUEUE_MS, MAX_QUEUE_MS);
+    }
+
+    /** "is below MIN", "is above MAX", or null within them. */
+    private static String outside(long value, long min, long max) {
+        return value < min ? "is below " + min : value > max ? "is above " + max : null;
     }
 
     private static String value(Map<String, String> values, String key, String defaultValue) {

@@ -205,7 +205,9 @@ public final class Link implements Runnable, Connection {
 
     private void forward() throws IOException {
         for (SocketChannel channel : new SocketChannel[] {source, target}) {
-            buffers.apply(channel);
+            if (shaping == null) {
+                buffers.apply(channel); // a shaped link sizes them by its rate before it reads (ShapedForwarding)
+            }
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
             hub.keepAlive().apply(channel);

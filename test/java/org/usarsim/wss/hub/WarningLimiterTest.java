@@ -11,6 +11,7 @@ import java.util.logging.Logger;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.net.LogLimiter;
 
 /** The limit on warnings one client can cause, with a clock and a timer moved by hand. */
 class WarningLimiterTest {
@@ -25,7 +26,7 @@ class WarningLimiterTest {
     private final List<Long> dueAt = new ArrayList<>();
     private final List<Runnable> due = new ArrayList<>();
     private boolean timerStopped;
-    private final WarningLimiter limiter = new WarningLimiter(5, MINUTE, () -> now, new WarningLimiter.Timer() {
+    private final WarningLimiter limiter = new WarningLimiter(5, LogLimiter.ALL_FIRST, MINUTE, () -> now, new WarningLimiter.Timer() {
         @Override
         public void after(long delayNs, Runnable task) {
             dueAt.add(now + delayNs);
@@ -138,7 +139,7 @@ class WarningLimiterTest {
     @Test
     void theServersTimerWritesTheSummaryOnItsOwnThenItsThreadEnds() throws Exception {
         long before = warningsThreads();
-        WarningLimiter real = new WarningLimiter(2, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
+        WarningLimiter real = new WarningLimiter(2, LogLimiter.ALL_FIRST, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
         for (int i = 0; i < 5; i++) {
             real.warn(log, "refused connections", address("127.0.0.5"), "refused " + i);
         }

@@ -79,8 +79,8 @@ final class ChangeApplier {
     }
 
     /**
-     * The sockets of a port the core just allocated, bound listening by the DNS. A port allocated listening starts accepting at once:
-     * its socket only joins the selector (a queue and a wake-up, no I/O on the socket), nothing of
+     * The sockets of a port the core just allocated. A port allocated listening starts accepting
+     * at once: its socket only joins the selector (a queue and a wake-up, no I/O on the socket), nothing of
      * an earlier step can concern a port that did not exist, and every later step comes after; so
      * a DNS takes no turn (a mesh forming takes 9,900 in a row). A port allocated not listening
      * stops in the step's turn.

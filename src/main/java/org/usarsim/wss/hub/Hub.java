@@ -73,7 +73,7 @@ public final class Hub implements AutoCloseable {
                 config.maxPortsPerAddress(), config.shaping());
         KeepAlive keepAlive = KeepAlive.within(config.deadPeerSeconds());
         this.executor = new StepExecutor(core, clock, new Outbox(events), config.bindAddress(),
-                steps -> new LinkSide(steps, answers, config, warnings, keepAlive, events, airtime, clock));
+                steps -> new LinkSide(steps, answers, config, warnings, keepAlive, events, airtime, clock, LOG));
         this.controlSide = new ControlSide(executor, answers, config, warnings, keepAlive);
         this.modelSide = new ModelSide(executor, answers);
         this.sampler = config.shaping().on() ? new Sampler(modelSide::measure) : null;

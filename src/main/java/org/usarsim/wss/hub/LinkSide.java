@@ -24,8 +24,8 @@ import org.usarsim.wss.shaping.Airtime;
  */
 final class LinkSide extends SocketSide implements LinkHub {
 
-    private static final Logger LOG = Logger.getLogger(Hub.class.getName());
-
+    /** The hub's own log, where a refused connection is said (within the warnings' limits). */
+    private final Logger log;
     private final StepExecutor executor;
     private final ModelAnswers answers;
     private final HubConfig config;
@@ -37,8 +37,9 @@ final class LinkSide extends SocketSide implements LinkHub {
     private final LongSupplier clock;
 
     LinkSide(StepExecutor executor, ModelAnswers answers, HubConfig config, WarningLimiter warnings, KeepAlive keepAlive,
-            WssEventListener events, Airtime airtime, LongSupplier clock) {
+            WssEventListener events, Airtime airtime, LongSupplier clock, Logger log) {
         super(warnings, keepAlive, executor.descriptors());
+        this.log = log;
         this.executor = executor;
         this.answers = answers;
         this.config = config;
@@ -67,7 +68,7 @@ final class LinkSide extends SocketSide implements LinkHub {
         try {
             link = executor.descriptors().retrying(() -> newLink(port, socket, admission));
         } catch (IOException e) {
-            warnings.warn(LOG, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
+            warnings.warn(log, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
             return;
         }
@@ -96,7 +97,7 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     private void refuse(WssPort port, SocketChannel socket, InetAddress peer, String refusal) {
-        warnings.warn(LOG, "refused connections", peer, port + ": refused a connection: " + refusal);
+        warnings.warn(log, "refused connections", peer, port + ": refused a connection: " + refusal);
         Closing.quietly(socket);
     }
 

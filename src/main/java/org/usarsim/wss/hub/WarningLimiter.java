@@ -39,11 +39,6 @@ final class WarningLimiter implements AutoCloseable {
     private final LogLimiter limiter;
     private final LogLimiter said;
 
-    /** {@code first} from one address, {@link LogLimiter#ALL_FIRST} from all, per kind and interval. */
-    WarningLimiter(int first, long intervalNs, LongSupplier clock, Timer timer) {
-        this(first, LogLimiter.ALL_FIRST, intervalNs, clock, timer);
-    }
-
     /** {@code first} from one address, {@code allFirst} from all, per kind and interval. */
     WarningLimiter(int first, int allFirst, long intervalNs, LongSupplier clock, Timer timer) {
         this(first, allFirst, SAID_FIRST, SAID_ALL_FIRST, intervalNs, clock, timer);
@@ -57,7 +52,7 @@ final class WarningLimiter implements AutoCloseable {
 
     /** The server's: {@link #FIRST} a minute, the summaries written by a {@link #daemonTimer()}. */
     static WarningLimiter standard(LongSupplier clock) {
-        return new WarningLimiter(FIRST, INTERVAL_NS, clock, daemonTimer());
+        return new WarningLimiter(FIRST, LogLimiter.ALL_FIRST, INTERVAL_NS, clock, daemonTimer());
     }
 
     /** A timer whose one daemon thread, {@code wss-warnings}, lives only while a task waits (and a second more). */

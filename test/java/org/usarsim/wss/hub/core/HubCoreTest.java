@@ -25,7 +25,7 @@ class HubCoreTest {
     private static final InetAddress LOOPBACK = InetAddress.getLoopbackAddress();
     private static final RobotPair AB = RobotPair.of("A", "B");
 
-    private final HubCore core = new HubCore("TestModel", true, 600, 1000);
+    private final HubCore core = new HubCore("TestModel", true, 600, 1000, Integer.MAX_VALUE, ShapingConfig.OFF);
     private long now = 1_000 * SECOND;
 
     private final RobotSession sessionA = () -> { };
@@ -176,7 +176,7 @@ class HubCoreTest {
 
     @Test
     void aPairsConditionOneWayComesFromThePinThenTheModelsOwnRateThenTheRateTable() {
-        HubCore shaped = new HubCore("TestModel", true, 600, 1000,
+        HubCore shaped = new HubCore("TestModel", true, 600, 1000, Integer.MAX_VALUE,
                 new ShapingConfig(true, RateTable.parse("-50:8M,-70:2M,-90:1M"), 5, true));
         OrderedPair ab = new OrderedPair("A", "B");
         OrderedPair ba = ab.reversed();
@@ -254,7 +254,7 @@ class HubCoreTest {
 
     @Test
     void whenDescriptorsRunShortTheRememberedPortsOfTheRobotGoneLongestAreGivenBackFirstAndNeverAPresentRobots() {
-        HubCore forever = new HubCore("TestModel", true, -1, 1000); // -1: never forgotten by time, still given back
+        HubCore forever = new HubCore("TestModel", true, -1, 1000, Integer.MAX_VALUE, ShapingConfig.OFF); // -1: never forgotten by time, still given back
         RobotSession base = () -> { };
         forever.register(robot("Base", base, 5000), now, new Changes());
         List<String> gone = List.of("G1", "G2", "G3");

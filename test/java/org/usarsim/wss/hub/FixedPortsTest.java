@@ -165,7 +165,7 @@ class FixedPortsTest {
         try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
             int number = freeUdp();
             HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
-                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true,
+                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true, org.usarsim.wss.shaping.ShapingConfig.DEFAULT_QUEUE_MS,
                             org.usarsim.wss.shaping.LossTable.parse("0:100")), Map.of())
                     .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
                             List.of(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number)), 60));

@@ -51,7 +51,7 @@ public final class ConfigFile {
 
     /** The link shaping keys, read together by ShapingConfig. */
     private static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
-            ShapingConfig.AIRTIME);
+            ShapingConfig.AIRTIME, ShapingConfig.QUEUE_MS);
     /** What wss.shaping.loss takes, in words. */
     private static final String LOSS_WORDS = "rows dBm:percent from the strongest signal to the weakest (-85:1,-87:10,-90:50)";
     /** What wss.shaping.rates takes, in words. */
@@ -109,6 +109,9 @@ public final class ConfigFile {
                     .help("Bytes reach the target no sooner than this after the WSS read them, plus their time on the air"),
             Setting.bool(ShapingConfig.AIRTIME, "Shared airtime", true)
                     .help("A robot's radio is one channel all its links share, by time"),
+            Setting.integer(ShapingConfig.QUEUE_MS, "Queue", ShapingConfig.DEFAULT_QUEUE_MS)
+                    .from(ShapingConfig.MIN_QUEUE_MS).to(ShapingConfig.MAX_QUEUE_MS).unit("ms")
+                    .help("The most a shaped link holds each way beyond its delay, in time at its rate (a radio's queue)"),
             Setting.text(ShapingConfig.LOSS, "Loss by strength", LossTable.DEFAULT.toString()).orEmpty("no loss")
                     .noun(LOSS_WORDS)
                     .help("With links shaped, a UDP datagram of a pair whose strength is at or below a row's dBm is lost with"

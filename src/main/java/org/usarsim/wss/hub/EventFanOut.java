@@ -29,8 +29,8 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
-    public void say(Level level, String line) {
-        hubLog.log(level, line);
+    public void say(Level level, String kind, String line) {
+        warnings.say(hubLog, level, kind, null, line);
     }
 
     @Override
@@ -51,9 +51,14 @@ final class EventFanOut implements EventSink {
             try {
                 call.accept(listener);
             } catch (RuntimeException | LinkageError | AssertionError e) {
-                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+                listenerFailed(e);
             }
         }
+    }
+
+    /** A listener (a plugin's) that fails at every event would fill the log: limited as clients' warnings. */
+    private void listenerFailed(Throwable e) {
+        warnings.warn(LOG, "failed event listeners", null, "an event listener failed: " + e, e);
     }
 
     @Override
@@ -138,7 +143,7 @@ final class EventFanOut implements EventSink {
             try {
                 listener.dataSent(from, to, bytes);
             } catch (RuntimeException | LinkageError | AssertionError e) {
-                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+                listenerFailed(e);
             }
         }
     }

@@ -98,16 +98,17 @@ public final class DatagramFlow<T> {
             }
             Datagram<T> datagram = queue.poll();
             queuedBytes -= datagram.data().length;
-            long left = Math.max(1, datagram.data().length); // an empty datagram still has a frame on the air
+            // its airtime, an empty datagram's frame counted as a byte, taken in slots of at most a quantum
+            long leftNs = airtimeNs(Math.max(1, datagram.data().length), bitsPerSecond);
             long end = nowNs;
             boolean first = true;
-            while (left > 0) {
-                Airtime.Grant grant = hop.grant(bitsPerSecond, left, nowNs);
+            while (leftNs > 0) {
+                Airtime.Grant grant = hop.grant(Math.min(leftNs, Airtime.QUANTUM_NS), nowNs);
                 if (first) {
                     lastStartNs = grant.startNs();
                     first = false;
                 }
-                left -= grant.bytes();
+                leftNs -= grant.endNs() - grant.startNs();
                 end = grant.endNs();
             }
             anyBooked = true;
@@ -117,6 +118,11 @@ public final class DatagramFlow<T> {
                 onTheWay.add(new Pending<>(datagram, end + delayMs * 1_000_000L));
             }
         }
+    }
+
+    /** The time {@code bytes} take on the air at {@code bitsPerSecond}, at least 1 ns. */
+    static long airtimeNs(long bytes, long bitsPerSecond) {
+        return Math.max(1, (long) Math.ceil(bytes * 8.0 * 1e9 / bitsPerSecond));
     }
 
     /** The datagrams due at {@code nowNs}, in order, for the caller to send now; the queue's next ones booked. */

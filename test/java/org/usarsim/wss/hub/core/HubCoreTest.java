@@ -117,7 +117,7 @@ class HubCoreTest {
         core.forgetIfGone("A", now + 600 * SECOND, late);
         assertEquals(List.of(Changes.PortWork.RELEASE), works(late));
         assertTrue(late.events().contains(new HubEvent.PortForgotten(port.key, port.number)));
-        assertTrue(late.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "forgot 1 WSS port of A, gone for 600 s")),
+        assertTrue(late.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "forgotten WSS ports", "forgot 1 WSS port of A, gone for 600 s")),
                 late.events().toString());
         assertNull(core.port(port.key));
     }
@@ -281,7 +281,7 @@ class HubCoreTest {
         assertEquals(2, forever.giveBackRemembered(1, now, first), "a whole robot at a time: G1's two ports");
         assertEquals(List.of(Changes.PortWork.RELEASE, Changes.PortWork.RELEASE), works(first));
         assertTrue(first.portActions().stream().allMatch(action -> action.port().key.pair().contains("G1")), first.portActions().toString());
-        assertTrue(first.events().contains(new HubEvent.Said(java.util.logging.Level.INFO,
+        assertTrue(first.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "ports given back",
                 "descriptors ran short: gave back 2 remembered WSS ports of 1 robot that left, the longest gone first")), first.events().toString());
 
         Changes rest = new Changes();

@@ -186,7 +186,7 @@ public final class HubCore {
             for (WssPort port : ports.of(name)) {
                 out.close(port.links(), CloseReason.KICKED);
             }
-            out.add(new HubEvent.Said(Level.INFO, "kicked out " + name + "'s connections (a declared robot: it stays)"));
+            out.add(new HubEvent.Said(Level.INFO, "declared robots kicked", "kicked out " + name + "'s connections (a declared robot: it stays)"));
             return;
         }
         RegisteredRobot robot = robots.remove(name);
@@ -201,7 +201,7 @@ public final class HubCore {
         forgetting.kicked(name, nowNs, out); // its pairs' statistics are remembered as long as its ports would have been
         if (robot != null) {
             out.closeSession(robot.session());
-            out.add(new HubEvent.Said(Level.INFO, "kicked out " + name));
+            out.add(new HubEvent.Said(Level.INFO, "kicked out robots", "kicked out " + name));
         }
     }
 
@@ -270,7 +270,7 @@ public final class HubCore {
             port.listen();
             out.port(Changes.PortWork.LISTEN, port);
         }
-        out.add(new HubEvent.Said(Level.INFO, "allocated " + port + (listens ? "" : ", not listening")));
+        out.add(new HubEvent.Said(Level.INFO, "allocated WSS ports", "allocated " + port + (listens ? "" : ", not listening")));
         out.add(new HubEvent.PortAllocated(key, port.number, listens));
         return new DnsResult(DnsOutcome.OK, port.number, key, true);
     }
@@ -339,7 +339,7 @@ public final class HubCore {
             port.stopListening();
             out.add(new HubEvent.PortListening(port.key, port.number, false));
         }
-        out.add(new HubEvent.Said(Level.WARNING, port + ": could not listen again: " + why));
+        out.add(new HubEvent.Said(Level.WARNING, "ports that could not listen again", port + ": could not listen again: " + why));
     }
 
     public List<WssPort> ports() {

@@ -122,7 +122,7 @@ final class Pairs {
         PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
         if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), nowNs) && say) {
-            out.add(new HubEvent.Said(Level.INFO, "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+            out.add(new HubEvent.Said(Level.INFO, "pair changes", "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
         }
     }
 

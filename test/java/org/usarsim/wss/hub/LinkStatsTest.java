@@ -176,6 +176,8 @@ class LinkStatsTest {
         connectAToB(robotsAAndB(), 1);
         links.kickOutRobot("B");
         Wait.until("the link closed by the kick", () -> "kicked".equals(pair().lastClose()));
+        assertEquals(PairState.GONE, pair().state(), "a kicked robot's pairs are not up (issue 26, item 4)");
+        assertEquals("gone", pair().state().text());
     }
 
     @Test
@@ -315,11 +317,12 @@ class LinkStatsTest {
         b.close();
         Wait.until("B gone", () -> server.hub.snapshot().robots().size() == 1);
         Wait.until("the time B is gone is not time up", () -> pair().upShare() < 0.5);
-        assertEquals(PairState.UP, pair().state(), "the state shown stays: the model did not break the pair");
+        assertEquals(PairState.GONE, pair().state(), "shown gone, not up, while B is not registered (issue 26)");
         TestRobot back = robot("127.0.0.2");
         back.initAccepting("B");
         double whenBack = pair().upShare();
         Wait.until("up again once B is back", () -> pair().upShare() > whenBack);
+        assertEquals(PairState.UP, pair().state(), "the model did not break the pair: up again with B back");
     }
 
     /** Robot A, and robot B accepting on one port; returns B's accepting socket and sets {@link #a} and {@link #toB}. */

@@ -5,6 +5,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -510,14 +511,21 @@ public final class ReplayPropagationModel extends PollingModel {
                 listed.put(robot.name(), new ReportedRobot(robot.name(), at.x(), at.y(), at.z(), robot.batteryEmpty()));
                 robots.put(robot.name(), robot);
             }
-            Map<RobotPair, ModelPoll.Pair> recorded = new HashMap<>();
-            poll.pairs().forEach(pair -> recorded.put(RobotPair.of(pair.first(), pair.second()), pair));
             List<String> appliedNow = applyPoll(new Poll(registeredBefore, listed, true, "recording", " at " + minutesSeconds(poll.millis()),
                     recording.wallsAt(poll.millis()), () -> stopped), present -> {
-                        // A pair the poll has no row for (one of the two had not registered when it was recorded) stays up.
+                        // A pair this poll has no row for keeps the state it was last recorded in (its robots left
+                        // the recorded run before its end); one never recorded (the two were never there together) is up.
+                        List<RobotPair> pairs = PollStep.pairs(present);
+                        Map<RobotPair, ModelPoll.Pair> rows = new HashMap<>();
+                        poll.pairs().forEach(row -> rows.put(RobotPair.of(row.first(), row.second()), row));
+                        Set<RobotPair> missing = new HashSet<>(pairs);
+                        missing.removeAll(rows.keySet());
+                        if (!missing.isEmpty() && index > 0) {
+                            rows.putAll(recording.lastRows(index - 1, missing));
+                        }
                         List<ModelPoll.Pair> decided = new ArrayList<>();
-                        for (RobotPair pair : PollStep.pairs(present)) {
-                            ModelPoll.Pair row = recorded.get(pair);
+                        for (RobotPair pair : pairs) {
+                            ModelPoll.Pair row = rows.get(pair);
                             decided.add(row != null ? new ModelPoll.Pair(pair.first(), pair.second(), row.strength(), row.obstacles(), row.live())
                                     : new ModelPoll.Pair(pair.first(), pair.second(), Double.NaN, Double.NaN, true));
                         }
@@ -525,7 +533,7 @@ public final class ReplayPropagationModel extends PollingModel {
                             return null;
                         }
                         // Only now, whole: a GETSS meanwhile answers from the poll before.
-                        applied = new Applied(index, robots, recorded);
+                        applied = new Applied(index, robots, rows);
                         return decided;
                     });
             if (appliedNow != null) {

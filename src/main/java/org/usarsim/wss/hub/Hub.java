@@ -689,5 +689,10 @@ public final class Hub implements RobotLinkModel, Switchboard, AutoCloseable {
         public void polled(ModelPoll poll) {
             append(new HubEvent.Polled(poll));
         }
+
+        @Override
+        public void replayMoved(double timeSeconds, double speed, boolean playing) {
+            append(new HubEvent.ReplayMoved(timeSeconds, speed, playing));
+        }
     }
 }

@@ -239,6 +239,11 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        offer(new Entry.Replay(millis(), timeSeconds, speed, playing));
+    }
+
+    @Override
     public void rateChanged(String from, String to, long bitsPerSecond) {
         offer(new Entry.Rate(millis(), from, to, bitsPerSecond));
     }

@@ -400,30 +400,59 @@ public final class ReplayPropagationModel extends PollingModel {
         }
 
         @Override
-        public synchronized void play() {
-            replayClock.play(clock.getAsLong());
-            wake();
+        public void play() {
+            boolean changed;
+            synchronized (this) {
+                changed = !replayClock.playing(clock.getAsLong());
+                replayClock.play(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void pause() {
-            replayClock.pause(clock.getAsLong());
-            wake();
+        public void pause() {
+            boolean changed;
+            synchronized (this) {
+                changed = replayClock.playing(clock.getAsLong());
+                replayClock.pause(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void speed(double times) {
-            replayClock.speed(times, clock.getAsLong());
-            wake();
+        public void speed(double times) {
+            boolean changed;
+            synchronized (this) {
+                changed = times != replayClock.speed();
+                replayClock.speed(times, clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void jump(double seconds) {
-            // The duration in seconds times 1000 may come back a hair above it in milliseconds.
-            double millis = Math.min(seconds * 1000, recording.durationMillis());
-            replayClock.jump(millis, clock.getAsLong());
-            log.fine("replay: jumped to " + minutesSeconds((long) millis));
-            wake();
+        public void jump(double seconds) {
+            synchronized (this) {
+                // The duration in seconds times 1000 may come back a hair above it in milliseconds.
+                double millis = Math.min(seconds * 1000, recording.durationMillis());
+                replayClock.jump(millis, clock.getAsLong());
+                log.fine("replay: jumped to " + minutesSeconds((long) millis));
+                wake();
+            }
+            moved(true);
+        }
+
+        /**
+         * Tells the listeners where the replay is after a move that changed something (the event
+         * log and the recording keep every one: the log's lines are limited), outside this
+         * player's lock: the listeners take the server's.
+         */
+        private void moved(boolean changed) {
+            if (changed) {
+                listener().replayMoved(timeSeconds(), speed(), playing());
+            }
         }
 
         @Override

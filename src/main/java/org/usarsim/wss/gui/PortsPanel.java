@@ -13,5 +13,6 @@ final class PortsPanel extends FilteredTablePanel<PortEntry> {
                 new RowsModel.Column<>("Target Port", Integer.class, PortEntry::targetPort),
                 new RowsModel.Column<>("WSS Port", Integer.class, PortEntry::wssPort),
                 new RowsModel.Column<>("Listening?", String.class, port -> port.listening() ? "yes" : "no")));
+        leastWidths(StatsPanel.NAME, StatsPanel.NAME, "65535", "65535", "yes");
     }
 }

@@ -387,7 +387,7 @@ class ReplayModelTest {
         messages.add(refused(""));
         assertTrue(messages.get(0).contains("hello.txt is not a WSS recording"), messages.get(0));
         assertTrue(messages.get(1).contains("v2.rec is a recording of format version 2; this WSS reads version 1"), messages.get(1));
-        assertTrue(messages.get(2).contains("empty.rec is not a WSS recording"), messages.get(2));
+        assertTrue(messages.get(2).endsWith("empty.rec is empty: not a WSS recording (one starts with WSS-RECORDING 1)"), messages.get(2));
         assertTrue(messages.get(3).contains("nopolls.rec holds no poll (recorded with ObstaclePropagationModel): nothing to replay"),
                 messages.get(3));
         assertTrue(messages.get(4).contains("missing.rec: no such file"), messages.get(4));

@@ -141,6 +141,10 @@ class TablesAtWindowSizeTest {
                 TableColumn shown = table.getColumnModel().getColumn(column);
                 Component header = table.getTableHeader().getDefaultRenderer()
                         .getTableCellRendererComponent(table, shown.getHeaderValue(), false, false, -1, column);
+                if (header.getPreferredSize().height > table.getTableHeader().getHeight()) {
+                    problems.add(table.getName() + " header " + shown.getHeaderValue() + ": " + header.getPreferredSize().height
+                            + " px high in " + table.getTableHeader().getHeight());
+                }
                 if (header.getPreferredSize().width > shown.getWidth()) {
                     problems.add(table.getName() + " header " + shown.getHeaderValue() + ": " + header.getPreferredSize().width
                             + " px in " + shown.getWidth());

@@ -40,6 +40,17 @@ class FilteredTablePanel<T> extends JPanel {
         };
         table.setName(name);
         table.setTableHeader(new JTableHeader(table.getColumnModel()) {
+            /** As tall as its tallest header: the look measures only the first column's, one line. */
+            @Override
+            public java.awt.Dimension getPreferredSize() {
+                java.awt.Dimension size = super.getPreferredSize();
+                for (int column = 0; column < getColumnModel().getColumnCount(); column++) {
+                    size.height = Math.max(size.height, getDefaultRenderer()
+                            .getTableCellRendererComponent(table, null, false, false, -1, column).getPreferredSize().height);
+                }
+                return size;
+            }
+
             @Override
             public String getToolTipText(MouseEvent e) {
                 int column = columnAtPoint(e.getPoint());

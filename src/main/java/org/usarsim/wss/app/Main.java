@@ -176,8 +176,12 @@ public final class Main {
         }
         try {
             Files.writeString(to, text, StandardCharsets.UTF_8);
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw badInput("cannot write the world file " + to + ": its folder " + to.toAbsolutePath().getParent() + " does not exist");
+        } catch (java.nio.file.AccessDeniedException e) {
+            throw badInput("cannot write the world file " + to + ": permission denied");
         } catch (IOException e) {
-            throw badInput("cannot write the world file " + to + ": " + e);
+            throw badInput("cannot write the world file " + to + ": " + (e.getMessage() == null ? e.toString() : e.getMessage()));
         }
         return OK;
     }

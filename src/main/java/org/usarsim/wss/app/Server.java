@@ -139,6 +139,12 @@ final class Server implements AutoCloseable {
     void start() throws StartFailure {
         try {
             hub.start();
+            // A team must be able to tell from the log that wss.shaping took effect.
+            ShapingConfig shaping = config.shaping();
+            java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
+                    ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
+                            + (shaping.airtime() ? "shared" : "not shared")
+                    : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
         } catch (IOException e) {
             closeRecords();
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"

@@ -16,6 +16,8 @@ final class PortsPanel extends FilteredTablePanel<PortEntry> {
                 new RowsModel.Column<>("Target Port", Integer.class, PortEntry::targetPort),
                 new RowsModel.Column<>("WSS Port", Integer.class, PortEntry::wssPort),
                 new RowsModel.Column<>("Listening?", String.class, port -> port.listening() ? "yes" : "no"),
-                new RowsModel.Column<>("Kind", String.class, port -> port.kind().text())));
+                new RowsModel.Column<>("Kind", String.class, port -> port.kind().text(), "Kind",
+                        "DNS: a port a robot asked for; fixed TCP or fixed UDP: made at Start from wss.fixed (docs/fixed-ports.md)")));
+        leastWidths(StatsPanel.NAME, StatsPanel.NAME, "65535", "65535", "yes", "fixed UDP");
     }
 }

@@ -185,6 +185,12 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         event("RELEASED", first, second);
     }
 
+    /** An operator moved the replay: where it is now (s, to the millisecond), its speed, PLAY or PAUSE. Never limited, as the log's lines are. */
+    @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        event("REPLAY", Strengths.format(Math.round(timeSeconds * 1000) / 1000.0), Strengths.format(speed), playing ? "PLAY" : "PAUSE");
+    }
+
     /** With links shaped: a pair's rate one way was set or changed (never per chunk). */
     @Override
     public void rateChanged(String from, String to, long bitsPerSecond) {

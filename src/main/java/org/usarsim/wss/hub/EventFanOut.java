@@ -117,6 +117,11 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        each(l -> l.replayMoved(timeSeconds, speed, playing));
+    }
+
+    @Override
     public void pairForced(String first, String second, boolean up) {
         each(l -> l.pairForced(first, second, up));
     }

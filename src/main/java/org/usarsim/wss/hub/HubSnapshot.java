@@ -73,7 +73,8 @@ public record HubSnapshot(List<RobotEntry> robots, List<PortEntry> ports, List<L
      * (dBm, NaN unknown) and distance (m, NaN unknown), bytes forwarded and current throughput
      * (bytes/s) each way, connections opened, breaks and resumes, the share of time up (0..1) and
      * why its last connection closed (null before any closed); with links shaped, the link's rate
-     * each way in bit/s (0: not shaped).
+     * each way in bit/s (0: not shaped, or the pair cannot talk: broken, forced down, gone). The
+     * state is {@link PairState#GONE} while one of the two robots is not registered.
      */
     public record PairEntry(String first, String second, PairState state, double strength, double distance,
                             long bytesFirstToSecond, long bytesSecondToFirst,

@@ -2,13 +2,16 @@ package org.usarsim.wss.hub;
 
 import java.util.ArrayList;
 import java.util.Comparator;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.usarsim.wss.hub.core.CloseReason;
 import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.hub.core.PairCondition;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.WssPort;
@@ -62,16 +65,21 @@ final class Snapshots {
     /** After the lock: the pairs' rows (the model asked here), every list sorted. */
     static HubSnapshot complete(Copied copied, ModelAnswers model, long nowNs) {
         List<HubSnapshot.PairEntry> pairs = new ArrayList<>();
+        Set<String> registered = new HashSet<>();
+        copied.robots().forEach(robot -> registered.add(robot.name()));
         for (PairStats pair : copied.pairStats()) {
             String first = pair.pair.first();
             String second = pair.pair.second();
+            PairState state = registered.contains(first) && registered.contains(second) ? pair.state() : PairState.GONE;
             double[] rates = pair.rates(nowNs);
             CloseReason lastClose = pair.lastClose();
-            pairs.add(new HubSnapshot.PairEntry(first, second, pair.state(), model.strength(first, second),
+            pairs.add(new HubSnapshot.PairEntry(first, second, state, model.strength(first, second),
                     model.distance(first, second), pair.bytesFirstToSecond(), pair.bytesSecondToFirst(), rates[0], rates[1],
                     pair.connections(), pair.breaks(), pair.resumes(), pair.upShare(nowNs),
                     lastClose == null ? null : lastClose.toString(),
-                    rateOf(copied.conditions(), first, second), rateOf(copied.conditions(), second, first),
+                    // A pair that cannot talk has no rate: a broken pair's last one would read as if it had.
+                    state.isUp() ? rateOf(copied.conditions(), first, second) : 0,
+                    state.isUp() ? rateOf(copied.conditions(), second, first) : 0,
                     pair.udpFrom(first).read(), pair.udpFrom(second).read()));
         }
         List<HubSnapshot.RobotEntry> robots = new ArrayList<>(copied.robots());

@@ -68,6 +68,14 @@ public interface WssEventListener {
     }
 
     /**
+     * The replay was moved (docs/replay.md): an operator jumped, changed the speed, played or
+     * paused it (the window's time bar, {@code REPLAY}); where it is now (seconds from the
+     * recording's start), how fast, and whether it plays. Only for a move that changed something.
+     */
+    default void replayMoved(double timeSeconds, double speed, boolean playing) {
+    }
+
+    /**
      * A simulator model polled the simulator: what it learned and decided (docs/replay.md; the
      * recording writes it). Sent after the poll's kicks, before its breaks and resumes are applied.
      */

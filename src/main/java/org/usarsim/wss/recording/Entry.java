@@ -54,6 +54,10 @@ public sealed interface Entry {
     record Release(long millis, String first, String second) implements Entry {
     }
 
+    /** An operator moved the replay being recorded: where it is now (seconds), its speed, whether it plays. */
+    record Replay(long millis, double timeSeconds, double speed, boolean playing) implements Entry {
+    }
+
     /** With links shaped: the rate one way, set or changed. */
     record Rate(long millis, String from, String to, long bitsPerSecond) implements Entry {
     }

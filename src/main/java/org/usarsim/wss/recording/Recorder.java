@@ -158,7 +158,8 @@ public final class Recorder implements WssEventListener, AutoCloseable {
 
     /** A new recording's file in {@code folder}, named by the time now: {@code run-yyyy.MM.dd-HH.mm.ss.SSS.rec} (the window's Record). */
     public static Path runFileIn(Path folder) {
-        return folder.resolve("run-" + RUN_TIME.format(LocalDateTime.now()) + ".rec");
+        // Normalized: the log says /some/dir/run-....rec, not /some/dir/./run-....rec.
+        return folder.resolve("run-" + RUN_TIME.format(LocalDateTime.now()) + ".rec").normalize();
     }
 
     /** The file being written (not the one asked for when that one existed). */
@@ -236,6 +237,11 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     @Override
     public void pairReleased(String first, String second) {
         offer(new Entry.Release(millis(), first, second));
+    }
+
+    @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        offer(new Entry.Replay(millis(), timeSeconds, speed, playing));
     }
 
     @Override

@@ -5,6 +5,7 @@ import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -399,30 +400,59 @@ public final class ReplayPropagationModel extends PollingModel {
         }
 
         @Override
-        public synchronized void play() {
-            replayClock.play(clock.getAsLong());
-            wake();
+        public void play() {
+            boolean changed;
+            synchronized (this) {
+                changed = !replayClock.playing(clock.getAsLong());
+                replayClock.play(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void pause() {
-            replayClock.pause(clock.getAsLong());
-            wake();
+        public void pause() {
+            boolean changed;
+            synchronized (this) {
+                changed = replayClock.playing(clock.getAsLong());
+                replayClock.pause(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void speed(double times) {
-            replayClock.speed(times, clock.getAsLong());
-            wake();
+        public void speed(double times) {
+            boolean changed;
+            synchronized (this) {
+                changed = times != replayClock.speed();
+                replayClock.speed(times, clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
         @Override
-        public synchronized void jump(double seconds) {
-            // The duration in seconds times 1000 may come back a hair above it in milliseconds.
-            double millis = Math.min(seconds * 1000, recording.durationMillis());
-            replayClock.jump(millis, clock.getAsLong());
-            log.fine("replay: jumped to " + minutesSeconds((long) millis));
-            wake();
+        public void jump(double seconds) {
+            synchronized (this) {
+                // The duration in seconds times 1000 may come back a hair above it in milliseconds.
+                double millis = Math.min(seconds * 1000, recording.durationMillis());
+                replayClock.jump(millis, clock.getAsLong());
+                log.fine("replay: jumped to " + minutesSeconds((long) millis));
+                wake();
+            }
+            moved(true);
+        }
+
+        /**
+         * Tells the listeners where the replay is after a move that changed something (the event
+         * log and the recording keep every one: the log's lines are limited), outside this
+         * player's lock: the listeners take the server's.
+         */
+        private void moved(boolean changed) {
+            if (changed) {
+                listener().replayMoved(timeSeconds(), speed(), playing());
+            }
         }
 
         @Override
@@ -510,14 +540,21 @@ public final class ReplayPropagationModel extends PollingModel {
                 listed.put(robot.name(), new ReportedRobot(robot.name(), at.x(), at.y(), at.z(), robot.batteryEmpty()));
                 robots.put(robot.name(), robot);
             }
-            Map<RobotPair, ModelPoll.Pair> recorded = new HashMap<>();
-            poll.pairs().forEach(pair -> recorded.put(RobotPair.of(pair.first(), pair.second()), pair));
             List<String> appliedNow = applyPoll(new Poll(registeredBefore, listed, true, "recording", " at " + minutesSeconds(poll.millis()),
                     recording.wallsAt(poll.millis()), () -> stopped), present -> {
-                        // A pair the poll has no row for (one of the two had not registered when it was recorded) stays up.
+                        // A pair this poll has no row for keeps the state it was last recorded in (its robots left
+                        // the recorded run before its end); one never recorded (the two were never there together) is up.
+                        List<RobotPair> pairs = PollStep.pairs(present);
+                        Map<RobotPair, ModelPoll.Pair> rows = new HashMap<>();
+                        poll.pairs().forEach(row -> rows.put(RobotPair.of(row.first(), row.second()), row));
+                        Set<RobotPair> missing = new HashSet<>(pairs);
+                        missing.removeAll(rows.keySet());
+                        if (!missing.isEmpty() && index > 0) {
+                            rows.putAll(recording.lastRows(index - 1, missing));
+                        }
                         List<ModelPoll.Pair> decided = new ArrayList<>();
-                        for (RobotPair pair : PollStep.pairs(present)) {
-                            ModelPoll.Pair row = recorded.get(pair);
+                        for (RobotPair pair : pairs) {
+                            ModelPoll.Pair row = rows.get(pair);
                             decided.add(row != null ? new ModelPoll.Pair(pair.first(), pair.second(), row.strength(), row.obstacles(), row.live())
                                     : new ModelPoll.Pair(pair.first(), pair.second(), Double.NaN, Double.NaN, true));
                         }
@@ -525,7 +562,7 @@ public final class ReplayPropagationModel extends PollingModel {
                             return null;
                         }
                         // Only now, whole: a GETSS meanwhile answers from the poll before.
-                        applied = new Applied(index, robots, recorded);
+                        applied = new Applied(index, robots, rows);
                         return decided;
                     });
             if (appliedNow != null) {

@@ -96,6 +96,12 @@ public sealed interface HubEvent {
     }
 
     /** The model's: what one poll of the simulator learned and decided (a recording writes it). */
+    record ReplayMoved(double timeSeconds, double speed, boolean playing) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.replayMoved(timeSeconds, speed, playing);
+        }
+    }
+
     record Polled(ModelPoll poll) implements HubEvent {
         public void deliverTo(EventSink sink) {
             sink.polled(poll);

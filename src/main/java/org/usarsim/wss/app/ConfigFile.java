@@ -188,12 +188,11 @@ public final class ConfigFile {
         server.forcedPairs(source);
         server.shaping(source);
         server.recordFile(source);
+        server.fixed(source);
         try {
-            FixedPorts.checkFree(server.fixed(source), server.get(FixedPorts.KEY), InetAddress.getByName(server.get("wss.bindAddress")));
+            server.checkFixedPortsFree();
         } catch (IllegalArgumentException e) {
             throw new ConfigFileException(source + ": " + e.getMessage());
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("wss.bindAddress was checked", e);
         }
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
@@ -421,6 +420,17 @@ public final class ConfigFile {
             }
         }
         return set;
+    }
+
+    /**
+     * Refuses a fixed port whose number something on this machine holds now: checked as the file
+     * is read, and again as the window's Start starts a server (the number may have been taken since).
+     *
+     * @throws IllegalArgumentException {@code wss.fixed = '...' is not ...: tcp A->B:1883@11883: tcp port 11883 is in use (why)}
+     */
+    void checkFixedPortsFree() {
+        HubConfig hub = hubConfig();
+        FixedPorts.checkFree(hub.fixed(), get(FixedPorts.KEY), hub.bindAddress());
     }
 
     /** The declared robots and the fixed ports, checked together (docs/fixed-ports.md). */

@@ -358,11 +358,9 @@ public final class ConfigFile {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
-                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
-                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
-                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins())
-                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")))
-                    .withFixed(fixed(null));
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.maxPortsPerAddress")),
+                    Integer.parseInt(get("wss.deadPeerSeconds")), Set.copyOf(listed(get("wss.operators"), Setting::addressList)),
+                    forcedPairs(null), ForcedUp.parse(get("wss.force.up")).pins(), shaping(null), fixed(null));
         } catch (UnknownHostException | ConfigFileException e) {
             throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.*, wss.shaping.*, wss.robot.* and wss.fixed were checked", e);
         }

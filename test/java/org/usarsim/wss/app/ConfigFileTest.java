@@ -25,11 +25,13 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.FixedSetup;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.replay.ReplayPropagationModel;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 class ConfigFileTest {
 
@@ -402,7 +404,9 @@ class ConfigFileTest {
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
+        InetAddress local = InetAddress.getByName("127.0.0.1");
+        assertEquals(new HubConfig(local, 4321, 512, 0, false, 600, 1000, HubConfig.MAX_PORTS_PER_ADDRESS, 30, Set.of(local), Map.of(),
+                Map.of(), ShapingConfig.OFF, FixedSetup.NONE),
                 ConfigFile.of(properties, "t").hubConfig());
     }
 

@@ -444,6 +444,25 @@ class WindowTest {
         }
     }
 
+    /** A fixed port's number taken after the --config file was read: Start's dialog names wss.fixed and its value. */
+    @Test
+    void aFixedPortTakenSinceTheWindowOpenedIsSaidAndStartWorksOnceFree() throws Exception {
+        closeWindow();
+        int number = freePort();
+        String fixed = "Scout->Base:1883@" + number;
+        frame = openWindow(new Launch("0", "ScriptedModel", false, null, false), List.of(new NoopPropagationModel(), model),
+                Map.of("wss.robot.Scout", "", "wss.robot.Base", "", "wss.fixed", fixed));
+        try (ServerSocket taken = new ServerSocket(number, 50, InetAddress.getByName("127.0.0.1"))) {
+            run(() -> component(JButton.class, "start").doClick());
+            String message = Gui.closeMessage("WSS");
+            assertTrue(message.startsWith("wss.fixed = '" + fixed + "' is not ")
+                    && message.contains(": tcp " + fixed + ": tcp port " + number + " is in use ("), message);
+            assertEquals("Start", button());
+        }
+        start();
+        stop();
+    }
+
     @Test
     void aModelThatDoesNotStartIsSaidAndStartWorksOnceFixed() throws Exception {
         model.failStarts("the simulator at 127.0.0.1:1 cannot be reached");

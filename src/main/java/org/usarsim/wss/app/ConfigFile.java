@@ -191,12 +191,11 @@ public final class ConfigFile {
         server.forcedPairs(source);
         server.shaping(source);
         server.recordFile(source);
+        server.fixed(source);
         try {
-            FixedPorts.checkFree(server.fixed(source), server.get(FixedPorts.KEY), InetAddress.getByName(server.get("wss.bindAddress")));
+            server.checkFixedPortsFree();
         } catch (IllegalArgumentException e) {
             throw new ConfigFileException(source + ": " + e.getMessage());
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("wss.bindAddress was checked", e);
         }
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
@@ -362,11 +361,9 @@ public final class ConfigFile {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
-                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
-                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
-                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins())
-                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")))
-                    .withFixed(fixed(null));
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.maxPortsPerAddress")),
+                    Integer.parseInt(get("wss.deadPeerSeconds")), Set.copyOf(listed(get("wss.operators"), Setting::addressList)),
+                    forcedPairs(null), ForcedUp.parse(get("wss.force.up")).pins(), shaping(null), fixed(null));
         } catch (UnknownHostException | ConfigFileException e) {
             throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.*, wss.shaping.*, wss.robot.* and wss.fixed were checked", e);
         }
@@ -424,6 +421,17 @@ public final class ConfigFile {
             }
         }
         return set;
+    }
+
+    /**
+     * Refuses a fixed port whose number something on this machine holds now: checked as the file
+     * is read, and again as the window's Start starts a server (the number may have been taken since).
+     *
+     * @throws IllegalArgumentException {@code wss.fixed = '...' is not ...: tcp A->B:1883@11883: tcp port 11883 is in use (why)}
+     */
+    void checkFixedPortsFree() {
+        HubConfig hub = hubConfig();
+        FixedPorts.checkFree(hub.fixed(), get(FixedPorts.KEY), hub.bindAddress());
     }
 
     /** The declared robots and the fixed ports, checked together (docs/fixed-ports.md). */

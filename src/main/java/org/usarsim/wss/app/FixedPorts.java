@@ -138,6 +138,28 @@ final class FixedPorts {
         }
     }
 
+    /**
+     * What {@code --print-ports} prints: each fixed port on its line, in the order written, saying
+     * where its source robot's programs connect (or send) instead of the target's address and port:
+     * {@code tcp Scout->Base:1883@11883: Scout (127.0.0.1) connects to the WSS at 127.0.0.1:11883 for Base (10.0.0.8) port 1883}.
+     *
+     * @param bindAddress the address the WSS ports listen on (the wildcard: any address of this machine)
+     */
+    static List<String> lines(FixedSetup setup, InetAddress bindAddress) {
+        Map<String, String> addresses = new HashMap<>();
+        setup.robots().forEach(robot -> addresses.put(robot.name(), robot.address().getHostAddress()));
+        List<String> lines = new ArrayList<>();
+        for (FixedPort port : setup.ports()) {
+            String wss = bindAddress.isAnyLocalAddress()
+                    ? "port " + port.number() + " (any address of this machine)"
+                    : bindAddress.getHostAddress() + ":" + port.number();
+            String verb = port.transport() == FixedPort.Transport.TCP ? "connects to" : "sends to";
+            lines.add(port + ": " + port.key().from() + " (" + addresses.get(port.key().from()) + ") " + verb + " the WSS at " + wss
+                    + " for " + port.key().to() + " (" + addresses.get(port.key().to()) + ") port " + port.key().targetPort());
+        }
+        return lines;
+    }
+
     private static IllegalArgumentException refused(String fixed, String why) {
         return new IllegalArgumentException(KEY + " = '" + fixed + "' is not " + FixedPort.WORDS + ": " + why);
     }

@@ -21,6 +21,7 @@ import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
+import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -118,27 +119,15 @@ public final class Main {
             case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());
             case WORLD -> runWorld(out, options.world(), options.port(), options.bind(), options.rosbridge());
             case SERVE -> serve(out, options);
+            case PRINT_PORTS -> printPorts(out, err, options.config());
         };
     }
 
     /** The WSS, in its window or headless, from the defaults and the --config file. */
     private static int serve(PrintStream out, Options options) throws Failure {
         Path config = options.config();
-        Properties file = new Properties();
-        ConfigFile configFile;
-        try {
-            if (config != null) {
-                file = ConfigFile.read(config);
-            }
-            // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
-            Function<ConfigFile, ModelCatalog> catalog = server -> {
-                LogSetup.install(out, server.logLevel());
-                return ConfigFile.modelsFor(server);
-            };
-            configFile = ConfigFile.of(file, config == null ? "the defaults" : config.toString(), catalog);
-        } catch (ConfigFileException e) {
-            throw badInput(e.getMessage());
-        }
+        Properties file = read(config);
+        ConfigFile configFile = configFile(file, config, out);
         String noDisplay = options.headless() ? null : noDisplay();
         if (options.headless() || noDisplay != null) {
             if (noDisplay != null) {
@@ -147,6 +136,48 @@ public final class Main {
             return runHeadless(configFile, config);
         }
         return runWindow(configFile, file, config != null, options.start());
+    }
+
+    /** The --config file's properties (none without one). */
+    private static Properties read(Path config) throws Failure {
+        try {
+            return config == null ? new Properties() : ConfigFile.read(config);
+        } catch (ConfigFileException e) {
+            throw badInput(e.getMessage());
+        }
+    }
+
+    /** The configuration of the defaults and {@code file}, checked; the log goes to {@code log}. */
+    private static ConfigFile configFile(Properties file, Path config, PrintStream log) throws Failure {
+        // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
+        Function<ConfigFile, ModelCatalog> catalog = server -> {
+            LogSetup.install(log, server.logLevel());
+            return ConfigFile.modelsFor(server);
+        };
+        try {
+            return ConfigFile.of(file, config == null ? "the defaults" : config.toString(), catalog);
+        } catch (ConfigFileException e) {
+            throw badInput(e.getMessage());
+        }
+    }
+
+    /**
+     * {@code --print-ports [--config FILE]}: every fixed port of the configuration, one a line, to
+     * {@code out}; checked as headless mode checks it (a bad file: its one line, exit 2), nothing
+     * started. The log (plugins loaded) goes to {@code err}, so {@code out} holds only the ports;
+     * without a fixed port, one line on {@code err} says so.
+     */
+    private static int printPorts(PrintStream out, PrintStream err, Path config) throws Failure {
+        ConfigFile configFile = configFile(read(config), config, err);
+        knownModel(configFile.catalog(), configFile.modelName());
+        HubConfig hub = configFile.hubConfig();
+        List<String> lines = FixedPorts.lines(hub.fixed(), hub.bindAddress());
+        if (lines.isEmpty()) {
+            err.println("wss: no fixed port in " + (config == null ? "the defaults" : config) + " (wss.fixed is empty)");
+        }
+        lines.forEach(out::println);
+        out.flush();
+        return OK;
     }
 
     /**

@@ -20,6 +20,8 @@ record Options(Action action, boolean headless, boolean start, Path config, Path
         WORLD,
         /** {@code --export-world RUN.rec}: a recording written as a world file. */
         EXPORT_WORLD,
+        /** {@code --print-ports [--config FILE]}: print the fixed ports of the configuration. */
+        PRINT_PORTS,
         /** {@code --version}: print the version. */
         VERSION,
         /** {@code --help}: print the help and every property of --config FILE. */

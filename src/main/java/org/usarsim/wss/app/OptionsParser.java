@@ -45,6 +45,8 @@ final class OptionsParser {
                     "write a world file whose robots follow the recording's paths, with its walls\n"
                     + "(docs/replay.md); to standard output, or to the file of --out FILE"),
             Flag.valued("--out", "FILE", "a file", "where --export-world writes the world file"),
+            Flag.toggle("--print-ports", "print every fixed port of --config FILE, one a line, and exit: its protocol,\n"
+                    + "FROM->TO:PORT, the WSS's number and the robots' addresses (docs/fixed-ports.md)"),
             Flag.toggle("--version", "print the version and exit"),
             Flag.toggle("--help", "print this and every property of --config FILE, and exit", "-h"));
 
@@ -92,6 +94,7 @@ final class OptionsParser {
                 + "       " + command + " --headless [--config FILE]\n"
                 + "       " + command + " --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]\n"
                 + "       " + command + " --export-world RUN.rec [--out FILE]\n"
+                + "       " + command + " --print-ports [--config FILE]\n"
                 + "       " + command + " --version | --help";
     }
 
@@ -156,6 +159,13 @@ final class OptionsParser {
         String rosbridge = given.get("--rosbridge");
         Path export = path(given, "--export-world");
         Path out = path(given, "--out");
+        boolean printPorts = given.containsKey("--print-ports");
+        if (printPorts && given.keySet().stream().anyMatch(key -> !key.equals("--print-ports") && !key.equals("--config"))) {
+            throw new Mistake("--print-ports only prints the fixed ports of --config FILE: no other option\n" + USAGE);
+        }
+        if (printPorts) {
+            return new Options(Action.PRINT_PORTS, false, false, config, null, 0, null, null, null, -1);
+        }
         if (export != null && (headless || config != null || start || world != null || port != null || bind != null
                 || rosbridge != null)) {
             throw new Mistake("--export-world only writes a world file: no --headless, --config, --start, --world, --port, --bind"

@@ -1,7 +1,6 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
-import java.net.UnknownHostException;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -13,7 +12,9 @@ import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * How the hub runs.
+ * How the hub runs. Built one way: this canonical constructor, every component given (the
+ * application's from ConfigFile), then the {@code with...} methods for what the window or a test
+ * changes.
  *
  * @param bindAddress        the address the control port and every WSS port listen on
  *                           (the wildcard address: every interface)
@@ -44,46 +45,12 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
      */
     public static final int MAX_PORTS_PER_ADDRESS = 10_000;
 
-    /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
-    private static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
-
-    private static InetAddress ipv4Loopback() {
-        try {
-            return InetAddress.getByAddress(new byte[] {127, 0, 0, 1});
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("four bytes are an IPv4 address", e);
-        }
-    }
-
     public HubConfig {
         operators = Set.copyOf(operators);
         forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
         pins = Map.copyOf(pins);
         Objects.requireNonNull(shaping, "shaping");
         Objects.requireNonNull(fixed, "fixed");
-    }
-
-    /** No robot declared, no fixed port. */
-    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int maxPortsPerAddress, int deadPeerSeconds,
-            Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
-        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds, maxPortsPerRobot,
-                maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, FixedSetup.NONE);
-    }
-
-    /** Links not shaped, no rate pinned, wss.maxPortsPerAddress at its default. */
-    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
-            Set<InetAddress> operators, Map<RobotPair, Force> forced) {
-        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, MAX_PORTS_PER_ADDRESS, deadPeerSeconds, operators, forced, Map.of(), ShapingConfig.OFF);
-    }
-
-    /** The operator at 127.0.0.1 only, and no pair forced. */
-    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds) {
-        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, LOCAL_OPERATOR, Map.of());
     }
 
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */

@@ -11,7 +11,7 @@ import java.util.List;
 import java.util.stream.Stream;
 import org.junit.jupiter.api.Test;
 
-/** Which package may know which: app knows the others; the window never imports app nor a concrete model; the model SPI neither; world never the hub. */
+/** Which package may know which: app knows the others; the window never imports app nor a concrete model; the model SPI neither; world never the hub; ros (JSON and ROS messages) only the root. */
 class PackagesTest {
 
     private static final Path SOURCES = Path.of("src/main/java/org/usarsim/wss");
@@ -49,5 +49,11 @@ class PackagesTest {
     void theWorldServerKnowsNothingOfTheHubAndTheAcceptLoopNothingOfTheRest() throws IOException {
         assertEquals(List.of(), importing("world", "hub", "gui", "app"));
         assertEquals(List.of(), importing("net", "hub", "world", "model", "protocol", "gui", "app"));
+    }
+
+    @Test
+    void theRosWireKnowsNothingOfTheRestButTheRoot() throws IOException {
+        assertEquals(List.of(), importing("ros", "hub", "world", "model", "protocol", "net", "recording", "replay", "shaping",
+                "gui", "app"));
     }
 }

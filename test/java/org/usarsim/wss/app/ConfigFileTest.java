@@ -25,11 +25,13 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.usarsim.wss.gui.TestPreferences;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.FixedSetup;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 import org.usarsim.wss.replay.ReplayPropagationModel;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 class ConfigFileTest {
 
@@ -57,11 +59,23 @@ class ConfigFileTest {
             Map.entry("wss.shaping.rates", "-72:54M,-73:48M,-77:36M,-81:24M,-83:18M,-85:12M,-86:9M,-87:6M"),
             Map.entry("wss.shaping.delayMs", "2"),
             Map.entry("wss.shaping.airtime", "true"),
+            Map.entry("wss.shaping.queueMs", "100"),
+            Map.entry("wss.shaping.loss", "-85:1,-87:10,-90:50"),
+            Map.entry("wss.fixed", ""),
+            Map.entry("wss.udpIdleSeconds", "60"),
             Map.entry("wss.logLevel", "INFO"),
+            Map.entry("positions", "usarsim"),
+            Map.entry("positions.interval", "1000"),
             Map.entry("usarsim.host", "127.0.0.1"),
             Map.entry("usarsim.port", "7435"),
-            Map.entry("usarsim.interval", "1000"),
             Map.entry("usarsim.timeout", "2000"),
+            Map.entry("rosbridge.url", "ws://127.0.0.1:9090"),
+            Map.entry("rosbridge.topic", "/gazebo/model_states"),
+            Map.entry("rosbridge.type", ""),
+            Map.entry("rosbridge.frame", "world"),
+            Map.entry("rosbridge.names", ""),
+            Map.entry("rosbridge.stale", "0"),
+            Map.entry("rosbridge.maxMessage", "16"),
             Map.entry("distance.cutoff", "-93"),
             Map.entry("distance.pd0", "-49.67"),
             Map.entry("distance.n", "1"),
@@ -70,6 +84,8 @@ class ConfigFileTest {
             Map.entry("distance.holdTime", "0"),
             Map.entry("obstacle.attenuation", "6.325"),
             Map.entry("obstacle.cacheDistance", "1.0"),
+            Map.entry("obstacle.walls", ""),
+            Map.entry("rosbridge.map", "/map"),
             Map.entry("replay.file", ""),
             Map.entry("replay.speed", "1"),
             Map.entry("replay.start", "0"),
@@ -110,6 +126,25 @@ class ConfigFileTest {
         Map<String, String> replay = new TreeMap<>(DEFAULTS);
         replay.keySet().removeIf(key -> !key.startsWith("replay."));
         assertEquals(replay, ConfigFile.of(props("wss.model", "ReplayPropagationModel"), "t").modelValues().asMap());
+    }
+
+    @Test
+    void theOldNameOfTheIntervalIsTakenAsTheNewOne() throws Exception {
+        Properties file = props("wss.model", "DistanceOnlyPropagationModel");
+        file.setProperty("usarsim.interval", " 250 ");
+        ConfigFile settings = ConfigFile.of(file, "t");
+        assertEquals("250", settings.get("positions.interval"));
+        assertEquals("250", settings.modelValues().asMap().get("positions.interval"));
+        assertFalse(settings.modelValues().asMap().containsKey("usarsim.interval"));
+        assertEquals(Map.of("positions.interval", "250"), settings.modelKeysSetBy(file).asMap(), "what the window is handed");
+        file.setProperty("positions.interval", "300");
+        ConfigFileException both = assertThrows(ConfigFileException.class, () -> ConfigFile.of(file, "my.properties"));
+        assertEquals("my.properties: usarsim.interval is the old name of positions.interval; set only positions.interval",
+                both.getMessage());
+        ConfigFileException bad = rejected("usarsim.interval", "99");
+        assertTrue(bad.getMessage().endsWith("usarsim.interval = '99' is not a whole number of milliseconds from 100 to 60000"
+                + " (usarsim.interval is the old name of positions.interval)"), bad.getMessage());
+        assertTrue(ConfigFile.help(ConfigFile.defaults().catalog()).contains("(formerly usarsim.interval)"));
     }
 
     @Test
@@ -232,7 +267,7 @@ class ConfigFileTest {
         "wss.port, 0", "wss.port, 65535",
         "wss.chunkSize, 1048576",
         "usarsim.port, 1",
-        "usarsim.interval, 100", "usarsim.interval, 60000", "usarsim.timeout, 100", "usarsim.timeout, 60000",
+        "positions.interval, 100", "positions.interval, 60000", "usarsim.timeout, 100", "usarsim.timeout, 60000",
         "distance.margin, 0", "distance.margin, 3.5", "distance.holdTime, 0", "distance.holdTime, 2.5",
         "distance.n, 0.001", "distance.d0, 1e-3",
         "obstacle.attenuation, 0", "obstacle.cacheDistance, 0",
@@ -267,7 +302,7 @@ class ConfigFileTest {
     void problemIsNullForAnAcceptedValue() {
         assertEquals(null, problem("usarsim.port", "7435"));
         assertEquals(null, problem("distance.holdTime", " 1.5 "), "stripped like a file's value");
-        assertEquals(null, problem("usarsim.interval", "100"));
+        assertEquals(null, problem("positions.interval", "100"));
     }
 
     @Test
@@ -333,13 +368,23 @@ class ConfigFileTest {
         Map<String, String> model = ConfigFile.of(properties, "t").modelValues().asMap();
 
         assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
-        assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("usarsim.") || key.startsWith("distance.")
-                || key.startsWith("obstacle.")), model.toString());
+        assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("positions") || key.startsWith("usarsim.")
+                || key.startsWith("rosbridge.") || key.startsWith("distance.") || key.startsWith("obstacle.")), model.toString());
         assertEquals(Map.ofEntries(
+                Map.entry("positions", "usarsim"),
+                Map.entry("positions.interval", "1000"),
                 Map.entry("usarsim.host", "10.0.0.7"),
                 Map.entry("usarsim.port", "7435"),
-                Map.entry("usarsim.interval", "1000"),
                 Map.entry("usarsim.timeout", "2000"),
+                Map.entry("rosbridge.url", "ws://127.0.0.1:9090"),
+                Map.entry("rosbridge.topic", "/gazebo/model_states"),
+                Map.entry("rosbridge.type", ""),
+                Map.entry("rosbridge.frame", "world"),
+                Map.entry("rosbridge.names", ""),
+                Map.entry("rosbridge.stale", "0"),
+                Map.entry("rosbridge.maxMessage", "16"),
+                Map.entry("obstacle.walls", ""),
+                Map.entry("rosbridge.map", "/map"),
                 Map.entry("distance.cutoff", "-93"),
                 Map.entry("distance.pd0", "-49.67"),
                 Map.entry("distance.n", "1"),
@@ -359,7 +404,9 @@ class ConfigFileTest {
         properties.setProperty("wss.chunkSize", "512");
         properties.setProperty("wss.matchSourceAddress", "False");
         properties.setProperty("wss.socketBuffer", "0");
-        assertEquals(new HubConfig(InetAddress.getByName("127.0.0.1"), 4321, 512, 0, false, 600, 1000, 30),
+        InetAddress local = InetAddress.getByName("127.0.0.1");
+        assertEquals(new HubConfig(local, 4321, 512, 0, false, 600, 1000, HubConfig.MAX_PORTS_PER_ADDRESS, 30, Set.of(local), Map.of(),
+                Map.of(), ShapingConfig.OFF, FixedSetup.NONE),
                 ConfigFile.of(properties, "t").hubConfig());
     }
 
@@ -407,7 +454,7 @@ class ConfigFileTest {
         ConfigFile settings = ConfigFile.of(properties, "t");
         Map<String, String> model = settings.modelValues().asMap();
         assertEquals("2", model.get("distance.n"));
-        assertEquals(10, model.size(), "usarsim.* and distance.*: " + model);
+        assertEquals(18, model.size(), "positions.*, usarsim.*, rosbridge.* and distance.*: " + model);
         assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
         assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
         assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");
@@ -499,7 +546,7 @@ class ConfigFileTest {
         "distance.cutoff, low", "distance.pd0, '-49,67'", "distance.n, two",
         "distance.d0, 2m", "obstacle.attenuation, six", "obstacle.cacheDistance, one",
         "distance.cutoff, NaN", "distance.n, Infinity", "distance.pd0, -Infinity",
-        "usarsim.interval, often", "usarsim.interval, 1000.5", "usarsim.timeout, 2s",
+        "usarsim.interval, often", "usarsim.interval, 1000.5", "positions.interval, often", "usarsim.timeout, 2s",
         "distance.margin, some", "distance.holdTime, 1s", "distance.holdTime, NaN",
     })
     void notANumber(String key, String value) {
@@ -514,7 +561,7 @@ class ConfigFileTest {
         "distance.n, 0", "distance.n, -1",
         "distance.d0, -1", "distance.d0, 0",
         "obstacle.attenuation, -1", "obstacle.cacheDistance, -0.5",
-        "usarsim.interval, 99", "usarsim.interval, 60001", "usarsim.timeout, 0", "usarsim.timeout, 60001",
+        "usarsim.interval, 99", "usarsim.interval, 60001", "positions.interval, 99", "usarsim.timeout, 0", "usarsim.timeout, 60001",
         "distance.margin, -0.1", "distance.holdTime, -1",
     })
     void outOfRange(String key, String value) {

@@ -71,7 +71,11 @@ class HeadlessReplayTest {
         ServerProcess server = ServerProcess.start("--headless", "--config", config(recording, "replay.speed", "8").toString());
         try {
             int port = Integer.parseInt(server.awaitListening().group(1));
-            server.awaitLine(line -> line.contains("the replay reached its end at 00:00"));
+            Wait.until("the start-up says the links are not shaped (issue 26, item 9)", () -> server.stdoutSoFar().stream()
+                    .anyMatch(line -> line.contains("INFO links are not shaped (wss.shaping = off)")));
+            // The replay's thread may say its end before or after the listening line: look at every line so far.
+            Wait.until("the replay reached its end", () -> server.stdoutSoFar().stream()
+                    .anyMatch(line -> line.contains("the replay reached its end at 00:00")));
             assertTrue(server.stdoutSoFar().stream().anyMatch(line -> line.contains("INFO replaying " + recording
                     + ": recorded with ObstaclePropagationModel, 00:00 long, 1 poll, 2 robots [Alpha, Bravo]; from 00:00 at 8x")),
                     server.stdoutSoFar().toString());

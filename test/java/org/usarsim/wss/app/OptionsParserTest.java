@@ -13,12 +13,12 @@ class OptionsParserTest {
 
     @Test
     void noOptionServesFromTheDefaults() throws Exception {
-        assertEquals(new Options(Action.SERVE, false, false, null, null, 0, null, null, null), OptionsParser.parse());
+        assertEquals(new Options(Action.SERVE, false, false, null, null, 0, null, null, null, -1), OptionsParser.parse());
     }
 
     @Test
     void theWindowWithAConfigAndStart() throws Exception {
-        assertEquals(new Options(Action.SERVE, false, true, Path.of("a.properties"), null, 0, null, null, null),
+        assertEquals(new Options(Action.SERVE, false, true, Path.of("a.properties"), null, 0, null, null, null, -1),
                 OptionsParser.parse("--config", "a.properties", "--start"));
     }
 
@@ -32,11 +32,21 @@ class OptionsParserTest {
         Options given = OptionsParser.parse("--bind", "127.0.0.1", "--port", "0", "--world", "a.world");
         assertEquals(0, given.port());
         assertEquals("127.0.0.1", given.bind());
+        assertEquals(-1, given.rosbridge(), "no rosbridge unless asked");
+        assertEquals(9090, OptionsParser.parse("--world", "a.world", "--rosbridge", "9090").rosbridge());
+    }
+
+    @Test
+    void rosbridgeIsTheWorldServersAndAPort() {
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--rosbridge", "9090")).getMessage()
+                .startsWith("--port, --bind and --rosbridge are for the world server: they need --world FILE\n"));
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--world", "a.world", "--rosbridge", "ws"))
+                .getMessage().startsWith("--rosbridge ws is not a port number from 0 to 65535"));
     }
 
     @Test
     void exportWorldWithItsOut() throws Exception {
-        assertEquals(new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, Path.of("run.rec"), Path.of("run.world")),
+        assertEquals(new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, Path.of("run.rec"), Path.of("run.world"), -1),
                 OptionsParser.parse("--export-world", "run.rec", "--out", "run.world"));
     }
 

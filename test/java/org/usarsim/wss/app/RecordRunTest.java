@@ -112,7 +112,7 @@ class RecordRunTest {
         assertFalse(recording.cutShort(), "it ends with end");
         assertEquals(0, recording.unknownLines() + recording.unreadableLines(), String.valueOf(recording.firstProblem()));
         assertEquals("ObstaclePropagationModel", recording.header().model());
-        assertEquals("100", recording.header().settings().get("usarsim.interval"));
+        assertEquals("100", recording.header().settings().get("positions.interval"), "given under its old name, recorded under its key");
         assertEquals("3", recording.header().settings().get("distance.n"));
         assertEquals("off", recording.header().settings().get("wss.shaping"));
 

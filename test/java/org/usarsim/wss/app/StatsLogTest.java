@@ -66,6 +66,16 @@ class StatsLogTest {
     }
 
     @Test
+    void aFixedUdpPortsDirectionsEachHaveALineAfterThePairs() {
+        PairEntry pair = new PairEntry("Base", "Scout", PairState.UP, 0, 1, 0, 0, 0, 0, 0, 0, 0, 1, null, 0, 0,
+                org.usarsim.wss.hub.core.UdpCounts.Reading.NONE, new org.usarsim.wss.hub.core.UdpCounts.Reading(90, 9000, 4, 3, 10));
+        List<String> lines = StatsLog.table(List.of(pair)).lines().toList();
+        assertEquals(StatsLog.UDP_HEADER, lines.get(3));
+        assertTrue(lines.get(4).matches("Scout > Base +90 +9000 +4 +3 +10"), lines.get(4));
+        assertEquals(5, lines.size(), "no line for the way no datagram went");
+    }
+
+    @Test
     void withLinksShapedTheTableHasTheRatesEachWayAndTheRobotsAirtime() throws Exception {
         var shaped = TestHub.config(true, 65536, 600, 1000, 30).withShaping(new ShapingConfig(true, RateTable.DEFAULT, 2, true), Map.of());
         try (TestHub server = new TestHub(new NoopPropagationModel(), shaped);

@@ -229,8 +229,8 @@ class WindowTest {
 
             int toR2 = r1.dns("r2", 0);
             int toR1 = r2.dns("r1", 0);
-            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes");
-            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes");
+            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes", "DNS");
+            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes", "DNS");
             waitForTable("ports", List.of(r1r2, r2r1));
 
             try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
@@ -276,7 +276,7 @@ class WindowTest {
     }
 
     private static List<String> no(List<String> portRow) {
-        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no");
+        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no", "DNS");
     }
 
     @Test
@@ -293,14 +293,14 @@ class WindowTest {
                 atR2.getOutputStream().write(new byte[678]);
                 assertEquals(678, data.getInputStream().readNBytes(678).length);
                 // Robot A, B, state, strength, distance, bytes A>B, B>A, rate A>B, B>A (links not shaped),
-                // connections, breaks, resumes, up %, last close
+                // connections, breaks, resumes, up %, UDP (none), last close
                 until("the statistics count the bytes", () -> statistics(stats).equals(
-                        List.of("r1", "r2", "up", "0.0", "", "12345", "678", "-", "-", "1", "0", "0", "100.0", "")));
+                        List.of("r1", "r2", "up", "0.0", "", "12345", "678", "-", "-", "1", "0", "0", "100.0", "", "")));
                 model.links().breakConnectionsForPair("r1", "r2");
                 until("the statistics show the break", () -> {
                     List<String> row = statistics(stats);
                     return row.subList(0, 12).equals(List.of("r1", "r2", "broken", "0.0", "", "12345", "678", "-", "-", "1", "1", "0"))
-                            && row.get(13).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
+                            && row.get(14).equals("out of range") && Double.parseDouble(row.get(12)) < 100;
                 });
             }
             // The filter works as on the other tables.
@@ -444,6 +444,25 @@ class WindowTest {
         }
     }
 
+    /** A fixed port's number taken after the --config file was read: Start's dialog names wss.fixed and its value. */
+    @Test
+    void aFixedPortTakenSinceTheWindowOpenedIsSaidAndStartWorksOnceFree() throws Exception {
+        closeWindow();
+        int number = freePort();
+        String fixed = "Scout->Base:1883@" + number;
+        frame = openWindow(new Launch("0", "ScriptedModel", false, null, false), List.of(new NoopPropagationModel(), model),
+                Map.of("wss.robot.Scout", "", "wss.robot.Base", "", "wss.fixed", fixed));
+        try (ServerSocket taken = new ServerSocket(number, 50, InetAddress.getByName("127.0.0.1"))) {
+            run(() -> component(JButton.class, "start").doClick());
+            String message = Gui.closeMessage("WSS");
+            assertTrue(message.startsWith("wss.fixed = '" + fixed + "' is not ")
+                    && message.contains(": tcp " + fixed + ": tcp port " + number + " is in use ("), message);
+            assertEquals("Start", button());
+        }
+        start();
+        stop();
+    }
+
     @Test
     void aModelThatDoesNotStartIsSaidAndStartWorksOnceFixed() throws Exception {
         model.failStarts("the simulator at 127.0.0.1:1 cannot be reached");
@@ -568,10 +587,10 @@ class WindowTest {
         int simulatorPort = freePort();
         DistanceOnlyPropagationModel distanceOnly = new DistanceOnlyPropagationModel();
         ModelPreferences stored = new ModelPreferences(preferences.node("models"));
-        stored.store(distanceOnly, Map.of("usarsim.port", "1", "usarsim.interval", "400", "distance.n", "2"));
+        stored.store(distanceOnly, Map.of("usarsim.port", "1", "positions.interval", "400", "distance.n", "2"));
         // As --config gives them: only the model keys the file sets.
         Map<String, String> file = Map.of("usarsim.host", "127.0.0.1", "usarsim.port", String.valueOf(simulatorPort),
-                "usarsim.interval", "150");
+                "positions.interval", "150");
         frame = openWindow(new Launch("0", "DistanceOnlyPropagationModel", false, new ModelSettings(file), false),
                 List.of(new NoopPropagationModel(), distanceOnly, new ObstaclePropagationModel()));
 
@@ -579,19 +598,19 @@ class WindowTest {
         java.awt.Window dialog = configureDialog(title);
         assertEquals(String.valueOf(simulatorPort), onEdt(() -> find(dialog, JTextField.class, "usarsim.port").getText()),
                 "the file's port, over the stored 1");
-        assertEquals("150", onEdt(() -> find(dialog, JTextField.class, "usarsim.interval").getText()), "the file's, over the stored 400");
+        assertEquals("150", onEdt(() -> find(dialog, JTextField.class, "positions.interval").getText()), "the file's, over the stored 400");
         assertEquals("2", onEdt(() -> find(dialog, JTextField.class, "distance.n").getText()), "the stored, which the file does not set");
-        run(() -> find(dialog, JTextField.class, "usarsim.interval").setText("175"));
+        run(() -> find(dialog, JTextField.class, "positions.interval").setText("175"));
         run(() -> find(dialog, JButton.class, "ok").doClick());
         until("the dialog closed", () -> Gui.showing(title).isEmpty());
-        assertEquals("175", stored.load(distanceOnly).get("usarsim.interval"), "OK stored what was entered");
+        assertEquals("175", stored.load(distanceOnly).get("positions.interval"), "OK stored what was entered");
         assertEquals(String.valueOf(simulatorPort), stored.load(distanceOnly).get("usarsim.port"), "and what it showed");
 
         // Another model's dialog still shows the file's values: OK stored DistanceOnly's only.
         run(() -> component(JComboBox.class, "model").setSelectedItem("ObstaclePropagationModel"));
         String obstacleTitle = "ObstaclePropagationModel Configuration";
         java.awt.Window obstacleDialog = configureDialog(obstacleTitle);
-        assertEquals("150", onEdt(() -> find(obstacleDialog, JTextField.class, "usarsim.interval").getText()));
+        assertEquals("150", onEdt(() -> find(obstacleDialog, JTextField.class, "positions.interval").getText()));
         run(() -> find(obstacleDialog, JButton.class, "cancel").doClick());
         until("the Obstacle dialog closed", () -> Gui.showing(obstacleTitle).isEmpty());
         run(() -> component(JComboBox.class, "model").setSelectedItem("DistanceOnlyPropagationModel"));

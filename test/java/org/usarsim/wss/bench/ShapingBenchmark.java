@@ -32,7 +32,7 @@ import org.usarsim.wss.shaping.Bitrate;
  *
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.ShapingBenchmark [--seconds 10] [--only NAME]
- *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--cost-rate 8M]
+ *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--far-rate 6M] [--cost-rate 8M]
  * </pre>
  * NAME is one of accuracy, latency, airtime, relay, cost, bulk.
  */
@@ -49,8 +49,10 @@ public final class ShapingBenchmark {
     private final String relayRate;
     private final String nearRate;
     private final String costRate;
+    private final String farRate;
 
-    private ShapingBenchmark(int seconds, long bulkBytes, String relayRate, String nearRate, String costRate) {
+    private ShapingBenchmark(int seconds, long bulkBytes, String relayRate, String nearRate, String farRate, String costRate) {
+        this.farRate = farRate;
         this.seconds = seconds;
         this.bulkBytes = bulkBytes;
         this.relayRate = relayRate;
@@ -65,6 +67,7 @@ public final class ShapingBenchmark {
         String relayRate = "24M";
         String nearRate = "24M";
         String costRate = "8M";
+        String farRate = null;
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
@@ -72,6 +75,7 @@ public final class ShapingBenchmark {
                 case "--bulk-mb" -> bulkMb = Long.parseLong(args[++i]);
                 case "--relay-rate" -> relayRate = args[++i];
                 case "--near-rate" -> nearRate = args[++i];
+                case "--far-rate" -> farRate = args[++i];
                 case "--cost-rate" -> costRate = args[++i];
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
@@ -79,7 +83,7 @@ public final class ShapingBenchmark {
         if (only != null && !List.of("accuracy", "latency", "airtime", "relay", "cost", "bulk").contains(only)) {
             throw new IllegalArgumentException("--only takes accuracy, latency, airtime, relay, cost or bulk, not " + only);
         }
-        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, costRate);
+        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, farRate, costRate);
         System.out.printf("WSS shaping benchmark: %d cores, %s, %s, load average %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), java.time.LocalDateTime.now(), load());
         if (only == null || only.equals("accuracy")) {
@@ -195,13 +199,15 @@ public final class ShapingBenchmark {
     // ---- 3. airtime: one robot sending to two peers at once ----
 
     /**
-     * Robot A sends to B (pinned to the near rate) and C (a quarter of it) at once, both as fast
-     * as the WSS takes them. Each link's share of A's airtime is its bytes x 8 / its rate over the
-     * window (the {@code seconds} after the first second of both streams).
+     * Robot A sends to B (pinned to the near rate) and C (the far rate, a quarter of the near one
+     * unless given) at once, both as fast as the WSS takes them. Each link's share of A's airtime
+     * is its bytes x 8 / its rate over the window (the {@code seconds} after the first second of
+     * both streams). Then an operator raises A-C to the near rate, and the time until C has read
+     * a quantum's worth at the raised rate more is measured from the FORCE's reply.
      */
     private void airtime() throws Exception {
         long near = Bitrate.parse(nearRate);
-        long far = near / 4;
+        long far = farRate == null ? near / 4 : Bitrate.parse(farRate);
         System.out.printf("%n## Airtime: A sends to B (%s) and C (%s) at once for 1 + %d s (delay 2 ms, load average %s)%n%n",
                 Bitrate.format(near), Bitrate.format(far), seconds, load());
         Counter toB = new Counter(true);
@@ -210,7 +216,8 @@ public final class ShapingBenchmark {
                 Sink b = new Sink(toB, null); Sink c = new Sink(toC, null);
                 ControlClient robotB = new ControlClient(wss.controlPort, "B", b.port());
                 ControlClient robotC = new ControlClient(wss.controlPort, "C", c.port());
-                ControlClient robotA = new ControlClient(wss.controlPort, "A", 1)) {
+                ControlClient robotA = new ControlClient(wss.controlPort, "A", 1);
+                ControlClient operator = ControlClient.operator(wss.controlPort)) {
             int portB = robotA.dns("B");
             int portC = robotA.dns("C");
             Sender senderB = Sender.start(portB, Long.MAX_VALUE, null);
@@ -222,6 +229,11 @@ public final class ShapingBenchmark {
             sleepUntil(end);
             double waited = ProcessStats.waitedBetween(waits, ProcessStats.linkThreadsWaitNanos(wss.pid())) / 1e6 / seconds;
             sleepUntil(end + 100_000_000L);
+            long before = toC.total();
+            long quantum = near * 2 / 1000 / 8;
+            long raised = System.nanoTime();
+            operator.forceUp("A", "C", nearRate, 2);
+            long reached = toC.awaitTotal(before + quantum, 10 * SECOND);
             senderB.stop();
             senderC.stop();
             double shareB = toB.between(start, end) * 8.0 / near / seconds;
@@ -234,6 +246,11 @@ public final class ShapingBenchmark {
                     toC.between(start, end) * 8.0 / seconds / 1e6, 100 * shareC, far / 2e6);
             System.out.printf(Locale.ROOT, "| together | | | **%.1f %%** | 100 %% |%n", 100 * (shareB + shareC));
             System.out.printf(Locale.ROOT, "%nThe two link threads waited for a CPU %.0f ms per second (together).%n", waited);
+            if (far * 100 <= near) { // a faster far link moves a quantum of the near rate by itself in a few ms
+                System.out.printf(Locale.ROOT, "A-C raised to %s by FORCE: C read %d bytes more (a quantum at the raised rate) %.1f ms"
+                        + " after the FORCE was sent (its round trip, the grant on the air, B's turn, one of its own and the 2 ms"
+                        + " delay: 6 ms, and the threads' wake-ups).%n", Bitrate.format(near), quantum, (reached - raised) / 1e6);
+            }
             System.out.println();
             System.out.println("The shares above are computed from the bytes the peers received.");
         }
@@ -475,6 +492,23 @@ public final class ShapingBenchmark {
                 TimeUnit.NANOSECONDS.timedWait(this, left);
             }
             return times[0];
+        }
+
+        /** When the running total first reached {@code bytes}, waiting for it at most {@code timeoutNs}. */
+        synchronized long awaitTotal(long bytes, long timeoutNs) throws InterruptedException, IOException {
+            long deadline = System.nanoTime() + timeoutNs;
+            while (count == 0 || totals[count - 1] < bytes) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    throw new IOException("only " + (count == 0 ? 0 : totals[count - 1]) + " of " + bytes + " bytes arrived");
+                }
+                TimeUnit.NANOSECONDS.timedWait(this, left);
+            }
+            int first = count - 1;
+            while (first > 0 && totals[first - 1] >= bytes) {
+                first--;
+            }
+            return times[first];
         }
 
         /** Bytes read by {@code nowNs}: the running total of the last read at or before it. */

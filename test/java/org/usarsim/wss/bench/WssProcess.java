@@ -28,11 +28,45 @@ final class WssProcess implements AutoCloseable {
     final int controlPort;
     /** Every line the server wrote so far. */
     private final List<String> lines;
+    /** When each of {@link #lines} was read (System.nanoTime), in the same order. */
+    private final List<Long> times;
 
-    private WssProcess(Process process, int controlPort, List<String> lines) {
+    private WssProcess(Process process, int controlPort, List<String> lines, List<Long> times) {
         this.process = process;
         this.controlPort = controlPort;
         this.lines = lines;
+        this.times = times;
+    }
+
+    /** When the first line after the first {@code from} lines that contains the text was read; -1 when none yet. */
+    long lineTime(String text, int from) {
+        synchronized (lines) {
+            for (int i = from; i < lines.size(); i++) {
+                if (lines.get(i).contains(text)) {
+                    return times.get(i);
+                }
+            }
+            return -1;
+        }
+    }
+
+    /** How many lines the server wrote so far. */
+    int lineCount() {
+        synchronized (lines) {
+            return lines.size();
+        }
+    }
+
+    /** The last line the server wrote so far that contains the text; null when none does. */
+    String lastLineContaining(String text) {
+        synchronized (lines) {
+            for (int i = lines.size() - 1; i >= 0; i--) {
+                if (lines.get(i).contains(text)) {
+                    return lines.get(i);
+                }
+            }
+            return null;
+        }
     }
 
     /** How many lines the server wrote so far that contain the text. */
@@ -82,12 +116,16 @@ final class WssProcess implements AutoCloseable {
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
         List<String> all = Collections.synchronizedList(new ArrayList<>());
+        List<Long> times = new ArrayList<>();
         Thread reader = new Thread(() -> {
             try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = in.readLine()) != null) {
                     out.add(line);
-                    all.add(line);
+                    synchronized (all) {
+                        times.add(System.nanoTime());
+                        all.add(line);
+                    }
                     if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
                         System.err.println("  [wss] " + line);
                     }
@@ -104,7 +142,7 @@ final class WssProcess implements AutoCloseable {
             if (line != null) {
                 Matcher matcher = LISTENING.matcher(line);
                 if (matcher.find()) {
-                    return new WssProcess(process, Integer.parseInt(matcher.group(1)), all);
+                    return new WssProcess(process, Integer.parseInt(matcher.group(1)), all, times);
                 }
             }
             if (!process.isAlive()) {

@@ -40,9 +40,10 @@ class DistanceModelDialogTest {
     private static final PropagationModel OBSTACLE_MODEL = new ObstaclePropagationModel();
 
     /** The keys the DistanceOnly dialog shows; the Obstacle dialog adds the obstacle.* keys. */
-    private static final List<String> DISTANCE_KEYS = List.of("usarsim.host", "usarsim.port", "usarsim.interval",
-            "usarsim.timeout", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0", "distance.margin",
-            "distance.holdTime");
+    private static final List<String> DISTANCE_KEYS = List.of("positions", "positions.interval", "usarsim.host", "usarsim.port",
+            "usarsim.timeout", "rosbridge.url", "rosbridge.topic", "rosbridge.type", "rosbridge.frame", "rosbridge.names",
+            "rosbridge.stale", "rosbridge.maxMessage", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0",
+            "distance.margin", "distance.holdTime");
 
     /** Four decimals, as the fields show computed values. */
     private static final double FOUR_DECIMALS = 0.5e-4 + 1e-9;
@@ -147,6 +148,8 @@ class DistanceModelDialogTest {
         assertEquals("ObstaclePropagationModel Configuration", Gui.onEdt(dialog::getTitle));
         assertEquals("6.325", text("obstacle.attenuation"));
         assertEquals("1.0", text("obstacle.cacheDistance"));
+        assertEquals("", text("obstacle.walls"));
+        assertEquals("/map", text("rosbridge.map"));
         assertEquals(distance(-93, -49.67, 1, 2), number(DistanceModelDialog.CUTOFF_DISTANCE), FOUR_DECIMALS);
     }
 
@@ -292,7 +295,7 @@ class DistanceModelDialogTest {
         open(new ObstaclePropagationModel(), true);
         type("usarsim.host", " 192.168.1.20 ");
         type("usarsim.port", "7436");
-        type("usarsim.interval", "500");
+        type("positions.interval", "500");
         type("distance.margin", "3");
         type("distance.holdTime", "1.5");
         type("obstacle.cacheDistance", "0.5");
@@ -305,7 +308,7 @@ class DistanceModelDialogTest {
         Map<String, String> stored = preferences.load(OBSTACLE_MODEL);
         assertEquals("192.168.1.20", stored.get("usarsim.host"));
         assertEquals("7436", stored.get("usarsim.port"));
-        assertEquals("500", stored.get("usarsim.interval"));
+        assertEquals("500", stored.get("positions.interval"));
         assertEquals("3", stored.get("distance.margin"));
         assertEquals("1.5", stored.get("distance.holdTime"));
         assertEquals("0.5", stored.get("obstacle.cacheDistance"));
@@ -381,7 +384,8 @@ class DistanceModelDialogTest {
     void everyRuleIsSettingsRule() {
         open(new ObstaclePropagationModel(), true);
         String[][] refused = {
-            {"usarsim.host", "my host"}, {"usarsim.port", "0"}, {"usarsim.interval", "99"}, {"usarsim.timeout", "60001"},
+            {"usarsim.host", "my host"}, {"usarsim.port", "0"}, {"positions.interval", "99"}, {"usarsim.timeout", "60001"},
+            {"positions", "ros"}, {"rosbridge.type", "std_msgs/String"}, {"rosbridge.stale", "-1"}, {"rosbridge.maxMessage", "0"},
             {"distance.cutoff", "NaN"}, {"distance.n", "0"}, {"distance.pd0", "-49,67"}, {"distance.d0", "-2"},
             {"distance.margin", "-1"}, {"distance.holdTime", "1s"}, {"obstacle.attenuation", "-0.5"},
             {"obstacle.cacheDistance", "far"},
@@ -403,7 +407,7 @@ class DistanceModelDialogTest {
         preferences.store(OBSTACLE_MODEL, Map.of("usarsim.port", "7001"));
         open(new ObstaclePropagationModel(), false);
         List<JTextField> fields = Gui.onEdt(() -> Gui.all(dialog, JTextField.class));
-        assertEquals(DISTANCE_KEYS.size() + 3, fields.size());
+        assertEquals(DISTANCE_KEYS.size() + 5, fields.size(), "the Obstacles group's four and the cutoff distance");
         for (JTextField field : fields) {
             assertFalse(Gui.onEdt(field::isEnabled), field.getName() + " is enabled");
         }

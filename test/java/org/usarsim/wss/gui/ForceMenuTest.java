@@ -135,8 +135,8 @@ class ForceMenuTest {
             ServerSocket r2Accepts = r2.initAccepting("r2");
             int toR2 = r1.dns("r2", 0);
             int toR1 = r2.dns("r1", 0);
-            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes");
-            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes");
+            List<String> r1r2 = List.of("r1", "r2", String.valueOf(r2Accepts.getLocalPort()), String.valueOf(toR2), "yes", "DNS");
+            List<String> r2r1 = List.of("r2", "r1", String.valueOf(r1Accepts.getLocalPort()), String.valueOf(toR1), "yes", "DNS");
             waitForPorts(List.of(r1r2, r2r1));
 
             try (Socket data = r1.connect(toR2); Socket atR2 = r2Accepts.accept()) {
@@ -157,7 +157,7 @@ class ForceMenuTest {
     }
 
     private static List<String> no(List<String> portRow) {
-        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no");
+        return List.of(portRow.get(0), portRow.get(1), portRow.get(2), portRow.get(3), "no", portRow.get(5));
     }
 
     @Test

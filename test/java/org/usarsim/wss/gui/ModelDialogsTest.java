@@ -407,9 +407,26 @@ class ModelDialogsTest {
         assertEquals(List.of(DialogParts.CLOSE), buttons);
         assertEquals("7", Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.level").getText()), "the stored value");
         assertFalse(Gui.onEdt(() -> Gui.all(dialog, JTextField.class).stream().anyMatch(JTextField::isEnabled)));
+        // Issue 26, item 6: it does not look editable either: not an editable field's white.
+        assertFalse(Gui.onEdt(() -> Gui.find(dialog, JTextField.class, "tuned.level").getBackground()
+                .equals(new JTextField().getBackground())), "a read-only field's background is not an editable one's");
         click(dialog, DialogParts.CLOSE);
         assertFalse(shown.get(5, TimeUnit.SECONDS));
         assertEquals(List.of("tuned.level"), List.of(root.node("Tuned").keys()));
+    }
+
+    /** Issue 26, item 6: the replay model's recording has a Browse button, usable only while the dialog edits. */
+    @Test
+    void theReplaysRecordingHasABrowseButtonThatEditsOnlyForTheNextStart() throws Exception {
+        for (boolean editable : new boolean[] {true, false}) {
+            CompletableFuture<Boolean> shown = show(new org.usarsim.wss.replay.ReplayPropagationModel(), editable);
+            Window dialog = dialog("ReplayPropagationModel Configuration");
+            JButton browse = Gui.onEdt(() -> Gui.find(dialog, JButton.class, "replay.fileBrowse"));
+            assertEquals("Browse...", Gui.onEdt(browse::getText));
+            assertEquals(editable, Gui.onEdt(browse::isEnabled));
+            click(dialog, editable ? DialogParts.CANCEL : DialogParts.CLOSE);
+            assertFalse(shown.get(5, TimeUnit.SECONDS));
+        }
     }
 
     @Test

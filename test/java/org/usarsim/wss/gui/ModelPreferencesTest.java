@@ -52,7 +52,7 @@ class ModelPreferencesTest {
     void nothingStoredGivesTheDefaults() {
         assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
         assertEquals(Setting.defaults(OBSTACLE_MODEL.settings()), preferences.settingValues(OBSTACLE_MODEL).asMap());
-        assertEquals(12, preferences.load(OBSTACLE_MODEL).size(), "usarsim.*, distance.* and obstacle.*");
+        assertEquals(22, preferences.load(OBSTACLE_MODEL).size(), "positions.*, usarsim.*, rosbridge.*, distance.* and obstacle.*");
         assertTrue(logged.isEmpty(), "no warning for missing values: " + logged);
     }
 
@@ -61,7 +61,7 @@ class ModelPreferencesTest {
         Map<String, String> values = new LinkedHashMap<>();
         values.put("usarsim.host", "10.0.0.7");
         values.put("usarsim.port", "7000");
-        values.put("usarsim.interval", "250");
+        values.put("positions.interval", "250");
         values.put("distance.n", "3.0007");
         values.put("distance.holdTime", "1.5");
         preferences.store(DISTANCE_MODEL, values);
@@ -72,7 +72,17 @@ class ModelPreferencesTest {
         expected.putAll(values);
         assertEquals(expected, loaded);
         assertEquals(3.0007, preferences.settingValues(DISTANCE_MODEL).getDouble("distance.n", -1), 0);
-        assertEquals(250, preferences.settingValues(DISTANCE_MODEL).getInt("usarsim.interval", -1));
+        assertEquals(250, preferences.settingValues(DISTANCE_MODEL).getInt("positions.interval", -1));
+    }
+
+    @Test
+    void aValueStoredUnderTheOldNameOfItsKeyComesBackUnderTheNewOne() throws Exception {
+        root.node(DISTANCE).put("usarsim.interval", "400"); // as a WSS before positions.interval stored it
+        assertEquals("400", preferences.load(DISTANCE_MODEL).get("positions.interval"));
+        assertEquals(null, preferences.load(DISTANCE_MODEL).get("usarsim.interval"));
+        preferences.store(DISTANCE_MODEL, Map.of("usarsim.interval", "500"));
+        assertEquals("500", root.node(DISTANCE).get("positions.interval", null), "stored under the new name");
+        assertEquals("500", preferences.load(DISTANCE_MODEL).get("positions.interval"), "which wins over the old");
     }
 
     @Test
@@ -110,7 +120,7 @@ class ModelPreferencesTest {
         Map<String, String> loaded = preferences.load(DISTANCE_MODEL);
         assertEquals("1", loaded.get("distance.n"));
         assertEquals("3000", loaded.get("usarsim.port"), "a good value next to bad ones is kept");
-        assertEquals("1000", loaded.get("usarsim.interval"));
+        assertEquals("1000", loaded.get("positions.interval"), "stored under its old name, refused all the same");
 
         List<String> warnings = logged.stream().filter(r -> r.getLevel() == Level.WARNING).map(LogRecord::getMessage).toList();
         assertEquals(2, warnings.size(), warnings.toString());

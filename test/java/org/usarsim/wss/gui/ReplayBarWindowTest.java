@@ -9,6 +9,9 @@ import static org.usarsim.wss.gui.Gui.onEdt;
 import static org.usarsim.wss.gui.Gui.run;
 import static org.usarsim.wss.gui.Gui.until;
 
+import java.awt.event.InputEvent;
+import java.awt.event.KeyEvent;
+import java.awt.event.MouseEvent;
 import java.awt.event.WindowEvent;
 import java.net.ServerSocket;
 import java.util.List;
@@ -245,6 +248,38 @@ class ReplayBarWindowTest {
 
         press("start", "Start");
         assertFalse(barShows(), "the bar goes at Stop");
+    }
+
+    /** Issue 26, item 3: a click on the track jumps to where it was clicked, at once; an arrow key moves by a second. */
+    @Test
+    void aClickOnTheTrackJumpsWhereItWasClickedAndAnArrowKeyBySecond() throws Exception {
+        press("start", "Stop");
+        until("the bar shows", this::barShowing);
+        JSlider slider = component(JSlider.class, "replaySlider");
+        JLabel time = component(JLabel.class, "replayTime");
+        until("the slider laid out", () -> slider.getWidth() > 100);
+        int x = onEdt(() -> slider.getWidth() * 3 / 4);
+        int y = onEdt(() -> slider.getHeight() / 2);
+        int clicked = onEdt(() -> ((javax.swing.plaf.basic.BasicSliderUI) slider.getUI()).valueForXPosition(x));
+        assertTrue(clicked > 400_000 && clicked < 650_000, "three quarters of 12 minutes: " + clicked);
+        run(() -> {
+            long when = System.currentTimeMillis();
+            slider.dispatchEvent(new MouseEvent(slider, MouseEvent.MOUSE_PRESSED, when, InputEvent.BUTTON1_DOWN_MASK, x, y, 1, false,
+                    MouseEvent.BUTTON1));
+            slider.dispatchEvent(new MouseEvent(slider, MouseEvent.MOUSE_RELEASED, when, 0, x, y, 1, false, MouseEvent.BUTTON1));
+        });
+        assertEquals(List.of("jump " + clicked / 1000.0), model.replay.calls(), "one jump, to where it was clicked");
+        until("the label shows it", () -> time.getText().equals(ReplayBar.text(clicked / 1000.0, 720)));
+
+        run(() -> slider.dispatchEvent(new KeyEvent(slider, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0, KeyEvent.VK_RIGHT,
+                KeyEvent.CHAR_UNDEFINED)));
+        assertEquals("jump " + (clicked + 1000) / 1000.0, model.replay.calls().get(1), "the right arrow: a second on");
+        until("the label moved by a second", () -> time.getText().equals(ReplayBar.text((clicked + 1000) / 1000.0, 720)));
+        run(() -> slider.dispatchEvent(new KeyEvent(slider, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0, KeyEvent.VK_LEFT,
+                KeyEvent.CHAR_UNDEFINED)));
+        run(() -> slider.dispatchEvent(new KeyEvent(slider, KeyEvent.KEY_PRESSED, System.currentTimeMillis(), 0, KeyEvent.VK_LEFT,
+                KeyEvent.CHAR_UNDEFINED)));
+        assertEquals("jump " + (clicked - 1000) / 1000.0, model.replay.calls().get(3), "the left arrow: a second back");
     }
 
     @Test

@@ -153,6 +153,16 @@ class EventLogTest {
     }
 
     @Test
+    void aFixedUdpPortsCountsAreOneLineADirection() throws Exception {
+        CsvEventLog log = CsvEventLog.create(dir);
+        log.udpCounted("Scout", "Base", 1200, 1_680_000, 3, 2, 14);
+        log.close();
+        List<String> lines = Files.readAllLines(log.file());
+        assertEquals(1, lines.size(), lines.toString());
+        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,1200,1680000,3,2,14"), lines.get(0));
+    }
+
+    @Test
     void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
         StuckWriter writer = new StuckWriter();
         CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8);
@@ -229,10 +239,13 @@ class EventLogTest {
         String text = writer.text.toString();
         List<String> lines = List.of(text.split(System.lineSeparator()));
         assertTrue(lines.get(0).matches("REGISTERED,[\\d:.]+,\"E,1\",127\\.0\\.0\\.1,5000"), lines.get(0));
-        assertTrue(lines.get(1).matches("CON_ESTABLISHED,[\\d:.]+,\"say \"\"hi\"\"\",\"line\rend\",5000"), lines.get(1));
+        assertTrue(lines.get(1).matches("CON_ESTABLISHED,[\\d:.]+,\"say \"\"hi\"\"\",line\\\\u000Dend,5000"), lines.get(1));
         assertTrue(text.contains(",\"A\nB\",plain,UP" + System.lineSeparator()), text);
         StringBuilder plain = new StringBuilder();
         CsvEventLog.appendField(plain, "R1");
         assertEquals("R1", plain.toString(), "a name that needs nothing is written as it is");
+        StringBuilder obeyed = new StringBuilder();
+        CsvEventLog.appendField(obeyed, "E\u001B[2J\u202Eevil\u0085");
+        assertEquals("E\\u001B[2J\\u202Eevil\\u0085", obeyed.toString(), "ESC, a bidi override and C1 escaped as in the log");
     }
 }

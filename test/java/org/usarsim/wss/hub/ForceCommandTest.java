@@ -108,8 +108,8 @@ class ForceCommandTest {
     @Test
     void wssOperatorsNamesWhoMayForce() throws Exception {
         HubConfig base = TestHub.config(true, 65536, 600, 1000, 30);
-        HubConfig config = new HubConfig(base.bindAddress(), 0, base.chunkSize(), base.socketBuffer(), true, 600, 1000, 30,
-                Set.of(InetAddress.getByName("127.0.0.2")), Map.of());
+        HubConfig config = new HubConfig(base.bindAddress(), 0, base.chunkSize(), base.socketBuffer(), true, 600, 1000,
+                base.maxPortsPerAddress(), 30, Set.of(InetAddress.getByName("127.0.0.2")), Map.of(), Map.of(), base.shaping(), base.fixed());
         try (TestHub other = new TestHub(new ScriptedModel(), config); TestRobot local = other.robotAt("127.0.0.1");
                 TestRobot second = other.robotAt("127.0.0.2")) {
             assertEquals("ERROR {Reason Not.An.Operator.Address}", local.ask("FORCE {Robot A} {Peer B} {State Down}"),

@@ -310,8 +310,9 @@ class ForceTest {
     @Test
     void pairsForcedInTheConfigurationAreForcedFromTheStart() throws Exception {
         HubConfig config = TestHub.config(true, 65536, 600, 1000, 30);
-        config = new HubConfig(config.bindAddress(), 0, config.chunkSize(), config.socketBuffer(), true, 600, 1000, 30,
-                Set.of(), Map.of(RobotPair.of("A", "B"), Force.DOWN, RobotPair.of("A", "C"), Force.UP));
+        config = new HubConfig(config.bindAddress(), 0, config.chunkSize(), config.socketBuffer(), true, 600, 1000,
+                config.maxPortsPerAddress(), 30, Set.of(), Map.of(RobotPair.of("A", "B"), Force.DOWN, RobotPair.of("A", "C"), Force.UP),
+                Map.of(), config.shaping(), config.fixed());
         ScriptedModel forbidding = new ScriptedModel();
         forbidding.allowBoth("A", "C", false);
         try (TestHub forced = new TestHub(forbidding, config); TestRobot a = forced.robot(); TestRobot b = forced.robot();

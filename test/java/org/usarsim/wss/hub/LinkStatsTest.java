@@ -181,6 +181,8 @@ class LinkStatsTest {
         connectAToB(robotsAAndB(), 1);
         links.kickOutRobot("B");
         Wait.until("the link closed by the kick", () -> "kicked".equals(pair().lastClose()));
+        assertEquals(PairState.GONE, pair().state(), "a kicked robot's pairs are not up (issue 26, item 4)");
+        assertEquals("gone", pair().state().text());
     }
 
     @Test
@@ -306,6 +308,26 @@ class LinkStatsTest {
             assertEquals(PairState.UP, pair().state(), pair().toString());
             assertEquals(1, log.count(Level.INFO, "pair A - B: up"), log.toString());
         }
+    }
+
+    @Test
+    void aPairIsNotUpWhileOneOfItsRobotsIsGone() throws Exception {
+        start(600);
+        a = robot("127.0.0.1");
+        TestRobot b = robot("127.0.0.2");
+        a.init("A");
+        b.initAccepting("B");
+        toB = a.dns("B", 0);
+        assertEquals(1.0, pair().upShare(), 1e-9);
+        b.close();
+        Wait.until("B gone", () -> server.hub.snapshot().robots().size() == 1);
+        Wait.until("the time B is gone is not time up", () -> pair().upShare() < 0.5);
+        assertEquals(PairState.GONE, pair().state(), "shown gone, not up, while B is not registered (issue 26)");
+        TestRobot back = robot("127.0.0.2");
+        back.initAccepting("B");
+        double whenBack = pair().upShare();
+        Wait.until("up again once B is back", () -> pair().upShare() > whenBack);
+        assertEquals(PairState.UP, pair().state(), "the model did not break the pair: up again with B back");
     }
 
     /** Robot A, and robot B accepting on one port; returns B's accepting socket and sets {@link #a} and {@link #toB}. */

@@ -57,7 +57,9 @@ class PortDescriptorsTest {
             long expected = descriptorsBefore + 3L * ROBOTS + ports;
             assertEquals(expected, Wait.settle("the descriptors of the mesh", Sockets::openDescriptors, n -> n == expected),
                     "one descriptor per listening port (" + ports + " ports, " + ROBOTS + " robots)");
-            assertTrue(Thread.activeCount() <= threadsBefore + ROBOTS, "a thread per control connection, none per port: "
+            // A thread per control connection, and the warnings' summary thread: the 132 "allocated" lines
+            // from one address are over the INFO limit (docs/reliability.md); none per port.
+            assertTrue(Thread.activeCount() <= threadsBefore + ROBOTS + 1, "a thread per control connection, none per port: "
                     + threadsBefore + " threads before, " + Thread.activeCount() + " with " + ports + " ports listening");
             for (int j = 1; j < ROBOTS; j++) {
                 assertEquals(1, Sockets.listeningSockets(numbers[j][0]), "one listening socket on R" + j + " -> R0");

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
-import java.lang.management.ManagementFactory;
 import java.net.BindException;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
@@ -120,7 +119,9 @@ class PortMemoryTest {
         assertTrue(peak >= descriptors + held,
                 "at least one descriptor per gone robot not yet forgotten (" + held + "): " + descriptors + " -> " + peak);
 
-        Wait.until("every churned robot's ports are forgotten", () -> log.count(Level.INFO, "forgot 2 WSS ports of churn") == 200);
+        // The hub's snapshot, not the log: the "forgot" lines are limited per kind (docs/reliability.md).
+        Wait.until("every churned robot's ports are forgotten", () -> server.hub.snapshot().ports().stream()
+                .noneMatch(port -> port.from().startsWith("churn") || port.to().startsWith("churn")));
         // At most the starting level (other tests' leftovers may end meanwhile, never ours start).
         long descriptorsAfter = Wait.settle("descriptors back", PortMemoryTest::descriptors, n -> n <= descriptors);
         assertTrue(descriptorsAfter <= descriptors, "descriptors: " + descriptors + " -> " + peak + " -> " + descriptorsAfter);
@@ -199,7 +200,12 @@ class PortMemoryTest {
         }
     }
 
+    /**
+     * The JVM's threads but the warnings' summary thread: the churn's "allocated" and "forgot" lines
+     * are over the INFO limit, and that thread lives until their summary is written, a minute later
+     * (docs/reliability.md); it is one thread whatever the churn, not one the churn leaves behind.
+     */
     private static long threads() {
-        return ManagementFactory.getThreadMXBean().getThreadCount();
+        return Thread.getAllStackTraces().keySet().stream().filter(thread -> !thread.getName().equals("wss-warnings")).count();
     }
 }

@@ -18,6 +18,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
@@ -112,6 +113,11 @@ class ShapedLinkTest {
             long asked = model.strengthsAsked();
             Wait.until("the sampler polled a few more times", () -> model.strengthsAsked() >= asked + 10);
             assertEquals(3, rates.size(), "said once per change, never per poll: " + rates);
+
+            model.links().breakConnectionsForPair("R1", "R2"); // issue 26, item 5: a broken pair shows no rate
+            HubSnapshot.PairEntry broken = server.hub.snapshot().pairs().get(0);
+            assertEquals(List.of(PairState.BROKEN, 0L, 0L), List.of(broken.state(), broken.linkRateFirstToSecond(),
+                    broken.linkRateSecondToFirst()), broken.toString());
         }
     }
 

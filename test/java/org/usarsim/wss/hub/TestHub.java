@@ -2,8 +2,11 @@ package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
 import java.net.UnknownHostException;
+import java.util.Map;
+import java.util.Set;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /** A hub on 127.0.0.1 with an OS-chosen control port, for one test. */
 public final class TestHub implements AutoCloseable {
@@ -26,8 +29,9 @@ public final class TestHub implements AutoCloseable {
     /** The test configuration: 127.0.0.1, an OS-chosen control port, 4 MiB link buffers. */
     public static HubConfig config(boolean matchSourceAddress, int chunkSize, int portMemorySeconds, int maxPortsPerRobot,
             int deadPeerSeconds) throws UnknownHostException {
-        return new HubConfig(InetAddress.getByName("127.0.0.1"), 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress,
-                portMemorySeconds, maxPortsPerRobot, deadPeerSeconds);
+        InetAddress local = InetAddress.getByName("127.0.0.1");
+        return new HubConfig(local, 0, chunkSize, 4 * 1024 * 1024, matchSourceAddress, portMemorySeconds, maxPortsPerRobot,
+                HubConfig.MAX_PORTS_PER_ADDRESS, deadPeerSeconds, Set.of(local), Map.of(), Map.of(), ShapingConfig.OFF, FixedSetup.NONE);
     }
 
     public int port() {

@@ -56,6 +56,18 @@ class ArgumentsTest {
     }
 
     @Test
+    void robotNameOfAtMost256Characters() throws Exception {
+        String longest = "R".repeat(Arguments.MAX_NAME);
+        assertEquals(longest, Arguments.robot(parse("INIT {Robot " + longest + "} {Port 5000}")));
+        assertEquals(Replies.NAME_TOO_LONG, reason(() -> Arguments.robot(parse("INIT {Robot " + longest + "x} {Port 5000}"))));
+        assertEquals(Replies.NAME_TOO_LONG, reason(() -> Arguments.robot(parse("GETSS {Robot " + "N".repeat(60_000) + "}"))));
+        assertEquals(Replies.PEER_NAME_TOO_LONG,
+                reason(() -> Arguments.peer(parse("FORCE {Robot A} {Peer " + longest + "P} {State Up}"))));
+        assertEquals(Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE, reason(() -> Arguments.robot(parse("GETSS {Robot R " + longest + "}"))),
+                "whitespace is checked first, as the reasons' order says");
+    }
+
+    @Test
     void robotNameLastOfDuplicates() throws Exception {
         assertEquals("B", Arguments.robot(parse("GETSS {Robot A} {Robot B}")));
         assertEquals("Q3", Arguments.robot(parse("INIT {Robot Q2} {Robot Q3} {Port 5000}")));

@@ -57,7 +57,7 @@ class RepliesTest {
             Replies.COULD_NOT_ALLOCATE_PORT, Replies.LINE_TOO_LONG, Replies.MALFORMED_NO_COMMAND,
             Replies.MALFORMED_TEXT_OUTSIDE_BRACES, Replies.MALFORMED_UNCLOSED_BRACE,
             Replies.MALFORMED_NESTED_BRACE, Replies.MALFORMED_EMPTY_SEGMENT,
-            Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE})
+            Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE, Replies.NAME_TOO_LONG, Replies.PEER_NAME_TOO_LONG})
     void everyReasonIsOneTokenWithoutWhitespaceOrBraces(String reason) {
         assertEquals(reason.strip(), reason);
         assertEquals(-1, indexOfAny(reason, " \t\r\n{}"), reason);

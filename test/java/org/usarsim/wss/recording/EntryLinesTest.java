@@ -46,6 +46,7 @@ class EntryLinesTest {
                 new Entry.Force(701, "Alpha", "B c", false),
                 new Entry.Release(800, "Alpha", "B c"),
                 new Entry.Rate(900, "Alpha", "B c", 54_000_000),
+                new Entry.Udp(920, "B c", "Alpha", 1200, 1_680_000, 3, 2, 14),
                 new Entry.Dropped(950, 12),
                 new Entry.Left(1000, "Alpha"),
                 new Entry.End(1001));

@@ -97,6 +97,14 @@ class RecorderTest {
                 List.of(new ModelPoll.Pair("Alpha", "Bravo", -67.2345, 2, true)), walls);
     }
 
+    /** Issue 26, item 7: the window's Record path is said as a plain path, not /some/dir/./run-....rec. */
+    @Test
+    void aRunFileInTheCurrentFolderIsNamedWithoutADot() {
+        Path file = Recorder.runFileIn(Path.of("/some/dir/."));
+        assertEquals(Path.of("/some/dir"), file.getParent());
+        assertTrue(file.getFileName().toString().matches("run-\\d{4}\\.\\d{2}\\.\\d{2}-\\d{2}\\.\\d{2}\\.\\d{2}\\.\\d{3}\\.rec"), file.toString());
+    }
+
     @Test
     void writesTheHeaderAndEveryEntryAtItsTimeFromTheStart() throws Exception {
         Path file = dir.resolve("run.rec");

@@ -18,9 +18,20 @@ final class FakeLinks implements RobotLinkModel {
     private final Set<RobotPair> broken = new HashSet<>();
     private final List<String> kicked = new ArrayList<>();
     private final List<Map<RobotPair, Boolean>> applied = new ArrayList<>();
+    /** Robots that register just after the next answer of {@link #getListOfRegisteredRobots}; none when empty. */
+    private List<String> registerAfterNextList = List.of();
 
     synchronized void register(String... robots) {
         registered.addAll(List.of(robots));
+    }
+
+    /**
+     * Registers {@code now}, and {@code next} just after the server next answers which robots are
+     * registered: a robot that registers while the model acts on the list that has {@code now}.
+     */
+    synchronized void registerThenAnother(String now, String next) {
+        registered.add(now);
+        registerAfterNextList = List.of(next);
     }
 
     synchronized List<String> kicked() {
@@ -66,6 +77,9 @@ final class FakeLinks implements RobotLinkModel {
 
     @Override
     public synchronized List<String> getListOfRegisteredRobots() {
-        return List.copyOf(registered);
+        List<String> answer = List.copyOf(registered);
+        registered.addAll(registerAfterNextList);
+        registerAfterNextList = List.of();
+        return answer;
     }
 }

@@ -283,6 +283,53 @@ class ReplayModelTest {
         assertEquals(List.of("Stranger"), links.kicked());
     }
 
+    /**
+     * Issue 26, item 10: a robot that registers while the replay applies a poll (between its look
+     * at the registered robots and the poll's end) was counted as applied without being checked,
+     * and a replay holding still at its end never looked at it again.
+     */
+    @Test
+    void aRobotThatRegistersWhileAPollIsAppliedIsKickedAtTheEnd() throws Exception {
+        links.register("Alpha", "Bravo");
+        started(new Recordings().robot("Alpha", 0, 0, false).robot("Bravo", 10, 0, false)
+                .pair("Alpha", "Bravo", -67, true).poll(100).write(dir.resolve("short.rec"), 150));
+        after(1_000);
+        Wait.until("the end said", () -> log.count(Level.INFO, "the replay reached its end at 00:00") == 1);
+        awaitAlphaBravo(-67);
+        links.registerThenAnother("Zed", "Stranger"); // the stranger registers while the replay kicks Zed
+        Wait.until("the stranger kicked", () -> links.kicked().contains("Stranger"));
+        assertEquals(List.of("Zed", "Stranger"), links.kicked());
+        assertEquals(1, log.count(Level.INFO, "kicking Stranger: the recording does not list it at 00:00"), log.toString());
+    }
+
+    /**
+     * Issue 26, item 4: the recorded robots left before the recording's end (its last polls list
+     * them without pair rows); a replay at its end keeps each pair's last recorded state.
+     */
+    @Test
+    void atTheEndAPairTheLastPollsHaveNoRowForKeepsItsLastRecordedState() throws Exception {
+        links.register("Alpha", "Bravo", "Charlie");
+        started(new Recordings()
+                .robot("Alpha", 0, 0, false).robot("Bravo", 50, 0, false).robot("Charlie", 20, 0, false)
+                .pair("Alpha", "Bravo", -95, false).pair("Alpha", "Charlie", -80, true).pair("Bravo", "Charlie", -90, true)
+                .poll(200)
+                .robot("Alpha", 0, 0, false).robot("Bravo", 50, 0, false).robot("Charlie", 20, 0, false)
+                .pair("Alpha", "Charlie", -81, true)
+                .poll(400)
+                .robot("Alpha", 0, 0, false).robot("Bravo", 50, 0, false).robot("Charlie", 20, 0, false)
+                .poll(600)
+                .write(dir.resolve("left.rec"), 700), "replay.start", "0.7");
+        awaitAlphaBravo(-95);
+        assertEquals(-81, model.getSignalStrengthForPair("Charlie", "Alpha"), "the last row, not an older one");
+        assertEquals(-90, model.getSignalStrengthForPair("Bravo", "Charlie"));
+        assertFalse(model.connectionIsPossibleForPair("Alpha", "Bravo"));
+        Wait.until("the states applied", () -> links.isBroken("Alpha", "Bravo"));
+        assertFalse(links.isBroken("Alpha", "Charlie"));
+        ModelPoll last = polls.get(polls.size() - 1);
+        assertEquals(List.of(new ModelPoll.Pair("Alpha", "Bravo", -95, 0, false), new ModelPoll.Pair("Alpha", "Charlie", -81, 0, true),
+                new ModelPoll.Pair("Bravo", "Charlie", -90, 0, true)), last.pairs());
+    }
+
     @Test
     void aRecordingCutShortIsReplayedWithOneWarning() throws Exception {
         Path file = dir.resolve("crashed.rec");
@@ -340,7 +387,7 @@ class ReplayModelTest {
         messages.add(refused(""));
         assertTrue(messages.get(0).contains("hello.txt is not a WSS recording"), messages.get(0));
         assertTrue(messages.get(1).contains("v2.rec is a recording of format version 2; this WSS reads version 1"), messages.get(1));
-        assertTrue(messages.get(2).contains("empty.rec is not a WSS recording"), messages.get(2));
+        assertTrue(messages.get(2).endsWith("empty.rec is empty: not a WSS recording (one starts with WSS-RECORDING 1)"), messages.get(2));
         assertTrue(messages.get(3).contains("nopolls.rec holds no poll (recorded with ObstaclePropagationModel): nothing to replay"),
                 messages.get(3));
         assertTrue(messages.get(4).contains("missing.rec: no such file"), messages.get(4));

@@ -68,7 +68,8 @@ class ReplayOverSocketsTest {
             connection.assertPasses("as recorded at 00:00.2");
 
             now.addAndGet(400 * MS);
-            assertEquals(-1, connection.source().getInputStream().read(), "the connection closed by the recorded break");
+            assertThrows(IOException.class, () -> connection.source().getInputStream().read(),
+                    "the connection cut (reset, as a break resets: docs/protocol.md 4.3) by the recorded break");
             assertTrue(refuses(alpha, port), "the port refuses while the recording breaks the pair");
             assertEquals(Replies.signal("Bravo", -95.5), alpha.ask("GETSS {Robot Bravo}"));
             assertEquals(port, alpha.dns("Bravo", 0), "its number kept");

@@ -37,7 +37,7 @@ class ShapedFlowTest {
     @Test
     void aChunkIsDueAfterTheDelayAndItsTimeOnTheAir() throws IOException {
         long start = -1_000_000_000_000L; // nanoTime may be negative
-        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", start), 1_000_000, 50, CHUNK);
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", start), 1_000_000, 50, ShapingConfig.DEFAULT_QUEUE_MS);
         flow.accept(ByteBuffer.wrap(new byte[64]), start);
         long due = start + 50 * MS + 512_000; // 64 x 8 / 1 Mbit/s = 512 us
         assertEquals(0, flow.due(start));
@@ -71,6 +71,58 @@ class ShapedFlowTest {
     }
 
     @Test
+    void aLinkAtAnyRateFrom1BitPerSecondTakesHalfTheRadioBeside54MbitPerSecond() {
+        long fast = 54_000_000;
+        for (long slow : new long[] {1, 100, 1_000, 4_000, 64_000, 1_000_000, fast}) {
+            long seconds = slow < 100 ? 400 : 20; // at 1 bit/s half the airtime is a byte every 16 s
+            SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+            Lane pinned = links.add("A", "B", slow, 2, CHUNK, SimulatedLinks.endless());
+            Lane near = links.add("A", "C", fast, 2, CHUNK, SimulatedLinks.endless());
+            links.runFor(seconds * SECOND);
+            double pinnedShare = pinned.delivered * 8.0 / slow / seconds;
+            double nearShare = near.delivered * 8.0 / fast / seconds;
+            String at = Bitrate.format(slow) + " beside 54 Mbit/s";
+            assertEquals(0.5, pinnedShare, 0.05, at + ": the pinned link's airtime");
+            assertEquals(0.5, nearShare, 0.05, at + ": the 54 Mbit/s link's airtime");
+            assertEquals(1, links.airtime.inUse("A", links.now), 0.03, at + ": A's airtime in use");
+        }
+    }
+
+    @Test
+    void aByteAt1BitPerSecondIsCarriedOverManyGrantsAndIsNeverEarly() {
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
+        Lane lane = links.add("A", "B", 1, 2, CHUNK, SimulatedLinks.finite(1));
+        links.runUntil(8 * SECOND + 2 * MS - 1);
+        assertEquals(0, lane.delivered, "8 s on the air and 2 ms of delay are not over");
+        links.runUntil(8 * SECOND + 2 * MS);
+        assertEquals(1, lane.delivered);
+    }
+
+    @Test
+    void aRateRaisedReachesTheLinkWithinItsTurnAndTheDelay() {
+        long fast = 54_000_000;
+        int delayMs = 2;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        Lane pinned = links.add("A", "B", 1, delayMs, CHUNK, SimulatedLinks.endless());
+        Lane near = links.add("A", "C", fast, delayMs, CHUNK, SimulatedLinks.endless());
+        links.runFor(10 * SECOND);
+        long before = pinned.delivered;
+        long raisedAt = links.now;
+        pinned.flow.setConditions(fast, delayMs);
+        // The grant on the air keeps its rate (one quantum at most), the other link has its turn (one
+        // quantum), then the raised link's next grant is at 54 Mbit/s: its bytes arrive after it and the delay.
+        long waiting = pinned.flow.held();
+        links.runUntil(raisedAt + 2 * Airtime.QUANTUM_NS + delayMs * MS);
+        assertTrue(pinned.delivered - before >= waiting, "the " + waiting + " bytes that waited at 1 bit/s arrive within "
+                + "two quanta and the delay: " + (pinned.delivered - before) + " bytes");
+        long nearBefore = near.delivered;
+        long pinnedBefore = pinned.delivered;
+        links.runFor(10 * SECOND);
+        assertEquals(0.5, (pinned.delivered - pinnedBefore) * 8.0 / fast / 10, 0.05, "then half the airtime each");
+        assertEquals(0.5, (near.delivered - nearBefore) * 8.0 / fast / 10, 0.05);
+    }
+
+    @Test
     void aRelayThatReceivesAndSendsAgainHalvesTheGoodput() {
         long rate = 11_000_000;
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
@@ -100,26 +152,40 @@ class ShapedFlowTest {
     @Test
     void aRateChangeReachesTheBytesStillWaiting() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
-        long capacity = ShapedFlow.capacity(1_000_000, 0, CHUNK);
-        assertEquals(5096, capacity, "1 Mbit/s x 8 ms / 8 + a chunk");
+        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 100 ms / 8");
+        long capacity = 5096;
         Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
         lane.flow.setConditions(8_000_000, 0);
-        // Four grants of 250 bytes were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked
-        // ahead); the 4096 bytes still waiting go at 8 Mbit/s: 4.096 ms more. At 1 Mbit/s they
-        // would take 32.8.
-        links.runUntil(12_096_000 - 1);
-        assertTrue(lane.delivered < capacity);
-        links.runUntil(12_096_000);
+        // Four grants of 2 ms were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked ahead). The
+        // one on the air keeps its rate (250 bytes); the three not begun carry 2,000 bytes each at
+        // 8 Mbit/s: the 4,846 bytes left are all on the air by 8 ms. At 1 Mbit/s they would take 38.8.
+        links.runUntil(8 * MS - 1);
+        assertEquals(250 + 2 * 2000, lane.delivered);
+        links.runUntil(8 * MS);
         assertEquals(capacity, lane.delivered);
         assertEquals(lane.sent.getValue(), lane.got.getValue());
     }
 
     @Test
+    void aDirectionHoldsItsDelayAndItsQueueAtItsRateAndNoMore() {
+        for (long rate : new long[] {1_000_000, 6_000_000, 24_000_000}) {
+            SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+            Lane lane = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
+            links.runFor(2 * SECOND);
+            long most = Bitrate.bytesIn((2 + ShapingConfig.DEFAULT_QUEUE_MS) * MS, rate);
+            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and 100 ms at the rate, the default queue");
+            assertEquals(rate * 2 / 8.0, lane.delivered, rate * 2 / 8.0 / 100, Bitrate.format(rate) + ": and the rate is kept");
+        }
+        assertEquals(ShapedFlow.MIN_HELD, ShapedFlow.capacity(1, 2, ShapingConfig.DEFAULT_QUEUE_MS), "a frame at least");
+        assertThrows(IllegalArgumentException.class, () -> new ShapedFlow(Airtime.shared().open("A", "B", 0), 1, 2, 9));
+    }
+
+    @Test
     void aThreadThatWakesLateLosesNoRateItsGrantsAreBookedAhead() throws Exception {
         long rate = 24_000_000;
-        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", 0), rate, 2, CHUNK);
+        ShapedFlow flow = new ShapedFlow(Airtime.shared().open("A", "B", 0), rate, 2, ShapingConfig.DEFAULT_QUEUE_MS);
         Sink target = new Sink();
         long now = 0;
         long late = 3 * MS; // a busy machine: every wake-up 3 ms after it was due
@@ -159,13 +225,13 @@ class ShapedFlowTest {
     void aDirectionNeverHoldsMoreThanItsCapacity() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
         Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
-        assertEquals(6_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity(), "rate x (delay + 4 quanta) / 8 + a chunk");
+        assertEquals(6_000_000 * 200 / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
         links.runFor(2 * SECOND);
         assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
         assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
 
         lane.flow.setConditions(1_000_000, 100);
-        assertEquals(1_000_000 * 108 / 1000 / 8 + CHUNK, lane.flow.capacity());
+        assertEquals(1_000_000 * 200 / 1000 / 8, lane.flow.capacity());
         assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
         assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
         lane.mostHeld = 0;

@@ -13,6 +13,17 @@ import org.junit.jupiter.api.Test;
 class ShapingConfigTest {
 
     @Test
+    void theQueueIs100MsByDefaultAndFrom10To10000Ms() {
+        assertEquals(100, ShapingConfig.from(Map.of()).queueMs());
+        assertEquals(250, ShapingConfig.from(Map.of(ShapingConfig.QUEUE_MS, " 250 ")).queueMs());
+        for (String bad : new String[] {"9", "10001", "soon", ""}) {
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                    () -> ShapingConfig.from(Map.of(ShapingConfig.QUEUE_MS, bad)));
+            assertTrue(e.getMessage().startsWith("wss.shaping.queueMs: "), e.getMessage());
+        }
+    }
+
+    @Test
     void withNothingGivenShapingIsOff() {
         ShapingConfig config = ShapingConfig.from(Map.of("wss.chunkSize", "4096"));
         assertEquals(ShapingConfig.OFF, config);

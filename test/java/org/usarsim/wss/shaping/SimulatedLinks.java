@@ -122,7 +122,7 @@ final class SimulatedLinks {
 
     /** As {@link #add}, reading chunks of random sizes from 1 to {@code chunkSize} with {@code sizes}. */
     Lane add(String from, String to, long bitsPerSecond, int delayMs, int chunkSize, Source source, Random sizes) {
-        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, chunkSize);
+        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, ShapingConfig.DEFAULT_QUEUE_MS);
         Lane lane = new Lane(flow, source, chunkSize, sizes);
         lanes.add(lane);
         return lane;

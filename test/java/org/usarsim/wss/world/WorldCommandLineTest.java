@@ -44,15 +44,17 @@ class WorldCommandLineTest {
 
     @ParameterizedTest(name = "[{index}] {0}")
     @CsvSource(delimiter = '|', value = {
-        "--port 7435                                      | --port and --bind are for the world server",
-        "--bind 127.0.0.1                                 | --port and --bind are for the world server",
-        "--headless --port 0                              | --port and --bind are for the world server",
+        "--port 7435                                      | --port, --bind and --rosbridge are for the world server",
+        "--bind 127.0.0.1                                 | --port, --bind and --rosbridge are for the world server",
+        "--headless --port 0                              | --port, --bind and --rosbridge are for the world server",
         "--world " + CORRIDOR + " --headless              | without --headless or --config",
         "--world " + CORRIDOR + " --port 65536            | --port 65536 is not a port number from 0 to 65535",
         "--world " + CORRIDOR + " --port seven            | --port seven is not a port number",
         "--world " + CORRIDOR + " --bind no.such.host.invalid | --bind no.such.host.invalid is not an address",
         "--world                                          | --world needs a value",
         "--world " + CORRIDOR + " --port                  | --port needs a value",
+        "--rosbridge 9090                                 | --port, --bind and --rosbridge are for the world server",
+        "--world " + CORRIDOR + " --rosbridge 70000       | --rosbridge 70000 is not a port number from 0 to 65535",
     })
     void commandLineMistakesExitTwo(String args, String message) throws Exception {
         MainRun server = MainRun.of(args.strip().split(" +"));

@@ -161,7 +161,8 @@ class WorldExportTest {
         assertTrue(run.stderr().startsWith("wss: --export-world needs a file"), run.stderr());
         run = MainRun.of("--export-world", rec.toString(), "--out", dir.resolve("no/such/dir/x.world").toString());
         assertEquals(2, run.exitCode());
-        assertTrue(run.stderr().startsWith("wss: cannot write the world file "), run.stderr());
+        assertEquals("wss: cannot write the world file " + dir.resolve("no/such/dir/x.world") + ": its folder "
+                + dir.resolve("no/such/dir").toAbsolutePath() + " does not exist", run.stderr().strip(), "one clear line (issue 26, item 7)");
 
         run = MainRun.of("--help");
         assertTrue(run.stdoutLines().stream().anyMatch(line -> line.startsWith("  --export-world RUN.rec")), "--help lists it");

@@ -2,6 +2,7 @@ package org.usarsim.wss.world;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.usarsim.wss.hub.Sockets.readLine;
@@ -12,9 +13,15 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.WebSocket;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -23,6 +30,9 @@ import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.usarsim.wss.app.ServerProcess;
+import org.usarsim.wss.ros.MessageType;
+import org.usarsim.wss.ros.PoseDecoder;
+import org.usarsim.wss.ros.RobotPose;
 
 /** {@code Main --world FILE --bind 127.0.0.1 --port 0} as a user runs it, in a child process; its mistakes: WorldCommandLineTest. */
 @Timeout(value = 60, unit = TimeUnit.SECONDS)
@@ -33,6 +43,9 @@ class WorldProcessTest {
     private static final Pattern LISTENING = Pattern.compile(
             "^\\d{4}-\\d\\d-\\d\\d \\d\\d:\\d\\d:\\d\\d\\.\\d{3} INFO world server listening on 127\\.0\\.0\\.1:(\\d+)"
             + " with 2 robots and 4 walls from " + Pattern.quote(CORRIDOR) + "$");
+
+    private static final Pattern ROSBRIDGE = Pattern.compile(
+            "^\\d{4}-\\d\\d-\\d\\d \\d\\d:\\d\\d:\\d\\d\\.\\d{3} INFO rosbridge v2 on ws://127\\.0\\.0\\.1:(\\d+): .*$");
 
     private final List<ServerProcess> servers = new ArrayList<>();
     private final List<AutoCloseable> closeables = new ArrayList<>();
@@ -94,6 +107,51 @@ class WorldProcessTest {
         assertFalse(error.contains("\n"), "one line: " + error);
         assertTrue(error.startsWith("wss: cannot listen on 127.0.0.1:" + taken.getLocalPort() + ": "), error);
         assertTrue(error.toLowerCase().contains("in use"), "says why: " + error);
+    }
+
+    @Test
+    void rosbridgeServesTheSameWorldAndStopsBeforeIt() throws Exception {
+        ServerProcess server = start("--world", CORRIDOR, "--bind", "127.0.0.1", "--port", "0", "--rosbridge", "0");
+        awaitPort(server);
+        Matcher line = ROSBRIDGE.matcher(server.awaitLine(text -> ROSBRIDGE.matcher(text).matches()));
+        assertTrue(line.matches());
+        BlockingQueue<String> texts = new LinkedBlockingQueue<>();
+        WebSocket socket = HttpClient.newHttpClient().newWebSocketBuilder()
+                .buildAsync(URI.create("ws://127.0.0.1:" + line.group(1) + "/"), new WebSocket.Listener() {
+                    private final StringBuilder part = new StringBuilder();
+
+                    @Override
+                    public CompletionStage<?> onText(WebSocket webSocket, CharSequence data, boolean last) {
+                        part.append(data);
+                        if (last) {
+                            texts.add(part.toString());
+                            part.setLength(0);
+                        }
+                        webSocket.request(1);
+                        return null;
+                    }
+                }).join();
+        closeables.add(socket::abort);
+        socket.sendText("{\"op\":\"subscribe\",\"topic\":\"/gazebo/model_states\",\"throttle_rate\":200}", true).join();
+        String frame = texts.poll(ServerProcess.WAIT.toMillis(), TimeUnit.MILLISECONDS);
+        assertNotNull(frame, "a model_states message");
+        List<RobotPose> poses = new PoseDecoder(MessageType.MODEL_STATES).decode(frame);
+        assertEquals(List.of("Base", "Scout"), poses.stream().map(RobotPose::name).toList());
+        assertEquals(new RobotPose("Base", 0, 0, 0.45, RobotPose.NO_STAMP), poses.get(0));
+        server.sigterm();
+        assertEquals(0, server.awaitExit(), "exit code after SIGTERM; stderr: " + server.stderr());
+        List<String> log = server.stdoutSoFar();
+        int rosbridgeStopped = indexOf(log, " INFO rosbridge stopped");
+        assertTrue(rosbridgeStopped >= 0 && rosbridgeStopped < indexOf(log, " INFO world server stopped"), log.toString());
+    }
+
+    private static int indexOf(List<String> lines, String end) {
+        for (int i = 0; i < lines.size(); i++) {
+            if (lines.get(i).endsWith(end)) {
+                return i;
+            }
+        }
+        return -1;
     }
 
     // ---- helpers ----

@@ -12,6 +12,7 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.Collection;
 import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -22,6 +23,8 @@ import java.util.Set;
 import java.util.function.Function;
 import java.util.logging.Level;
 import org.usarsim.wss.LogText;
+import org.usarsim.wss.hub.FixedSetup;
+import org.usarsim.wss.hub.core.FixedPort;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
@@ -29,6 +32,7 @@ import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.shaping.LossTable;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
 import org.usarsim.wss.model.ModelSettings;
@@ -47,7 +51,9 @@ public final class ConfigFile {
 
     /** The link shaping keys, read together by ShapingConfig. */
     private static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
-            ShapingConfig.AIRTIME);
+            ShapingConfig.AIRTIME, ShapingConfig.QUEUE_MS);
+    /** What wss.shaping.loss takes, in words. */
+    private static final String LOSS_WORDS = "rows dBm:percent from the strongest signal to the weakest (-85:1,-87:10,-90:50)";
     /** What wss.shaping.rates takes, in words. */
     private static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
@@ -103,6 +109,19 @@ public final class ConfigFile {
                     .help("Bytes reach the target no sooner than this after the WSS read them, plus their time on the air"),
             Setting.bool(ShapingConfig.AIRTIME, "Shared airtime", true)
                     .help("A robot's radio is one channel all its links share, by time"),
+            Setting.integer(ShapingConfig.QUEUE_MS, "Queue", ShapingConfig.DEFAULT_QUEUE_MS)
+                    .from(ShapingConfig.MIN_QUEUE_MS).to(ShapingConfig.MAX_QUEUE_MS).unit("ms")
+                    .help("The most a shaped link holds each way beyond its delay, in time at its rate (a radio's queue)"),
+            Setting.text(ShapingConfig.LOSS, "Loss by strength", LossTable.DEFAULT.toString()).orEmpty("no loss")
+                    .noun(LOSS_WORDS)
+                    .help("With links shaped, a UDP datagram of a pair whose strength is at or below a row's dBm is lost with"
+                            + " that row's percent, the last such row counting (docs/shaping.md); TCP is never dropped"),
+            Setting.text(FixedPorts.KEY, "Fixed ports", "").orEmpty("none").noun(FixedPort.WORDS)
+                    .help("WSS ports made at Start and kept, between robots declared with wss.robot.NAME = ADDRESS"
+                            + " (default address 127.0.0.1; docs/fixed-ports.md)"),
+            Setting.integer(FixedPorts.UDP_IDLE, "UDP session expiry", FixedSetup.DEFAULT_UDP_IDLE_SECONDS).from(1).to(86400).unit("s")
+                    .help("A fixed UDP port forgets a sender (and closes its socket toward the target) after this long without"
+                            + " a datagram either way"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
                     .help("How much the log says; FINE adds every control command and its reply"));
 
@@ -164,12 +183,20 @@ public final class ConfigFile {
         for (String key : keys) {
             if (rules.containsKey(key)) {
                 values.put(key, checked(rules.get(key), properties.getProperty(key), source));
+            } else if (key.startsWith(FixedPorts.ROBOT)) {
+                values.put(key, properties.getProperty(key).strip());
             }
         }
         ConfigFile server = new ConfigFile(values, null, List.of());
         server.forcedPairs(source);
         server.shaping(source);
         server.recordFile(source);
+        server.fixed(source);
+        try {
+            server.checkFixedPortsFree();
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + e.getMessage());
+        }
         ModelCatalog catalog = catalogFor.apply(server);
         PropagationModel chosen = catalog.find(values.get("wss.model"));
         List<Setting> own = chosen == null ? List.of() : chosen.settings();
@@ -179,15 +206,22 @@ public final class ConfigFile {
         }
         rules.forEach((key, rule) -> values.putIfAbsent(key, rule.defaultValue()));
         List<String> ignored = new ArrayList<>();
-        for (String key : keys) {
-            String value = properties.getProperty(key).strip();
+        for (String fileKey : keys) {
+            String value = properties.getProperty(fileKey).strip();
+            String key = renamed(fileKey, rules.values());
+            if (!key.equals(fileKey) && properties.containsKey(key)) {
+                throw new ConfigFileException(source + ": " + fileKey + " is the old name of " + key + "; set only " + key);
+            }
             Setting rule = rules.get(key);
+            if (rule == null && key.startsWith(FixedPorts.ROBOT)) {
+                continue;
+            }
             if (rule == null) {
                 throw new ConfigFileException(source + ": unknown key " + key + " (value '" + value + "'); known keys: "
                         + String.join(", ", rules.keySet()));
             }
             if (!key.startsWith("wss.")) {
-                values.put(key, checked(rule, value, source));
+                values.put(key, checked(rule, fileKey, value, source));
                 if (Setting.find(own, key) == null) {
                     ignored.add(key);
                 }
@@ -196,11 +230,26 @@ public final class ConfigFile {
         return new ConfigFile(values, catalog, List.copyOf(ignored));
     }
 
+    /** The key a file's key stands for: itself, or the setting's whose old name it is ({@link Setting#alias()}). */
+    private static String renamed(String fileKey, Collection<Setting> rules) {
+        if (rules.stream().anyMatch(rule -> rule.key().equals(fileKey))) {
+            return fileKey;
+        }
+        Setting renamed = Setting.findAlias(rules, fileKey);
+        return renamed == null ? fileKey : renamed.key();
+    }
+
     private static String checked(Setting rule, String value, String source) throws ConfigFileException {
+        return checked(rule, rule.key(), value, source);
+    }
+
+    /** As {@link #checked(Setting, String, String)}, the value given under {@code fileKey}, the rule's key or its old name. */
+    private static String checked(Setting rule, String fileKey, String value, String source) throws ConfigFileException {
         String stripped = value.strip();
         String problem = rule.problem(stripped);
         if (problem != null) {
-            throw new ConfigFileException(source + ": " + rule.key() + " = '" + stripped + "' is not " + problem);
+            throw new ConfigFileException(source + ": " + fileKey + " = '" + stripped + "' is not " + problem
+                    + (fileKey.equals(rule.key()) ? "" : " (" + fileKey + " is the old name of " + rule.key() + ")"));
         }
         return stripped;
     }
@@ -312,12 +361,11 @@ public final class ConfigFile {
             return new HubConfig(InetAddress.getByName(get("wss.bindAddress")), Integer.parseInt(get("wss.port")),
                     Integer.parseInt(get("wss.chunkSize")), Integer.parseInt(get("wss.socketBuffer")),
                     Boolean.parseBoolean(get("wss.matchSourceAddress")), Integer.parseInt(get("wss.portMemory")),
-                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.deadPeerSeconds")),
-                    Set.copyOf(listed(get("wss.operators"), Setting::addressList)), forcedPairs(null))
-                    .withShaping(shaping(null), ForcedUp.parse(get("wss.force.up")).pins())
-                    .withMaxPortsPerAddress(Integer.parseInt(get("wss.maxPortsPerAddress")));
+                    Integer.parseInt(get("wss.maxPortsPerRobot")), Integer.parseInt(get("wss.maxPortsPerAddress")),
+                    Integer.parseInt(get("wss.deadPeerSeconds")), Set.copyOf(listed(get("wss.operators"), Setting::addressList)),
+                    forcedPairs(null), ForcedUp.parse(get("wss.force.up")).pins(), shaping(null), fixed(null));
         } catch (UnknownHostException | ConfigFileException e) {
-            throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.* and wss.shaping.* were checked", e);
+            throw new IllegalStateException("wss.bindAddress, wss.operators, wss.force.*, wss.shaping.*, wss.robot.* and wss.fixed were checked", e);
         }
     }
 
@@ -333,6 +381,13 @@ public final class ConfigFile {
             throw new ConfigFileException(source + ": " + ShapingConfig.RATES + " = '" + get(ShapingConfig.RATES) + "' is not "
                     + RATES_WORDS + ": " + e.getMessage());
         }
+        shapingValues.put(ShapingConfig.LOSS, get(ShapingConfig.LOSS));
+        try {
+            LossTable.parse(get(ShapingConfig.LOSS));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + ShapingConfig.LOSS + " = '" + get(ShapingConfig.LOSS) + "' is not "
+                    + LOSS_WORDS + ": " + e.getMessage());
+        }
         try {
             return ShapingConfig.from(shapingValues);
         } catch (IllegalArgumentException e) {
@@ -345,8 +400,11 @@ public final class ConfigFile {
      * read from, sets, with their checked values: what the window puts over the stored model settings.
      */
     ModelSettings modelKeysSetBy(Properties file) {
+        List<Setting> rules = new ArrayList<>();
+        catalog.models().forEach(model -> rules.addAll(model.settings()));
         Map<String, String> set = new LinkedHashMap<>();
-        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted().forEach(key -> set.put(key, get(key)));
+        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss.")).sorted()
+                .map(key -> renamed(key, rules)).forEach(key -> set.put(key, get(key)));
         return new ModelSettings(set);
     }
 
@@ -363,6 +421,31 @@ public final class ConfigFile {
             }
         }
         return set;
+    }
+
+    /**
+     * Refuses a fixed port whose number something on this machine holds now: checked as the file
+     * is read, and again as the window's Start starts a server (the number may have been taken since).
+     *
+     * @throws IllegalArgumentException {@code wss.fixed = '...' is not ...: tcp A->B:1883@11883: tcp port 11883 is in use (why)}
+     */
+    void checkFixedPortsFree() {
+        HubConfig hub = hubConfig();
+        FixedPorts.checkFree(hub.fixed(), get(FixedPorts.KEY), hub.bindAddress());
+    }
+
+    /** The declared robots and the fixed ports, checked together (docs/fixed-ports.md). */
+    private FixedSetup fixed(String source) throws ConfigFileException {
+        Map<String, String> robots = new LinkedHashMap<>();
+        values.keySet().stream().filter(key -> key.startsWith(FixedPorts.ROBOT)).sorted().forEach(key -> robots.put(key, get(key)));
+        try {
+            return FixedPorts.setup(robots, get(FixedPorts.KEY), Integer.parseInt(get(FixedPorts.UDP_IDLE)),
+                    Integer.parseInt(get("wss.port")), InetAddress.getByName(get("wss.bindAddress")));
+        } catch (IllegalArgumentException e) {
+            throw new ConfigFileException(source + ": " + e.getMessage());
+        } catch (UnknownHostException e) {
+            throw new IllegalStateException("wss.bindAddress was checked", e);
+        }
     }
 
     /**

@@ -21,6 +21,7 @@ import org.usarsim.wss.gui.MainWindow;
 import org.usarsim.wss.gui.ModelPreferences;
 import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
+import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -29,6 +30,7 @@ import org.usarsim.wss.recording.Recording;
 import org.usarsim.wss.recording.RecordingException;
 import org.usarsim.wss.recording.RecordingReader;
 import org.usarsim.wss.recording.WorldExport;
+import org.usarsim.wss.world.RosbridgeServer;
 import org.usarsim.wss.world.WorldFileException;
 import org.usarsim.wss.world.WorldServer;
 import sun.misc.Signal;
@@ -37,7 +39,7 @@ import sun.misc.SignalHandler;
 /**
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
- * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS]} runs a USARSim-compatible
+ * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]} runs a USARSim-compatible
  * world server instead (docs/world.md); {@code --export-world RUN.rec [--out FILE]} writes a recording as a
  * world file (docs/replay.md). {@link #run} does it all and returns the exit code
  * ({@link #OK}, {@link #CANNOT_START}, {@link #BAD_INPUT}); {@link #main} only exits with it.
@@ -115,29 +117,17 @@ public final class Main {
                 yield OK;
             }
             case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());
-            case WORLD -> runWorld(out, options.world(), options.port(), options.bind());
+            case WORLD -> runWorld(out, options.world(), options.port(), options.bind(), options.rosbridge());
             case SERVE -> serve(out, options);
+            case PRINT_PORTS -> printPorts(out, err, options.config());
         };
     }
 
     /** The WSS, in its window or headless, from the defaults and the --config file. */
     private static int serve(PrintStream out, Options options) throws Failure {
         Path config = options.config();
-        Properties file = new Properties();
-        ConfigFile configFile;
-        try {
-            if (config != null) {
-                file = ConfigFile.read(config);
-            }
-            // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
-            Function<ConfigFile, ModelCatalog> catalog = server -> {
-                LogSetup.install(out, server.logLevel());
-                return ConfigFile.modelsFor(server);
-            };
-            configFile = ConfigFile.of(file, config == null ? "the defaults" : config.toString(), catalog);
-        } catch (ConfigFileException e) {
-            throw badInput(e.getMessage());
-        }
+        Properties file = read(config);
+        ConfigFile configFile = configFile(file, config, out);
         String noDisplay = options.headless() ? null : noDisplay();
         if (options.headless() || noDisplay != null) {
             if (noDisplay != null) {
@@ -146,6 +136,48 @@ public final class Main {
             return runHeadless(configFile, config);
         }
         return runWindow(configFile, file, config != null, options.start());
+    }
+
+    /** The --config file's properties (none without one). */
+    private static Properties read(Path config) throws Failure {
+        try {
+            return config == null ? new Properties() : ConfigFile.read(config);
+        } catch (ConfigFileException e) {
+            throw badInput(e.getMessage());
+        }
+    }
+
+    /** The configuration of the defaults and {@code file}, checked; the log goes to {@code log}. */
+    private static ConfigFile configFile(Properties file, Path config, PrintStream log) throws Failure {
+        // Logging is set up as soon as the server's keys are known, before the catalog logs its plugins.
+        Function<ConfigFile, ModelCatalog> catalog = server -> {
+            LogSetup.install(log, server.logLevel());
+            return ConfigFile.modelsFor(server);
+        };
+        try {
+            return ConfigFile.of(file, config == null ? "the defaults" : config.toString(), catalog);
+        } catch (ConfigFileException e) {
+            throw badInput(e.getMessage());
+        }
+    }
+
+    /**
+     * {@code --print-ports [--config FILE]}: every fixed port of the configuration, one a line, to
+     * {@code out}; checked as headless mode checks it (a bad file: its one line, exit 2), nothing
+     * started. The log (plugins loaded) goes to {@code err}, so {@code out} holds only the ports;
+     * without a fixed port, one line on {@code err} says so.
+     */
+    private static int printPorts(PrintStream out, PrintStream err, Path config) throws Failure {
+        ConfigFile configFile = configFile(read(config), config, err);
+        knownModel(configFile.catalog(), configFile.modelName());
+        HubConfig hub = configFile.hubConfig();
+        List<String> lines = FixedPorts.lines(hub.fixed(), hub.bindAddress());
+        if (lines.isEmpty()) {
+            err.println("wss: no fixed port in " + (config == null ? "the defaults" : config) + " (wss.fixed is empty)");
+        }
+        lines.forEach(out::println);
+        out.flush();
+        return OK;
     }
 
     /**
@@ -175,8 +207,12 @@ public final class Main {
         }
         try {
             Files.writeString(to, text, StandardCharsets.UTF_8);
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw badInput("cannot write the world file " + to + ": its folder " + to.toAbsolutePath().getParent() + " does not exist");
+        } catch (java.nio.file.AccessDeniedException e) {
+            throw badInput("cannot write the world file " + to + ": permission denied");
         } catch (IOException e) {
-            throw badInput("cannot write the world file " + to + ": " + e);
+            throw badInput("cannot write the world file " + to + ": " + (e.getMessage() == null ? e.toString() : e.getMessage()));
         }
         return OK;
     }
@@ -270,8 +306,8 @@ public final class Main {
                 .map(PropagationModel::name).toList();
     }
 
-    /** The world server: read the file, listen, serve until SIGTERM or Ctrl-C. */
-    private static int runWorld(PrintStream out, Path file, int port, String bindText) throws Failure {
+    /** The world server (and its rosbridge, on a port not -1): read the file, listen, serve until SIGTERM or Ctrl-C. */
+    private static int runWorld(PrintStream out, Path file, int port, String bindText, int rosbridgePort) throws Failure {
         InetAddress address;
         try {
             address = InetAddress.getByName(bindText);
@@ -289,9 +325,21 @@ public final class Main {
             } catch (IOException e) {
                 throw new Failure(CANNOT_START, "cannot listen on " + address.getHostAddress() + ":" + port + ": " + e.getMessage());
             }
+            RosbridgeServer rosbridge = null;
             try {
+                if (rosbridgePort >= 0) {
+                    try {
+                        rosbridge = RosbridgeServer.start(server, address, rosbridgePort);
+                    } catch (IOException e) {
+                        throw new Failure(CANNOT_START, "cannot listen for rosbridge on " + address.getHostAddress() + ":"
+                                + rosbridgePort + ": " + e.getMessage());
+                    }
+                }
                 stop.await();
             } finally {
+                if (rosbridge != null) {
+                    rosbridge.close();
+                }
                 server.close();
             }
         }

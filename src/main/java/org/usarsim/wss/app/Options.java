@@ -6,10 +6,11 @@ import java.nio.file.Path;
  * What the command line asks for, read and checked by {@link OptionsParser} before anything
  * runs; {@link Main} only dispatches on {@link #action}. What an action does not use is null
  * (or false): {@code port} and {@code bind} are the world server's, with their defaults filled
- * in; {@code export} and {@code out} are --export-world's.
+ * in; {@code export} and {@code out} are --export-world's; {@code rosbridge} is the world
+ * server's rosbridge port, -1 when it serves none.
  */
 record Options(Action action, boolean headless, boolean start, Path config, Path world, int port, String bind,
-        Path export, Path out) {
+        Path export, Path out, int rosbridge) {
 
     /** What Main does. */
     enum Action {
@@ -19,6 +20,8 @@ record Options(Action action, boolean headless, boolean start, Path config, Path
         WORLD,
         /** {@code --export-world RUN.rec}: a recording written as a world file. */
         EXPORT_WORLD,
+        /** {@code --print-ports [--config FILE]}: print the fixed ports of the configuration. */
+        PRINT_PORTS,
         /** {@code --version}: print the version. */
         VERSION,
         /** {@code --help}: print the help and every property of --config FILE. */

@@ -38,10 +38,15 @@ final class OptionsParser {
                     "the world server's port, 0 to 65535, 0 = any free port (default " + Defaults.WORLD_PORT + ")"),
             Flag.valued("--bind", "ADDRESS", "a value",
                     "the address the world server listens on (default " + Defaults.ALL_INTERFACES + ": every interface)"),
+            Flag.valued("--rosbridge", "PORT", "a value",
+                    "the world server also serves its world over rosbridge v2 (WebSocket) on\n"
+                    + "this port, 0 = any free port (docs/world.md, docs/ros-messages.md)"),
             Flag.valued("--export-world", "RUN.rec", "a file",
                     "write a world file whose robots follow the recording's paths, with its walls\n"
                     + "(docs/replay.md); to standard output, or to the file of --out FILE"),
             Flag.valued("--out", "FILE", "a file", "where --export-world writes the world file"),
+            Flag.toggle("--print-ports", "print every fixed port of --config FILE, one a line, and exit: its protocol,\n"
+                    + "FROM->TO:PORT, the WSS's number and the robots' addresses (docs/fixed-ports.md)"),
             Flag.toggle("--version", "print the version and exit"),
             Flag.toggle("--help", "print this and every property of --config FILE, and exit", "-h"));
 
@@ -87,8 +92,9 @@ final class OptionsParser {
     static String usage(String command) {
         return "usage: " + command + " [--config FILE] [--start]\n"
                 + "       " + command + " --headless [--config FILE]\n"
-                + "       " + command + " --world FILE [--port N] [--bind ADDRESS]\n"
+                + "       " + command + " --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]\n"
                 + "       " + command + " --export-world RUN.rec [--out FILE]\n"
+                + "       " + command + " --print-ports [--config FILE]\n"
                 + "       " + command + " --version | --help";
     }
 
@@ -139,7 +145,7 @@ final class OptionsParser {
     }
 
     private static Options only(Action action) {
-        return new Options(action, false, false, null, null, 0, null, null, null);
+        return new Options(action, false, false, null, null, 0, null, null, null, -1);
     }
 
     /** The options given, checked against each other in this order. */
@@ -150,17 +156,27 @@ final class OptionsParser {
         Path world = path(given, "--world");
         String port = given.get("--port");
         String bind = given.get("--bind");
+        String rosbridge = given.get("--rosbridge");
         Path export = path(given, "--export-world");
         Path out = path(given, "--out");
-        if (export != null && (headless || config != null || start || world != null || port != null || bind != null)) {
-            throw new Mistake("--export-world only writes a world file: no --headless, --config, --start, --world, --port or --bind\n"
+        boolean printPorts = given.containsKey("--print-ports");
+        if (printPorts && given.keySet().stream().anyMatch(key -> !key.equals("--print-ports") && !key.equals("--config"))) {
+            throw new Mistake("--print-ports only prints the fixed ports of --config FILE: no other option\n" + USAGE);
+        }
+        if (printPorts) {
+            return new Options(Action.PRINT_PORTS, false, false, config, null, 0, null, null, null, -1);
+        }
+        if (export != null && (headless || config != null || start || world != null || port != null || bind != null
+                || rosbridge != null)) {
+            throw new Mistake("--export-world only writes a world file: no --headless, --config, --start, --world, --port, --bind"
+                    + " or --rosbridge\n"
                     + USAGE);
         }
         if (out != null && export == null) {
             throw new Mistake("--out is where --export-world writes: it needs --export-world RUN.rec\n" + USAGE);
         }
         if (export != null) {
-            return new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, export, out);
+            return new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, export, out, -1);
         }
         if (world != null && (headless || config != null)) {
             throw new Mistake("--world runs the world server alone, without --headless or --config\n" + USAGE);
@@ -171,14 +187,15 @@ final class OptionsParser {
         if (headless && start) {
             throw new Mistake("--start is for the window; headless, the server starts at once\n" + USAGE);
         }
-        if (world == null && (port != null || bind != null)) {
-            throw new Mistake("--port and --bind are for the world server: they need --world FILE\n" + USAGE);
+        if (world == null && (port != null || bind != null || rosbridge != null)) {
+            throw new Mistake("--port, --bind and --rosbridge are for the world server: they need --world FILE\n" + USAGE);
         }
         if (world != null) {
-            return new Options(Action.WORLD, false, false, null, world, port(port == null ? String.valueOf(Defaults.WORLD_PORT) : port),
-                    bind == null ? Defaults.ALL_INTERFACES : bind, null, null);
+            return new Options(Action.WORLD, false, false, null, world,
+                    port("--port", port == null ? String.valueOf(Defaults.WORLD_PORT) : port),
+                    bind == null ? Defaults.ALL_INTERFACES : bind, null, null, rosbridge == null ? -1 : port("--rosbridge", rosbridge));
         }
-        return new Options(Action.SERVE, headless, start, config, null, 0, null, null, null);
+        return new Options(Action.SERVE, headless, start, config, null, 0, null, null, null, -1);
     }
 
     private static Path path(Map<String, String> given, String key) {
@@ -186,7 +203,7 @@ final class OptionsParser {
         return value == null ? null : Path.of(value);
     }
 
-    private static int port(String text) throws Mistake {
+    private static int port(String option, String text) throws Mistake {
         int port = -1;
         try {
             port = Integer.parseInt(text);
@@ -194,7 +211,7 @@ final class OptionsParser {
             // reported below
         }
         if (port < 0 || port > 65535) {
-            throw new Mistake("--port " + text + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
+            throw new Mistake(option + " " + text + " is not a port number from 0 to 65535 (0: any free port)\n" + USAGE);
         }
         return port;
     }

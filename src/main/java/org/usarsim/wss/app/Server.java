@@ -98,7 +98,7 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog, recorder);
     }
 
-    /** A recording's settings: every setting the model declares with this run's value, then the four wss.shaping* keys. */
+    /** A recording's settings: every setting the model declares with this run's value, then the five wss.shaping* keys. */
     private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
@@ -108,6 +108,7 @@ final class Server implements AutoCloseable {
         settings.put(ShapingConfig.RATES, shaping.rates().toString());
         settings.put(ShapingConfig.DELAY_MS, String.valueOf(shaping.delayMs()));
         settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
+        settings.put(ShapingConfig.LOSS, shaping.loss().toString());
         return settings;
     }
 
@@ -138,6 +139,12 @@ final class Server implements AutoCloseable {
     void start() throws StartFailure {
         try {
             hub.start();
+            // A team must be able to tell from the log that wss.shaping took effect.
+            ShapingConfig shaping = config.shaping();
+            java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
+                    ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
+                            + (shaping.airtime() ? "shared" : "not shared")
+                    : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
         } catch (IOException e) {
             closeRecords();
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"

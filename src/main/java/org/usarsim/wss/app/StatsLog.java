@@ -8,6 +8,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.hub.core.UdpCounts;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 import org.usarsim.wss.hub.HubSnapshot.RobotEntry;
 import org.usarsim.wss.protocol.Strengths;
@@ -33,6 +34,9 @@ final class StatsLog implements AutoCloseable {
             "conns", "breaks", "resumes", "up%", "last close");
     /** The header of the robots' lines that follow the pairs with links shaped. */
     static final String AIRTIME_HEADER = String.format(Locale.ROOT, "%-24s %8s", "robot", "airtime");
+    /** The header of the fixed UDP ports' lines (docs/fixed-ports.md): one a direction that carried datagrams. */
+    static final String UDP_HEADER = String.format(Locale.ROOT, "%-24s %12s %14s %14s %13s %12s", "udp from > to", "datagrams",
+            "bytes", "dropped broken", "dropped queue", "lost signal");
 
     private final ScheduledThreadPoolExecutor timer;
 
@@ -74,7 +78,7 @@ final class StatsLog implements AutoCloseable {
      * The table: a title line, a header line, a line per pair. With links {@code shaped}, each
      * pair's line has its rate each way before "last close", and when airtime is shared (a
      * robot's is not NaN) a header and a line per robot follow, with the share of the last second
-     * its radio was on the air.
+     * its radio was on the air; a line follows for each direction a fixed UDP port carried datagrams in.
      */
     static String table(HubSnapshot snapshot, boolean shaped) {
         List<PairEntry> pairs = snapshot.pairs();
@@ -93,6 +97,22 @@ final class StatsLog implements AutoCloseable {
             }
             text.append(String.format(Locale.ROOT, "%5d %6d %7d %5.1f  %s", pair.connections(), pair.breaks(), pair.resumes(),
                     100 * pair.upShare(), pair.lastClose() == null ? "-" : pair.lastClose()));
+        }
+        boolean udpHeader = false;
+        for (PairEntry pair : pairs) {
+            for (boolean firstToSecond : new boolean[] {true, false}) {
+                UdpCounts.Reading udp = firstToSecond ? pair.udpFirstToSecond() : pair.udpSecondToFirst();
+                if (udp.none()) {
+                    continue;
+                }
+                if (!udpHeader) {
+                    text.append('\n').append(UDP_HEADER);
+                    udpHeader = true;
+                }
+                String way = firstToSecond ? pair.first() + " > " + pair.second() : pair.second() + " > " + pair.first();
+                text.append('\n').append(String.format(Locale.ROOT, "%-24s %12d %14d %14d %13d %12d", way, udp.datagrams(), udp.bytes(),
+                        udp.droppedBroken(), udp.droppedQueue(), udp.lost()));
+            }
         }
         List<RobotEntry> robots = shaped ? snapshot.robots().stream().filter(robot -> !Double.isNaN(robot.airtime())).toList()
                 : List.of();

@@ -37,8 +37,13 @@ final class WindowServers implements Servers {
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }
+        try {
+            configFile.checkFixedPortsFree();
+        } catch (IllegalArgumentException e) {
+            throw new Server.StartFailure(e.getMessage(), true);
+        }
         HubConfig file = configFile.hubConfig();
-        HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping, file.pins());
+        HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping.withLoss(file.shaping().loss()), file.pins());
         Path recording = record ? configFile.record().orElseGet(() -> Recorder.runFileIn(configFile.eventLogDir())) : null;
         Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null, recording);
         server.hub().addListener(listener);

@@ -134,10 +134,12 @@ final class DialogParts {
         return label;
     }
 
-    /** Disabled, its text still readable. */
+    /** Disabled, its text still readable, on the grey of a field that cannot be edited (not an editable field's white). */
     static void readOnly(JTextComponent field) {
         field.setEnabled(false);
         field.setDisabledTextColor(READ_ONLY_TEXT);
+        Color grey = javax.swing.UIManager.getColor("TextField.inactiveBackground");
+        field.setBackground(grey != null ? grey : javax.swing.UIManager.getColor("control"));
     }
 
     /** The words of a refused value: "Timeout (ms): '50' is not a whole number of ...". */

@@ -25,7 +25,8 @@ import org.usarsim.wss.model.simulator.PathLoss;
  * The configuration dialog of the models whose {@code dialogLayout()} is {@link DialogLayout#DISTANCE}
  * or {@link DialogLayout#DISTANCE_AND_OBSTACLES} (DistanceOnlyPropagationModel and
  * ObstaclePropagationModel, or a plugin that asks for it), laid out as the original's (its
- * manual's figure 2) with two groups it did not have: "Link Stability" and, for
+ * manual's figure 2) with groups it did not have: "Positions" (where they come from) and
+ * "rosbridge" before its "USARSim Connection", "Link Stability" and, for
  * {@code DISTANCE_AND_OBSTACLES}, "Obstacles". The values are those of the model's preferences node, named by its {@code name()}. Fields hold the model keys' values as
  * text; each field's label, unit, tooltip and check come from the model's declared {@link Setting}s. The cutoff distance is derived, both ways:
  * editing Cutoff, N, Pd0 or d0 recomputes it, editing it recomputes N. OK stores the values with
@@ -46,10 +47,22 @@ final class DistanceModelDialog extends JDialog {
     static final Color INVALID = DialogParts.INVALID;
 
     /** The keys of the fields; each one's label, unit, tooltip and rule are the model's {@link Setting}. */
+    private static final String POSITIONS = "positions";
+    private static final String INTERVAL = "positions.interval";
     private static final String HOST = "usarsim.host";
     private static final String PORT = "usarsim.port";
-    private static final String INTERVAL = "usarsim.interval";
     private static final String TIMEOUT = "usarsim.timeout";
+    private static final String URL = "rosbridge.url";
+    private static final String TOPIC = "rosbridge.topic";
+    private static final String TYPE = "rosbridge.type";
+    private static final String FRAME = "rosbridge.frame";
+    private static final String NAMES = "rosbridge.names";
+    private static final String STALE = "rosbridge.stale";
+    private static final String MAX_MESSAGE = "rosbridge.maxMessage";
+    /** The keys of the groups every layout shows: the positions, their two sources, the signal, the link stability. */
+    private static final List<String> DISTANCE_KEYS = List.of(POSITIONS, INTERVAL, HOST, PORT, TIMEOUT, URL, TOPIC, TYPE, FRAME,
+            NAMES, STALE, MAX_MESSAGE, "distance.cutoff", "distance.n", "distance.pd0", "distance.d0", "distance.margin",
+            "distance.holdTime");
     private static final String CUTOFF = "distance.cutoff";
     private static final String N = "distance.n";
     private static final String PD0 = "distance.pd0";
@@ -58,6 +71,8 @@ final class DistanceModelDialog extends JDialog {
     private static final String HOLD_TIME = "distance.holdTime";
     private static final String ATTENUATION = "obstacle.attenuation";
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
+    private static final String WALLS = "obstacle.walls";
+    private static final String MAP = "rosbridge.map";
 
     private final PropagationModel model;
     private final List<Setting> declared;
@@ -93,11 +108,13 @@ final class DistanceModelDialog extends JDialog {
         this.preferences = preferences;
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
-        List<JPanel> groups = new ArrayList<>(List.of(group("USARSim Connection", HOST, PORT, INTERVAL, TIMEOUT),
+        List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL),
+                group("USARSim Connection", HOST, PORT, TIMEOUT),
+                group("rosbridge", URL, TOPIC, TYPE, FRAME, NAMES, STALE, MAX_MESSAGE),
                 group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), distanceGroup(),
                 group("Link Stability", MARGIN, HOLD_TIME)));
         if (obstacles) {
-            groups.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE));
+            groups.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE, WALLS, MAP));
         }
         alignColumns();
 
@@ -200,9 +217,9 @@ final class DistanceModelDialog extends JDialog {
         if (layout != DialogLayout.DISTANCE && layout != DialogLayout.DISTANCE_AND_OBSTACLES) {
             return false;
         }
-        List<String> keys = new ArrayList<>(List.of(HOST, PORT, INTERVAL, TIMEOUT, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME));
+        List<String> keys = new ArrayList<>(DISTANCE_KEYS);
         if (layout == DialogLayout.DISTANCE_AND_OBSTACLES) {
-            keys.addAll(List.of(ATTENUATION, CACHE_DISTANCE));
+            keys.addAll(List.of(ATTENUATION, CACHE_DISTANCE, WALLS, MAP));
         }
         List<Setting> declared = model.settings();
         return keys.stream().allMatch(key -> Setting.find(declared, key) != null);
@@ -218,7 +235,7 @@ final class DistanceModelDialog extends JDialog {
     }
 
     private JTextField field(Setting setting) {
-        JTextField field = new JTextField(10);
+        JTextField field = new JTextField(setting.type() == Setting.Type.TEXT ? 16 : 10);
         field.setName(setting.key());
         field.setToolTipText(setting.help());
         keepWidth(field);

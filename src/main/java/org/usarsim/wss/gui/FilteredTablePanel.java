@@ -13,6 +13,8 @@ import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
+import javax.swing.table.JTableHeader;
+import javax.swing.table.TableCellRenderer;
 import javax.swing.table.TableModel;
 import javax.swing.table.TableRowSorter;
 
@@ -29,8 +31,37 @@ class FilteredTablePanel<T> extends JPanel {
     FilteredTablePanel(String title, String name, List<RowsModel.Column<T>> columns) {
         super(new BorderLayout(0, 4));
         model = new RowsModel<>(columns);
-        table = new JTable(model);
+        table = new JTable(model) {
+            /** Fills the width while every column fits at its least; scrolls sideways when they do not, none cut. */
+            @Override
+            public boolean getScrollableTracksViewportWidth() {
+                return getParent() == null || minimumWidth() <= getParent().getWidth();
+            }
+        };
         table.setName(name);
+        table.setTableHeader(new JTableHeader(table.getColumnModel()) {
+            /** As tall as its tallest header: the look measures only the first column's, one line. */
+            @Override
+            public java.awt.Dimension getPreferredSize() {
+                java.awt.Dimension size = super.getPreferredSize();
+                for (int column = 0; column < getColumnModel().getColumnCount(); column++) {
+                    size.height = Math.max(size.height, getDefaultRenderer()
+                            .getTableCellRendererComponent(table, null, false, false, -1, column).getPreferredSize().height);
+                }
+                return size;
+            }
+
+            @Override
+            public String getToolTipText(MouseEvent e) {
+                int column = columnAtPoint(e.getPoint());
+                return column < 0 ? null : model.column(table.convertColumnIndexToModel(column)).tip();
+            }
+        });
+        TableCellRenderer plainHeader = table.getTableHeader().getDefaultRenderer();
+        table.getTableHeader().setDefaultRenderer((shown, value, selected, focused, row, column) -> plainHeader
+                .getTableCellRendererComponent(shown, label(model.column(shown.convertColumnIndexToModel(column)).label()),
+                        selected, focused, row, column));
+        table.setDefaultRenderer(Long.class, new GroupedCount());
         table.setFillsViewportHeight(true);
         TableRowSorter<TableModel> sorter = model.sorter();
         table.setRowSorter(sorter);
@@ -89,12 +120,62 @@ class FilteredTablePanel<T> extends JPanel {
     }
 
     /**
-     * Event thread: the columns' preferred widths, in order; the table shares its width out in
-     * these proportions, so that a wide column ("Last close") is not cut.
+     * Event thread: each column at least as wide as its header (with room for the sort arrow) and
+     * as its sample, the widest text it is meant to show whole, in order ("Explorer1234" for a
+     * name of 12 characters): the table never cuts them, and scrolls sideways when the window is
+     * too narrow for all.
      */
-    void preferredWidths(int... widths) {
-        for (int i = 0; i < widths.length; i++) {
-            table.getColumnModel().getColumn(i).setPreferredWidth(widths[i]);
+    void leastWidths(String... samples) {
+        leastWidths(table, samples);
+    }
+
+    /** As {@link #leastWidths(String...)}, for any table. */
+    static void leastWidths(JTable table, String... samples) {
+        java.awt.FontMetrics metrics = table.getFontMetrics(table.getFont());
+        javax.swing.table.TableColumnModel columns = table.getColumnModel();
+        for (int i = 0; i < columns.getColumnCount(); i++) {
+            int header = table.getTableHeader().getDefaultRenderer()
+                    .getTableCellRendererComponent(table, null, false, false, -1, i).getPreferredSize().width + SORT_ARROW;
+            int content = i < samples.length ? metrics.stringWidth(samples[i]) + CELL_PADDING : 0;
+            javax.swing.table.TableColumn column = columns.getColumn(i);
+            column.setMinWidth(Math.max(header, content));
+            column.setPreferredWidth(Math.max(column.getPreferredWidth(), column.getMinWidth()));
+        }
+    }
+
+    /** Room in a header for the arrow of a sorted column. */
+    private static final int SORT_ARROW = 14;
+    /** Room in a cell beside its text: the renderer's border and the grid. */
+    private static final int CELL_PADDING = 10;
+
+    private int minimumWidth() {
+        int sum = 0;
+        for (int i = 0; i < table.getColumnModel().getColumnCount(); i++) {
+            sum += table.getColumnModel().getColumn(i).getMinWidth();
+        }
+        return sum;
+    }
+
+    /** A header's text as the header shows it: a {@code \n} puts the rest on a second line. */
+    static String label(String text) {
+        if (!text.contains("\n")) {
+            return text;
+        }
+        return "<html><center>" + text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\n", "<br>")
+                + "</center></html>";
+    }
+
+    /** A count with its digits grouped (6,116,163,584), right-aligned. */
+    private static final class GroupedCount extends javax.swing.table.DefaultTableCellRenderer {
+        private final java.text.NumberFormat format = java.text.NumberFormat.getIntegerInstance(java.util.Locale.ROOT);
+
+        GroupedCount() {
+            setHorizontalAlignment(RIGHT);
+        }
+
+        @Override
+        protected void setValue(Object value) {
+            setText(value == null ? "" : format.format(value));
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.prefs.BackingStoreException;
+import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
 import javax.swing.JDialog;
@@ -55,9 +56,13 @@ final class GeneratedModelDialog extends JDialog {
             JComponent field = field(setting, values.get(setting.key()));
             rows.add(DialogParts.label(setting.label(), setting.help(), field), DialogParts.cell(0, row, 0, false));
             rows.add(field, DialogParts.cell(1, row, 8, false));
-            JLabel unit = new JLabel(setting.unit() == null ? "" : setting.unit());
-            unit.setToolTipText(setting.help());
-            rows.add(unit, DialogParts.cell(2, row, 6, true));
+            if (setting.key().endsWith(".file") && field instanceof JTextField path) {
+                rows.add(browse(setting, path), DialogParts.cell(2, row, 6, true));
+            } else {
+                JLabel unit = new JLabel(setting.unit() == null ? "" : setting.unit());
+                unit.setToolTipText(setting.help());
+                rows.add(unit, DialogParts.cell(2, row, 6, true));
+            }
             row++;
         }
 
@@ -94,6 +99,37 @@ final class GeneratedModelDialog extends JDialog {
         }
         fields.put(setting.key(), field);
         return field;
+    }
+
+    /**
+     * "Browse..." beside a file's field (a key ending in {@code .file}, as {@code replay.file}):
+     * a file chooser from the field's folder; the file chosen goes in the field, relative to the
+     * working directory when it lies under it.
+     */
+    private JButton browse(Setting setting, JTextField path) {
+        JButton browse = new JButton("Browse...");
+        browse.setName(setting.key() + "Browse");
+        browse.setToolTipText("Choose the file: " + setting.help());
+        browse.setEnabled(editable);
+        browse.addActionListener(e -> {
+            java.nio.file.Path here = java.nio.file.Path.of("").toAbsolutePath();
+            javax.swing.JFileChooser chooser = new javax.swing.JFileChooser(here.toFile());
+            try {
+                java.nio.file.Path given = here.resolve(path.getText().strip());
+                if (java.nio.file.Files.isRegularFile(given)) {
+                    chooser.setSelectedFile(given.toFile());
+                } else if (given.getParent() != null && java.nio.file.Files.isDirectory(given.getParent())) {
+                    chooser.setCurrentDirectory(given.getParent().toFile());
+                }
+            } catch (java.nio.file.InvalidPathException ignored) {
+                // a field that holds no path: the chooser starts in the working directory
+            }
+            if (chooser.showOpenDialog(this) == javax.swing.JFileChooser.APPROVE_OPTION) {
+                java.nio.file.Path chosen = chooser.getSelectedFile().toPath().toAbsolutePath().normalize();
+                path.setText((chosen.startsWith(here) ? here.relativize(chosen) : chosen).toString());
+            }
+        });
+        return browse;
     }
 
     private void mark(JTextField field, boolean invalid) {

@@ -11,5 +11,6 @@ final class LinksPanel extends FilteredTablePanel<LinkEntry> {
                 new RowsModel.Column<>("From", String.class, LinkEntry::from),
                 new RowsModel.Column<>("To", String.class, LinkEntry::to),
                 new RowsModel.Column<>("WSS Outgoing Port", Integer.class, LinkEntry::outgoingPort)));
+        leastWidths(StatsPanel.NAME, StatsPanel.NAME, "65535");
     }
 }

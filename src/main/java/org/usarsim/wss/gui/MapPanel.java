@@ -255,8 +255,10 @@ final class MapPanel extends JPanel {
                 double step = gridStep(t.scale());
                 paintGrid(g, t, step);
                 paintWalls(g, t, shown);
-                paintRange(g, t, shown);
-                paintLines(g, t, shown);
+                LabelPlacer labels = new LabelPlacer();
+                nameBoxes(g, t, shown, labels);
+                paintRange(g, t, shown, labels);
+                paintLines(g, t, shown, labels);
                 paintRobots(g, t, shown);
                 paintLegend(g, step, shown);
                 if (shown.robots().stream().noneMatch(robot -> robot.position() != null)) {
@@ -292,7 +294,7 @@ final class MapPanel extends JPanel {
             }
         }
 
-        private void paintRange(Graphics2D g, MapTransform t, MapData shown) {
+        private void paintRange(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
             MapData.Robot robot = selected != null ? shown.robot(selected) : null;
             if (robot == null || robot.position() == null || !(robot.range() > 0) || Double.isInfinite(robot.range())) {
                 return;
@@ -308,10 +310,23 @@ final class MapPanel extends JPanel {
             // Under the robot's name: the circle itself may lie beyond the canvas.
             String label = String.format(Locale.ROOT, "range %.1f m", robot.range());
             g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
+            FontMetrics metrics = g.getFontMetrics();
+            labels.take(new java.awt.geom.Rectangle2D.Double(at.getX() + DOT - 2, at.getY() + 2 * DOT - metrics.getAscent(),
+                    metrics.stringWidth(label) + 4, metrics.getHeight()));
             label(g, label, at.getX() + DOT, at.getY() + 2 * DOT);
         }
 
-        private void paintLines(Graphics2D g, MapTransform t, MapData shown) {
+        /** The robots' names' boxes, taken first: a pair's label never lies over a name. */
+        private void nameBoxes(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
+            FontMetrics metrics = g.getFontMetrics(getFont().deriveFont(Font.BOLD, 12f));
+            for (MapData.Robot robot : shown.robots()) {
+                if (robot.position() != null) {
+                    labels.take(nameBox(t.toScreen(robot.position().x(), robot.position().y()), robot.name(), metrics));
+                }
+            }
+        }
+
+        private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
             for (MapData.Line line : shown.lines()) {
                 Point2D a = screenOf(line.first());
                 Point2D b = screenOf(line.second());
@@ -324,7 +339,12 @@ final class MapPanel extends JPanel {
                 String text = lineLabel(line);
                 if (!text.isEmpty()) {
                     g.setFont(getFont().deriveFont(Font.PLAIN, 10f));
-                    label(g, text, (a.getX() + b.getX()) / 2 + 4, (a.getY() + b.getY()) / 2 - 4);
+                    FontMetrics metrics = g.getFontMetrics();
+                    java.awt.geom.Rectangle2D box = labels.place(LabelPlacer.alongLine(a, b, metrics.stringWidth(text) + 4,
+                            metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight());
+                    if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
+                        label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
+                    }
                 }
             }
         }
@@ -359,6 +379,12 @@ final class MapPanel extends JPanel {
             }
         }
 
+        /** Where a robot's name is drawn: right of its dot, its baseline half a dot above. */
+        private java.awt.geom.Rectangle2D nameBox(Point2D at, String name, FontMetrics metrics) {
+            return new java.awt.geom.Rectangle2D.Double(at.getX() + DOT, at.getY() - DOT / 2.0 - metrics.getAscent(),
+                    metrics.stringWidth(name), metrics.getHeight());
+        }
+
         private void paintLegend(Graphics2D g, double step, MapData shown) {
             g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
             FontMetrics metrics = g.getFontMetrics();
@@ -374,7 +400,14 @@ final class MapPanel extends JPanel {
                 entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THINNEST, Bitrate.format(MapLineWidth.LOWEST)));
                 entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THICKEST, Bitrate.format(MapLineWidth.TOP)));
             }
+            // The scale's room at the right: the legend wraps onto a row above rather than run into it.
+            int scaleLeft = getWidth() - 12 - (int) Math.round(step * transform().scale()) - 12;
             for (LegendEntry entry : entries) {
+                int entryWidth = 30 + metrics.stringWidth(entry.text());
+                if (x > 10 && x + entryWidth > scaleLeft) {
+                    x = 10;
+                    y -= metrics.getHeight() + 4;
+                }
                 g.setColor(entry.colour());
                 g.setStroke(lineStroke(entry.width(), entry.dashed()));
                 g.drawLine(x, y - 4, x + 24, y - 4);
@@ -382,7 +415,8 @@ final class MapPanel extends JPanel {
                 g.drawString(entry.text(), x + 30, y);
                 x += 40 + metrics.stringWidth(entry.text());
             }
-            // The scale: one grid step.
+            // The scale: one grid step, on the bottom row.
+            y = getHeight() - 12;
             int pixels = (int) Math.round(step * transform().scale());
             int right = getWidth() - 12;
             g.setStroke(new BasicStroke(2));

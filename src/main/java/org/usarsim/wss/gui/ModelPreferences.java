@@ -38,7 +38,8 @@ public final class ModelPreferences {
     }
 
     /**
-     * Every key the model declares with its stored value, or its default when none is stored. A
+     * Every key the model declares with its stored value (under its old name, {@code Setting.alias()},
+     * when only that is stored), or its default when none is stored. A
      * stored value that breaks the key's rule (a hand-edited one) is replaced by the default, with
      * a WARNING; a stored key the model does not declare is left alone.
      */
@@ -48,6 +49,9 @@ public final class ModelPreferences {
         for (Setting setting : model.settings()) {
             String value = setting.defaultValue();
             String stored = node.get(setting.key(), null);
+            if (stored == null && setting.alias() != null) {
+                stored = node.get(setting.alias(), null); // stored before the key was renamed
+            }
             if (stored != null) {
                 String problem = setting.problem(stored);
                 if (problem == null) {
@@ -68,8 +72,8 @@ public final class ModelPreferences {
     }
 
     /**
-     * Stores these values (stripped) in the model's node and writes it out; keys not given keep
-     * what they had.
+     * Stores these values (stripped) in the model's node and writes it out, a value given under a
+     * key's old name under its key; keys not given keep what they had.
      *
      * @throws IllegalArgumentException when a key is not one the model declares or a value breaks
      *                                  its rule; nothing is stored then
@@ -77,7 +81,12 @@ public final class ModelPreferences {
      */
     public void store(PropagationModel model, Map<String, String> values) throws BackingStoreException {
         List<Setting> declared = model.settings();
-        for (Map.Entry<String, String> entry : values.entrySet()) {
+        Map<String, String> renamed = new LinkedHashMap<>();
+        values.forEach((key, value) -> {
+            Setting old = Setting.find(declared, key) == null ? Setting.findAlias(declared, key) : null;
+            renamed.put(old == null ? key : old.key(), value);
+        });
+        for (Map.Entry<String, String> entry : renamed.entrySet()) {
             Setting setting = Setting.find(declared, entry.getKey());
             if (setting == null) {
                 throw new IllegalArgumentException(entry.getKey() + " is not a setting of " + model.name());
@@ -88,7 +97,7 @@ public final class ModelPreferences {
             }
         }
         Preferences node = node(model.name());
-        values.forEach((key, value) -> node.put(key, value.strip()));
+        renamed.forEach((key, value) -> node.put(key, value.strip()));
         node.flush();
     }
 }

@@ -4,7 +4,7 @@ import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * A link's rate one way as a table cell shows it: "54 Mbit/s" ({@link Bitrate#format}), or "-"
- * when links are not shaped (0 bit/s); sorts by the rate, the unshaped first.
+ * when links are not shaped or the pair cannot talk (0 bit/s); sorts by the rate, the unshaped first.
  */
 record RateCell(long bitsPerSecond) implements Comparable<RateCell> {
 

@@ -7,12 +7,21 @@ import java.util.List;
 import java.util.Locale;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import javax.swing.AbstractAction;
+import javax.swing.Action;
+import javax.swing.ActionMap;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JSlider;
+import javax.swing.SwingUtilities;
+import javax.swing.plaf.basic.BasicSliderUI;
+import java.awt.event.ActionEvent;
+import java.awt.event.MouseAdapter;
+import java.awt.event.MouseEvent;
+import java.awt.event.MouseListener;
 import org.usarsim.wss.model.Replay;
 
 /**
@@ -28,6 +37,8 @@ final class ReplayBar extends JPanel {
     private static final Logger LOG = Logger.getLogger(ReplayBar.class.getName());
     /** The speeds offered, as the combo box shows them; each is the number before the x. */
     static final List<String> SPEEDS = List.of("0.25x", "0.5x", "1x", "2x", "4x", "8x");
+    /** What an arrow key moves the replay by: a second, which the label shows. */
+    static final int STEP_MILLIS = 1000;
 
     final JButton play = new JButton("Pause");
     final JComboBox<String> speed = new JComboBox<>(SPEEDS.toArray(String[]::new));
@@ -47,7 +58,7 @@ final class ReplayBar extends JPanel {
         time.setName("replayTime");
         time.setToolTipText("Where the replay is / the recording's length");
         slider.setName("replaySlider");
-        slider.setToolTipText("Drag to jump to a time of the recording (REPLAY {Time s})");
+        slider.setToolTipText("Click or drag to jump to a time of the recording, arrow keys by a second (REPLAY {Time s})");
         play.setPreferredSize(new Dimension(Math.max(play.getPreferredSize().width, new JButton("Play").getPreferredSize().width),
                 play.getPreferredSize().height));
         JPanel left = new JPanel(new FlowLayout(FlowLayout.LEFT, 6, 0));
@@ -62,6 +73,56 @@ final class ReplayBar extends JPanel {
         play.addActionListener(e -> playOrPause());
         speed.addActionListener(e -> speedChosen());
         slider.addChangeListener(e -> sliderMoved());
+        clickJumpsThere();
+        arrowsStepBy(STEP_MILLIS);
+    }
+
+    /**
+     * A click on the track puts the knob where it was clicked, and the replay jumps there at the
+     * release (the knob can be dragged on before it); the look's own click moves it by a step.
+     */
+    private void clickJumpsThere() {
+        if (!(slider.getUI() instanceof BasicSliderUI ui)) {
+            return;
+        }
+        MouseListener[] theLooks = slider.getMouseListeners();
+        for (MouseListener listener : theLooks) {
+            slider.removeMouseListener(listener);
+        }
+        // First, before the look's: its press then finds the knob under the mouse and drags it.
+        slider.addMouseListener(new MouseAdapter() {
+            @Override
+            public void mousePressed(MouseEvent e) {
+                if (replay != null && slider.isEnabled() && SwingUtilities.isLeftMouseButton(e)) {
+                    slider.setValueIsAdjusting(true);
+                    slider.setValue(ui.valueForXPosition(e.getX()));
+                }
+            }
+
+            @Override
+            public void mouseReleased(MouseEvent e) {
+                slider.setValueIsAdjusting(false);
+            }
+        });
+        for (MouseListener listener : theLooks) {
+            slider.addMouseListener(listener);
+        }
+    }
+
+    /** The arrow keys move the replay by {@code millis} (the look's own step is a millisecond, nothing visible). */
+    private void arrowsStepBy(int millis) {
+        ActionMap actions = slider.getActionMap();
+        actions.put("positiveUnitIncrement", step(millis));
+        actions.put("negativeUnitIncrement", step(-millis));
+    }
+
+    private Action step(int millis) {
+        return new AbstractAction() {
+            @Override
+            public void actionPerformed(ActionEvent e) {
+                slider.setValue(Math.max(slider.getMinimum(), Math.min(slider.getMaximum(), slider.getValue() + millis)));
+            }
+        };
     }
 
     /** Shows the bar for this replay (null: hides it). */

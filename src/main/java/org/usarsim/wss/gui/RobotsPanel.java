@@ -28,6 +28,7 @@ final class RobotsPanel extends JPanel {
         table.setName("robots");
         table.setRowSorter(model.sorter());
         table.setFillsViewportHeight(true);
+        FilteredTablePanel.leastWidths(table, StatsPanel.NAME, "127.0.0.1");
         add(new JLabel("Connected Robots"), BorderLayout.NORTH);
         add(new JScrollPane(table), BorderLayout.CENTER);
     }

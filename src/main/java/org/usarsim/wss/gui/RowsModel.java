@@ -9,8 +9,22 @@ import javax.swing.table.TableRowSorter;
 /** A table of immutable rows, replaced as a whole from the read model; only a real change repaints. */
 final class RowsModel<T> extends AbstractTableModel {
 
-    /** One column: its header, its type (what it sorts as) and how a row shows in it. */
-    record Column<T>(String header, Class<?> type, Function<T, Object> value) {
+    /**
+     * One column: its header (its name, which a test finds it by), its type (what it sorts as), how
+     * a row shows in it, what the header shows ({@code \n} breaks it onto a second line) and says
+     * when pointed at (null: nothing).
+     */
+    record Column<T>(String header, Class<?> type, Function<T, Object> value, String label, String tip) {
+
+        /** A column whose header shows its name, with no tip. */
+        Column(String header, Class<?> type, Function<T, Object> value) {
+            this(header, type, value, header, null);
+        }
+    }
+
+    /** The column at this index of the model. */
+    Column<T> column(int index) {
+        return columns.get(index);
     }
 
     private final List<Column<T>> columns;

@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.usarsim.wss.hub.core.Changes;
+import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.hub.core.WssPort;
@@ -125,6 +126,9 @@ final class ChangeApplier {
     }
 
     private List<PortTask> resolved(Changes out) {
+        if (!out.closes().isEmpty()) {
+            outbox.append(List.of(new HubEvent.LinksClosed(List.copyOf(out.closes()))));
+        }
         outbox.append(out.events());
         List<PortTask> tasks = new ArrayList<>(settling);
         settling.clear();

@@ -13,6 +13,7 @@ import java.time.format.DateTimeFormatter;
 import java.util.List;
 import java.util.logging.Logger;
 import java.util.stream.Collectors;
+import org.usarsim.wss.LogText;
 import org.usarsim.wss.QueuedWriter;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
@@ -28,7 +29,8 @@ import org.usarsim.wss.protocol.Strengths;
  * once caught up, it lets the next events gather for 20 ms before it writes again.
  * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
  * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
- * A field that needs it (a name with a comma, a quote, a CR or a LF) is quoted as RFC 4180 says.
+ * A field that needs it (a name with a comma, a quote or a LF) is quoted as RFC 4180 says, its
+ * control and format characters escaped as in the log ({@code \u001B}).
  * The queue and its thread are {@link QueuedWriter}'s, as the recording's.
  */
 public final class CsvEventLog implements WssEventListener, AutoCloseable {
@@ -102,9 +104,12 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     /**
      * A field as RFC 4180 writes it: as it is, unless it holds a comma, a double quote, a CR or a
      * LF (a robot name may: {@code INIT {Robot a,b}}); then between double quotes, each double quote
-     * in it doubled. A name never breaks the line into more fields or more lines.
+     * in it doubled. A name never breaks the line into more fields or more lines. Before that, the
+     * characters a terminal or a viewer would obey (ESC, the bidirectional overrides...) are
+     * escaped as the log escapes them ({@link LogText}), so that {@code cat} of the file shows them.
      */
-    static void appendField(StringBuilder text, String field) {
+    static void appendField(StringBuilder text, String raw) {
+        String field = LogText.escape(raw);
         boolean quote = false;
         for (int i = 0; i < field.length() && !quote; i++) {
             char c = field.charAt(i);
@@ -166,6 +171,11 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        event("UDP", from, to, datagrams, bytes, droppedBroken, droppedQueue, lost);
+    }
+
+    @Override
     public void pairForced(String first, String second, boolean up) {
         event("FORCED", first, second, up ? "UP" : "DOWN");
     }
@@ -173,6 +183,12 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     @Override
     public void pairReleased(String first, String second) {
         event("RELEASED", first, second);
+    }
+
+    /** An operator moved the replay: where it is now (s, to the millisecond), its speed, PLAY or PAUSE. Never limited, as the log's lines are. */
+    @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        event("REPLAY", Strengths.format(Math.round(timeSeconds * 1000) / 1000.0), Strengths.format(speed), playing ? "PLAY" : "PAUSE");
     }
 
     /** With links shaped: a pair's rate one way was set or changed (never per chunk). */

@@ -29,8 +29,8 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
-    public void say(Level level, String line) {
-        hubLog.log(level, line);
+    public void say(Level level, String kind, String line) {
+        warnings.say(hubLog, level, kind, null, line);
     }
 
     @Override
@@ -51,9 +51,14 @@ final class EventFanOut implements EventSink {
             try {
                 call.accept(listener);
             } catch (RuntimeException | LinkageError | AssertionError e) {
-                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+                listenerFailed(e);
             }
         }
+    }
+
+    /** A listener (a plugin's) that fails at every event would fill the log: limited as clients' warnings. */
+    private void listenerFailed(Throwable e) {
+        warnings.warn(LOG, "failed event listeners", null, "an event listener failed: " + e, e);
     }
 
     @Override
@@ -112,6 +117,11 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        each(l -> l.replayMoved(timeSeconds, speed, playing));
+    }
+
+    @Override
     public void pairForced(String first, String second, boolean up) {
         each(l -> l.pairForced(first, second, up));
     }
@@ -126,6 +136,11 @@ final class EventFanOut implements EventSink {
         each(l -> l.polled(poll));
     }
 
+    @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        each(l -> l.udpCounted(from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
+    }
+
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */
     @Override
     public void dataSent(String from, String to, int bytes) {
@@ -133,7 +148,7 @@ final class EventFanOut implements EventSink {
             try {
                 listener.dataSent(from, to, bytes);
             } catch (RuntimeException | LinkageError | AssertionError e) {
-                LOG.log(Level.WARNING, "an event listener failed: " + e, e);
+                listenerFailed(e);
             }
         }
     }

@@ -19,6 +19,7 @@ import org.usarsim.wss.hub.tcp.ControlListener;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
+import org.usarsim.wss.hub.udp.UdpRelay;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
@@ -61,6 +62,8 @@ public final class Hub implements AutoCloseable {
     /** Asks the model a few times a second what the shaped pairs' rates are now; null when links are not shaped. */
     private final Sampler sampler;
     private volatile ControlListener controlListener;
+    /** The fixed UDP ports' relays, made at Start (docs/fixed-ports.md). */
+    private volatile List<UdpRelay> relays = List.of();
 
     public Hub(HubConfig config, PropagationModel model) {
         this.config = config;
@@ -114,6 +117,14 @@ public final class Hub implements AutoCloseable {
         // Before the first robot can come; a start that failed forced nothing.
         config.forced().forEach((pair, force) -> controlSide.force(pair.first(), pair.second(), force,
                 config.pins().getOrDefault(pair, RatePin.NONE)));
+        try {
+            relays = FixedPortsStart.open(config, executor, answers, airtime, clock, events);
+        } catch (IOException | RuntimeException e) {
+            controlListener.close();
+            model.shutdown();
+            executor.close();
+            throw e;
+        }
         if (sampler != null) {
             sampler.start();
         }
@@ -141,6 +152,7 @@ public final class Hub implements AutoCloseable {
         if (sampler != null) {
             sampler.close();
         }
+        relays.forEach(UdpRelay::close);
         executor.close();
         warnings.close();
         LOG.info("WSS stopped");
@@ -193,7 +205,7 @@ public final class Hub implements AutoCloseable {
     /** The robots, the WSS ports, the established links and the pairs' statistics, all at one instant. */
     public HubSnapshot snapshot() {
         Airtime radios = config.shaping().on() ? airtime : null;
-        Snapshots.Copied copied = executor.locked(core -> Snapshots.copy(core, radios, clock.getAsLong()));
+        Snapshots.Copied copied = executor.locked(core -> Snapshots.copy(core, radios, relays, clock.getAsLong()));
         return Snapshots.complete(copied, answers, clock.getAsLong());
     }
 }

@@ -1,7 +1,6 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
-import java.net.UnknownHostException;
 import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.Map;
@@ -13,7 +12,9 @@ import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * How the hub runs.
+ * How the hub runs. Built one way: this canonical constructor, every component given (the
+ * application's from ConfigFile), then the {@code with...} methods for what the window or a test
+ * changes.
  *
  * @param bindAddress        the address the control port and every WSS port listen on
  *                           (the wildcard address: every interface)
@@ -31,10 +32,11 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * @param forced             the pairs forced down or up from the start (wss.force.down, wss.force.up)
  * @param pins               the rates and delays pinned with the pairs forced up from the start
  * @param shaping            how links are shaped (wss.shaping and its keys, docs/shaping.md)
+ * @param fixed              the declared robots and fixed ports (docs/fixed-ports.md)
  */
 public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
         boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int maxPortsPerAddress, int deadPeerSeconds,
-        Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping) {
+        Set<InetAddress> operators, Map<RobotPair, Force> forced, Map<RobotPair, RatePin> pins, ShapingConfig shaping, FixedSetup fixed) {
 
     /**
      * wss.maxPortsPerAddress's default: a full mesh of 100 robots simulated on one computer asks
@@ -43,54 +45,35 @@ public record HubConfig(InetAddress bindAddress, int controlPort, int chunkSize,
      */
     public static final int MAX_PORTS_PER_ADDRESS = 10_000;
 
-    /** The operators when none are configured: this machine's 127.0.0.1 (wss.operators' default). */
-    private static final Set<InetAddress> LOCAL_OPERATOR = Set.of(ipv4Loopback());
-
-    private static InetAddress ipv4Loopback() {
-        try {
-            return InetAddress.getByAddress(new byte[] {127, 0, 0, 1});
-        } catch (UnknownHostException e) {
-            throw new IllegalStateException("four bytes are an IPv4 address", e);
-        }
-    }
-
     public HubConfig {
         operators = Set.copyOf(operators);
         forced = Collections.unmodifiableMap(new LinkedHashMap<>(forced)); // forced at the start in this order
         pins = Map.copyOf(pins);
         Objects.requireNonNull(shaping, "shaping");
-    }
-
-    /** Links not shaped, no rate pinned, wss.maxPortsPerAddress at its default. */
-    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds,
-            Set<InetAddress> operators, Map<RobotPair, Force> forced) {
-        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, MAX_PORTS_PER_ADDRESS, deadPeerSeconds, operators, forced, Map.of(), ShapingConfig.OFF);
-    }
-
-    /** The operator at 127.0.0.1 only, and no pair forced. */
-    public HubConfig(InetAddress bindAddress, int controlPort, int chunkSize, int socketBuffer,
-            boolean matchSourceAddress, int portMemorySeconds, int maxPortsPerRobot, int deadPeerSeconds) {
-        this(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, deadPeerSeconds, LOCAL_OPERATOR, Map.of());
+        Objects.requireNonNull(fixed, "fixed");
     }
 
     /** The same, listening for robots on another control port (the window's "Listen on port:"). */
     public HubConfig withControlPort(int port) {
         return new HubConfig(bindAddress, port, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, fixed);
     }
 
     /** The same, with another cap on the WSS ports of the robots of one address. */
     public HubConfig withMaxPortsPerAddress(int ports) {
         return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, ports, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, ports, deadPeerSeconds, operators, forced, pins, shaping, fixed);
     }
 
     /** The same, with links shaped so (and these rates pinned from the start). */
     public HubConfig withShaping(ShapingConfig shaping, Map<RobotPair, RatePin> pins) {
         return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
-                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping);
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, fixed);
+    }
+
+    /** The same, with these robots declared and these fixed ports. */
+    public HubConfig withFixed(FixedSetup setup) {
+        return new HubConfig(bindAddress, controlPort, chunkSize, socketBuffer, matchSourceAddress, portMemorySeconds,
+                maxPortsPerRobot, maxPortsPerAddress, deadPeerSeconds, operators, forced, pins, shaping, setup);
     }
 }

@@ -92,7 +92,7 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     private Link newLink(WssPort port, SocketChannel socket, HubCore.Admission admission) throws IOException {
-        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock) : null;
+        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock, config.shaping().queueMs()) : null;
         return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), shaping);
     }
 

@@ -92,6 +92,11 @@ final class ModelSide implements RobotLinkModel {
             public void polled(ModelPoll poll) {
                 executor.announce(new HubEvent.Polled(poll));
             }
+
+            @Override
+            public void replayMoved(double timeSeconds, double speed, boolean playing) {
+                executor.announce(new HubEvent.ReplayMoved(timeSeconds, speed, playing));
+            }
         };
     }
 }

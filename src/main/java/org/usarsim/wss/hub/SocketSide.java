@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
+import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
@@ -28,6 +29,11 @@ abstract class SocketSide implements SocketRules {
     @Override
     public Descriptors descriptors() {
         return descriptors;
+    }
+
+    @Override
+    public void say(Logger log, String kind, InetAddress client, String message) {
+        warnings.say(log, Level.INFO, kind, client, message);
     }
 
     @Override

@@ -16,21 +16,38 @@ import org.usarsim.wss.net.LogLimiter;
  * <p>
  * {@link #info} is the same limit for the INFO lines a client causes (an operator's FORCE, with
  * the names it was given), kinds of their own.
+ * <p>
+ * {@link #say} limits every other line of the server's (registered, deregistered, connections
+ * established and terminated, WSS ports allocated, pairs changed...; issue 27): they come with
+ * a team's normal work, so a kind gets {@link #SAID_FIRST} lines from one address and
+ * {@link #SAID_ALL_FIRST} from all in an interval before the rest are counted, and every line is
+ * cut at {@link LogLimiter#MAX_MESSAGE} characters as warnings are.
  */
 final class WarningLimiter implements AutoCloseable {
 
     static final int FIRST = LogLimiter.FIRST;
     static final long INTERVAL_NS = LogLimiter.INTERVAL_NS;
+    /** Lines of one kind of {@link #say} from one address in an interval: a team's 20 robots on one machine. */
+    static final int SAID_FIRST = 20;
+    /** Lines of one kind of {@link #say} from all addresses together in an interval. */
+    static final int SAID_ALL_FIRST = 100;
 
     /** Runs a task after a delay: a timer thread in the server, by hand in a test. */
     interface Timer extends LogLimiter.Timer {
     }
 
     private final LogLimiter limiter;
+    private final LogLimiter said;
 
     /** {@code first} from one address, {@code allFirst} from all, per kind and interval. */
     WarningLimiter(int first, int allFirst, long intervalNs, LongSupplier clock, Timer timer) {
+        this(first, allFirst, SAID_FIRST, SAID_ALL_FIRST, intervalNs, clock, timer);
+    }
+
+    /** As above, with {@code saidFirst} and {@code saidAllFirst} for {@link #say}. */
+    WarningLimiter(int first, int allFirst, int saidFirst, int saidAllFirst, long intervalNs, LongSupplier clock, Timer timer) {
         this.limiter = new LogLimiter(first, allFirst, intervalNs, clock, timer);
+        this.said = new LogLimiter(saidFirst, saidAllFirst, intervalNs, clock, timer);
     }
 
     /** The server's: {@link #FIRST} a minute, the summaries written by a {@link #daemonTimer()}. */
@@ -86,14 +103,27 @@ final class WarningLimiter implements AutoCloseable {
         limiter.log(log, Level.INFO, kind, null, message, null);
     }
 
+    /**
+     * A line of the server's own about what a client did (a robot registered, a connection
+     * established), at {@code level}: written, or counted for a summary line of that level
+     * ({@code registered robots: 480 more like this from 127.0.0.5 in the last 60 s}).
+     *
+     * @param source the address of the client it is about; null when none is known
+     */
+    void say(Logger log, Level level, String kind, InetAddress source, String message) {
+        said.log(log, level, kind, source, message, null);
+    }
+
     /** Writes the summary of every interval that has ended. */
     void flush() {
         limiter.flush();
+        said.flush();
     }
 
     /** Writes the summary of every interval, ended or not, and stops the timer. */
     @Override
     public void close() {
         limiter.close();
+        said.close();
     }
 }

@@ -12,17 +12,19 @@ public enum DialogLayout {
     GENERATED,
 
     /**
-     * The DistanceOnly model's layout (the original's): "USARSim Connection", "Signal Strength
-     * Computation Parameters", the cutoff distance computed both ways, and "Link Stability". It
-     * shows usarsim.host, usarsim.port, usarsim.interval, usarsim.timeout, distance.cutoff,
-     * distance.n, distance.pd0, distance.d0, distance.margin and distance.holdTime: a model that
-     * does not declare every one of them gets {@link #GENERATED}.
+     * The DistanceOnly model's layout (the original's, with where positions come from): "Positions",
+     * "USARSim Connection", "rosbridge", "Signal Strength Computation Parameters", the cutoff
+     * distance computed both ways, and "Link Stability". It shows positions, positions.interval,
+     * usarsim.host, usarsim.port, usarsim.timeout, the rosbridge.* keys (url, topic, type, frame,
+     * names, stale, maxMessage), distance.cutoff, distance.n, distance.pd0, distance.d0,
+     * distance.margin and distance.holdTime: a model that does not declare every one of them gets
+     * {@link #GENERATED}.
      */
     DISTANCE,
 
     /**
-     * {@link #DISTANCE} with an "Obstacles" group: obstacle.attenuation and obstacle.cacheDistance
-     * too (the Obstacle model's).
+     * {@link #DISTANCE} with an "Obstacles" group: obstacle.attenuation, obstacle.cacheDistance,
+     * obstacle.walls and rosbridge.map too (the Obstacle model's).
      */
     DISTANCE_AND_OBSTACLES
 }

@@ -68,6 +68,7 @@ public final class Setting {
     private String noun;
     private String note;
     private boolean emptyAllowed;
+    private String alias;
 
     private Setting(String key, String label, Type type, String defaultValue, List<String> choices) {
         this.key = Objects.requireNonNull(key, "key");
@@ -93,6 +94,7 @@ public final class Setting {
         copy.noun = noun;
         copy.note = note;
         copy.emptyAllowed = emptyAllowed;
+        copy.alias = alias;
         return copy;
     }
 
@@ -213,6 +215,16 @@ public final class Setting {
         return copy;
     }
 
+    /**
+     * The key this setting had before: a properties file, stored preferences and a model's
+     * {@code configure} may still give the value under it ({@link #checked}, the server's file).
+     */
+    public Setting alias(String oldKey) {
+        Setting copy = copy();
+        copy.alias = Objects.requireNonNull(oldKey, "oldKey");
+        return copy;
+    }
+
     // ---- the declaration ----
 
     public String key() {
@@ -243,6 +255,11 @@ public final class Setting {
 
     public String help() {
         return help;
+    }
+
+    /** The key this setting had before ({@link #alias(String)}), or null. */
+    public String alias() {
+        return alias;
     }
 
     // ---- the rule ----
@@ -396,7 +413,8 @@ public final class Setting {
 
     /**
      * The given values over the declared defaults, every declared key present (other given keys
-     * kept as they are), each declared one checked by its rule: what a model takes at its start.
+     * kept as they are), each declared one checked by its rule: what a model takes at its start. A
+     * value given under a setting's {@linkplain #alias() old key} only is taken as its key's.
      *
      * @throws IllegalArgumentException for the first refused value, its message
      *                                  {@code key: 'value' is not ...}
@@ -404,6 +422,10 @@ public final class Setting {
     public static Map<String, String> checked(Collection<Setting> declared, Map<String, String> given) {
         Map<String, String> values = new LinkedHashMap<>(given);
         for (Setting setting : declared) {
+            if (setting.alias() != null && values.containsKey(setting.alias())) {
+                String old = values.remove(setting.alias());
+                values.putIfAbsent(setting.key(), old);
+            }
             String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue());
             String problem = setting.problem(value);
             if (problem != null) {
@@ -423,6 +445,11 @@ public final class Setting {
     /** The setting of this key in the list, or null. */
     public static Setting find(List<Setting> settings, String key) {
         return settings.stream().filter(setting -> setting.key().equals(key)).findFirst().orElse(null);
+    }
+
+    /** The setting of the list whose {@linkplain #alias() old key} this is, or null. */
+    public static Setting findAlias(Collection<Setting> settings, String oldKey) {
+        return settings.stream().filter(setting -> oldKey.equals(setting.alias())).findFirst().orElse(null);
     }
 
     /**

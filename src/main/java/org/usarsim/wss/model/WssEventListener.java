@@ -32,6 +32,14 @@ public interface WssEventListener {
     default void dataSent(String from, String to, int bytes) {
     }
 
+    /**
+     * A fixed UDP port's datagrams from {@code from} to {@code to} since its last such call (at most
+     * one a second, none for a second with nothing): sent (and their bytes), dropped because the pair
+     * was broken, dropped because its shaped queue was full, lost to the signal (docs/fixed-ports.md).
+     */
+    default void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+    }
+
     /** A DNS gave connections from {@code from} to {@code to}'s {@code targetPort} their own WSS port. */
     default void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
     }
@@ -57,6 +65,14 @@ public interface WssEventListener {
 
     /** An operator gave the forced pair (names in ascending order) back to the model. */
     default void pairReleased(String first, String second) {
+    }
+
+    /**
+     * The replay was moved (docs/replay.md): an operator jumped, changed the speed, played or
+     * paused it (the window's time bar, {@code REPLAY}); where it is now (seconds from the
+     * recording's start), how fast, and whether it plays. Only for a move that changed something.
+     */
+    default void replayMoved(double timeSeconds, double speed, boolean playing) {
     }
 
     /**

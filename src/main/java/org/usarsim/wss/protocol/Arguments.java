@@ -15,25 +15,37 @@ public final class Arguments {
     /** A plain decimal number: no NaN, no Infinity, no hexadecimal, no d or f suffix as Java would take. */
     private static final Pattern NUMBER = Pattern.compile("[-+]?(\\d+(\\.\\d*)?|\\.\\d+)([eE][-+]?\\d+)?");
 
+    /**
+     * The longest robot name, in characters (UTF-16 units, as Java counts them): a name is in
+     * every log line and event of its robot, so its length bounds theirs (issue 27).
+     */
+    public static final int MAX_NAME = 256;
+
     private Arguments() {
     }
 
-    /** The {@code Robot} field: present, not empty, no whitespace inside. */
+    /** The {@code Robot} field: present, not empty, no whitespace inside, at most {@link #MAX_NAME} characters. */
     public static String robot(Command command) throws ProtocolException {
-        return name(command.value("Robot"), Replies.NAME_MUST_NOT_BE_EMPTY, Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE);
+        return name(command.value("Robot"), Replies.NAME_MUST_NOT_BE_EMPTY, Replies.NAME_MUST_NOT_CONTAIN_WHITESPACE,
+                Replies.NAME_TOO_LONG);
     }
 
     /** FORCE's {@code Peer} field, the other robot of the pair: checked as {@link #robot}, with its own reasons. */
     public static String peer(Command command) throws ProtocolException {
-        return name(command.value("Peer"), Replies.PEER_NAME_MUST_NOT_BE_EMPTY, Replies.PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE);
+        return name(command.value("Peer"), Replies.PEER_NAME_MUST_NOT_BE_EMPTY, Replies.PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE,
+                Replies.PEER_NAME_TOO_LONG);
     }
 
-    private static String name(String name, String emptyReason, String whitespaceReason) throws ProtocolException {
+    private static String name(String name, String emptyReason, String whitespaceReason, String tooLongReason)
+            throws ProtocolException {
         if (name == null || name.isEmpty()) {
             throw new ProtocolException(emptyReason);
         }
         if (name.chars().anyMatch(Character::isWhitespace)) {
             throw new ProtocolException(whitespaceReason);
+        }
+        if (name.length() > MAX_NAME) {
+            throw new ProtocolException(tooLongReason);
         }
         return name;
     }

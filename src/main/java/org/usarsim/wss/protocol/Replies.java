@@ -28,6 +28,8 @@ public final class Replies {
     public static final String MALFORMED_NESTED_BRACE = "Malformed.Line.Nested.Brace";
     public static final String MALFORMED_EMPTY_SEGMENT = "Malformed.Line.Empty.Segment";
     public static final String NAME_MUST_NOT_CONTAIN_WHITESPACE = "Robot.Name.Must.Not.Contain.Whitespace";
+    /** A name longer than {@link Arguments#MAX_NAME} characters (issue 27: names reach every log line). */
+    public static final String NAME_TOO_LONG = "Robot.Name.Must.Be.At.Most.256.Characters";
     /** A fault of the server's own (logged as a WARNING); the connection stays usable. */
     public static final String INTERNAL_ERROR = "Server.Internal.Error";
 
@@ -35,6 +37,7 @@ public final class Replies {
     public static final String NOT_AN_OPERATOR = "Not.An.Operator.Address";
     public static final String PEER_NAME_MUST_NOT_BE_EMPTY = "Peer.Name.Must.Not.Be.Empty";
     public static final String PEER_NAME_MUST_NOT_CONTAIN_WHITESPACE = "Peer.Name.Must.Not.Contain.Whitespace";
+    public static final String PEER_NAME_TOO_LONG = "Peer.Name.Must.Be.At.Most.256.Characters";
     public static final String PEER_MUST_NOT_BE_THE_ROBOT = "Peer.Must.Not.Be.The.Robot";
     public static final String STATE_MUST_BE_DOWN_UP_OR_MODEL = "State.Must.Be.Down.Up.Or.Model";
     /** FORCE's {@code Rate}, with links shaped (docs/shaping.md): a bit rate such as 512k, 1M or 54M, more than 0. */

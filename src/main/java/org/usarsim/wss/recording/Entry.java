@@ -54,8 +54,20 @@ public sealed interface Entry {
     record Release(long millis, String first, String second) implements Entry {
     }
 
+    /** An operator moved the replay being recorded: where it is now (seconds), its speed, whether it plays. */
+    record Replay(long millis, double timeSeconds, double speed, boolean playing) implements Entry {
+    }
+
     /** With links shaped: the rate one way, set or changed. */
     record Rate(long millis, String from, String to, long bitsPerSecond) implements Entry {
+    }
+
+    /**
+     * A fixed UDP port's datagrams one way since its last such entry (docs/fixed-ports.md): sent,
+     * their bytes, dropped because the pair was broken, dropped by its shaped queue, lost to the signal.
+     */
+    record Udp(long millis, String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost)
+            implements Entry {
     }
 
     /** Entries the recorder could not queue since the last such line (its queue was full). */

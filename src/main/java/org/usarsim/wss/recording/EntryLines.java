@@ -77,8 +77,13 @@ public final class EntryLines {
             words(out, t, "force", escape(f.first()), escape(f.second()), f.up() ? "up" : "down");
         } else if (entry instanceof Entry.Release r) {
             words(out, t, "release", escape(r.first()), escape(r.second()));
+        } else if (entry instanceof Entry.Replay r) {
+            words(out, t, "replay", Strengths.format(Math.round(r.timeSeconds() * 1000) / 1000.0), Strengths.format(r.speed()), r.playing() ? "play" : "pause");
         } else if (entry instanceof Entry.Rate r) {
             words(out, t, "rate", escape(r.from()), escape(r.to()), Long.toString(r.bitsPerSecond()));
+        } else if (entry instanceof Entry.Udp u) {
+            words(out, t, "udp", escape(u.from()), escape(u.to()), Long.toString(u.datagrams()), Long.toString(u.bytes()),
+                    Long.toString(u.droppedBroken()), Long.toString(u.droppedQueue()), Long.toString(u.lost()));
         } else if (entry instanceof Entry.Dropped d) {
             words(out, t, "dropped", Long.toString(d.count()));
         } else if (entry instanceof Entry.End) {
@@ -281,9 +286,21 @@ public final class EntryLines {
                 fields(f, 4);
                 yield new Whole(new Entry.Release(t, unescape(f[2]), unescape(f[3])));
             }
+            case "replay" -> {
+                fields(f, 5);
+                if (!f[4].equals("play") && !f[4].equals("pause")) {
+                    throw new IllegalArgumentException("a replay is play or pause: " + shorten(text));
+                }
+                yield new Whole(new Entry.Replay(t, number(f[2]), number(f[3]), f[4].equals("play")));
+            }
             case "rate" -> {
                 fields(f, 5);
                 yield new Whole(new Entry.Rate(t, unescape(f[2]), unescape(f[3]), whole(f[4])));
+            }
+            case "udp" -> {
+                fields(f, 9);
+                yield new Whole(new Entry.Udp(t, unescape(f[2]), unescape(f[3]), whole(f[4]), whole(f[5]), whole(f[6]), whole(f[7]),
+                        whole(f[8])));
             }
             case "dropped" -> {
                 fields(f, 3);

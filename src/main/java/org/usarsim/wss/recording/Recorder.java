@@ -158,7 +158,8 @@ public final class Recorder implements WssEventListener, AutoCloseable {
 
     /** A new recording's file in {@code folder}, named by the time now: {@code run-yyyy.MM.dd-HH.mm.ss.SSS.rec} (the window's Record). */
     public static Path runFileIn(Path folder) {
-        return folder.resolve("run-" + RUN_TIME.format(LocalDateTime.now()) + ".rec");
+        // Normalized: the log says /some/dir/run-....rec, not /some/dir/./run-....rec.
+        return folder.resolve("run-" + RUN_TIME.format(LocalDateTime.now()) + ".rec").normalize();
     }
 
     /** The file being written (not the one asked for when that one existed). */
@@ -239,8 +240,18 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     @Override
+    public void replayMoved(double timeSeconds, double speed, boolean playing) {
+        offer(new Entry.Replay(millis(), timeSeconds, speed, playing));
+    }
+
+    @Override
     public void rateChanged(String from, String to, long bitsPerSecond) {
         offer(new Entry.Rate(millis(), from, to, bitsPerSecond));
+    }
+
+    @Override
+    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+        offer(new Entry.Udp(millis(), from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
     }
 
     /** A poll: its kicks, its walls when they changed and the poll itself, at the time it is offered. */

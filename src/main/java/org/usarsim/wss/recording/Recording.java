@@ -1,9 +1,15 @@
 package org.usarsim.wss.recording;
 
 import java.util.Collections;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
+import java.util.Set;
 import java.util.SortedSet;
 import java.util.TreeSet;
+import org.usarsim.wss.model.ModelPoll;
+import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Wall;
 
 /**
@@ -43,6 +49,25 @@ public record Recording(Header header, List<Entry.Poll> polls, List<Entry.Walls>
     /** The poll's time (without reading its rows). */
     public long pollMillis(int index) {
         return polls instanceof LazyPolls lazy ? lazy.millis(index) : polls.get(index).millis();
+    }
+
+    /**
+     * Each pair's last row at or before the poll at {@code index}: the state it was last recorded
+     * in (a pair of robots that left the recorded run keeps theirs). A pair no poll up to there
+     * has is left out. Reads the polls back from {@code index}, only as far as the oldest found.
+     */
+    public Map<RobotPair, ModelPoll.Pair> lastRows(int index, Set<RobotPair> pairs) {
+        Map<RobotPair, ModelPoll.Pair> found = new HashMap<>();
+        Set<RobotPair> wanted = new HashSet<>(pairs);
+        for (int i = index; i >= 0 && !wanted.isEmpty(); i--) {
+            for (ModelPoll.Pair row : polls.get(i).pairs()) {
+                RobotPair pair = RobotPair.of(row.first(), row.second());
+                if (wanted.remove(pair)) {
+                    found.put(pair, row);
+                }
+            }
+        }
+        return found;
     }
 
     /** The walls known at {@code millis}: the last set given at or before it; none before the first. */

@@ -112,7 +112,11 @@ public final class RecordingReader {
     private Header header(ByteLines lines) throws RecordingException {
         String first = lines.next() ? lines.text() : null;
         lineNumber = 1;
-        if (first == null || !first.startsWith(EntryLines.MAGIC + " ")) {
+        if (first == null) {
+            throw new RecordingException(file + " is empty: not a WSS recording (one starts with " + EntryLines.MAGIC + " "
+                    + EntryLines.VERSION + ")");
+        }
+        if (!first.startsWith(EntryLines.MAGIC + " ")) {
             throw new RecordingException(file + " is not a WSS recording (its first line is not "
                     + EntryLines.MAGIC + " " + EntryLines.VERSION + ")");
         }

@@ -1,9 +1,11 @@
 package org.usarsim.wss.replay;
 
+import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -12,20 +14,18 @@ import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import java.util.logging.Level;
-import java.util.logging.Logger;
 import org.usarsim.wss.model.ModelInputException;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.simulator.PollStep;
+import org.usarsim.wss.model.simulator.PollingModel;
 import org.usarsim.wss.model.simulator.ReportedRobot;
 import org.usarsim.wss.recording.Entry;
 import org.usarsim.wss.recording.Recording;
@@ -46,7 +46,7 @@ import org.usarsim.wss.recording.RecordingReader;
  * of speed or play wakes it at once) and when the registered robots change, so that a robot that
  * registers while the replay holds still is decided too.
  */
-public final class ReplayPropagationModel implements PropagationModel {
+public final class ReplayPropagationModel extends PollingModel {
 
     /** How long the replay's thread waits at most before it looks again. */
     private static final long TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(20);
@@ -61,17 +61,11 @@ public final class ReplayPropagationModel implements PropagationModel {
             Setting.bool("replay.loop", "Loop", false)
                     .help("At the end, start again from 0; otherwise the replay stops there and holds its last poll"));
 
-    private final Logger log = Logger.getLogger(ReplayPropagationModel.class.getName());
     private final LongSupplier clock;
     private final Controls controls = new Controls();
 
-    /** The values given by {@link #configure}, over the declared defaults: checked at each start. */
-    private volatile Map<String, String> given = Map.of();
-    private volatile RobotLinkModel linkModel;
-    private volatile WssEventListener listener = new WssEventListener() {
-    };
-    /** The replay of the current run, from a start to its shutdown; null while stopped. */
-    private volatile Player player;
+    /** The replay of the current run, from a start to its shutdown; {@link Run#STOPPED} while stopped. */
+    private volatile Run run = Run.STOPPED;
     /** The poll applied last, swapped whole: GETSS, DNS, accepts and the map read it. */
     private volatile Applied applied = Applied.NONE;
     /** The recording's cutoff (its distance.cutoff setting), NaN when it has none. */
@@ -98,23 +92,6 @@ public final class ReplayPropagationModel implements PropagationModel {
         return SETTINGS;
     }
 
-    @Override
-    public void configure(ModelSettings settings) {
-        Map<String, String> values = new HashMap<>(given);
-        values.putAll(settings.asMap());
-        given = Map.copyOf(values);
-    }
-
-    @Override
-    public void setRobotLinkModel(RobotLinkModel linkModel) {
-        this.linkModel = linkModel;
-    }
-
-    @Override
-    public void setEventListener(WssEventListener listener) {
-        this.listener = listener;
-    }
-
     /**
      * Reads the recording and starts replaying it.
      *
@@ -123,12 +100,10 @@ public final class ReplayPropagationModel implements PropagationModel {
      */
     @Override
     public synchronized void start() throws ModelStartException {
-        if (player != null) {
+        if (isActive()) {
             return;
         }
-        if (linkModel == null) {
-            throw new ModelStartException("no server to act on (setRobotLinkModel was not called)");
-        }
+        RobotLinkModel server = server();
         ModelSettings values = checked();
         String file = values.getString("replay.file", "");
         if (file.isEmpty()) {
@@ -156,13 +131,13 @@ public final class ReplayPropagationModel implements PropagationModel {
         cutoff = cutoffOf(recording);
         applied = Applied.NONE;
         tell(file, recording, startMillis, speed, loop);
-        player = new Player(recording, new ReplayClock(recording.durationMillis(), loop, startMillis, speed, clock.getAsLong()));
+        run = new Player(server, recording, new ReplayClock(recording.durationMillis(), loop, startMillis, speed, clock.getAsLong()));
     }
 
     /** The given values over the declared defaults, each by its rule. */
     private ModelSettings checked() throws ModelInputException {
         Map<String, String> stripped = new LinkedHashMap<>();
-        given.forEach((key, value) -> stripped.put(key, value.strip()));
+        given().forEach((key, value) -> stripped.put(key, value.strip()));
         try {
             return new ModelSettings(Setting.checked(SETTINGS, stripped));
         } catch (IllegalArgumentException e) {
@@ -202,19 +177,17 @@ public final class ReplayPropagationModel implements PropagationModel {
     /** Stops the replay's thread; the pairs stay as the last poll left them until the server closes them. */
     @Override
     public void shutdown() {
-        Player stopping;
+        Run stopping;
         synchronized (this) {
-            stopping = player;
-            player = null;
+            stopping = run;
+            run = Run.STOPPED;
         }
-        if (stopping != null) {
-            stopping.stop();
-        }
+        stopping.stop();
     }
 
     @Override
     public boolean isActive() {
-        return player != null;
+        return run != Run.STOPPED;
     }
 
     /** The recorded strength of the pair at the poll applied last (the same both ways); NaN when the poll has no such pair. */
@@ -244,8 +217,7 @@ public final class ReplayPropagationModel implements PropagationModel {
     /** The walls recorded at or before the replay's time. */
     @Override
     public List<Wall> walls() {
-        Player running = player;
-        return running == null ? List.of() : running.recording.wallsAt(running.millis());
+        return run.walls();
     }
 
     /** The recorded run's cutoff (its distance.cutoff setting); NaN when it had none. */
@@ -266,54 +238,42 @@ public final class ReplayPropagationModel implements PropagationModel {
         return String.format(java.util.Locale.ROOT, "%02d:%02d", seconds / 60, seconds % 60);
     }
 
-    /** The controls, for the window's time bar and the operator's REPLAY command: they act on the running replay. */
+    /** The controls, for the window's time bar and the operator's {@code REPLAY} command: they act on the running replay. */
     private final class Controls implements Replay {
 
         @Override
         public double durationSeconds() {
-            Player running = player;
-            return running == null ? 0 : running.recording.durationMillis() / 1000.0;
+            return run.durationSeconds();
         }
 
         @Override
         public double timeSeconds() {
-            Player running = player;
-            return running == null ? 0 : running.time() / 1000.0;
+            return run.timeSeconds();
         }
 
         @Override
         public double pollSeconds() {
-            Player running = player;
-            int index = applied.index();
-            return running == null || index < 0 ? 0 : running.recording.pollMillis(index) / 1000.0;
+            return run.pollSeconds();
         }
 
         @Override
         public double speed() {
-            Player running = player;
-            return running == null ? 1 : running.speed();
+            return run.speed();
         }
 
         @Override
         public boolean playing() {
-            Player running = player;
-            return running != null && running.playing();
+            return run.playing();
         }
 
         @Override
         public void play() {
-            Player running = player;
-            if (running != null) {
-                running.play();
-            }
+            run.play();
         }
 
         @Override
         public void pause() {
-            Player running = player;
-            if (running != null) {
-                running.pause();
-            }
+            run.pause();
         }
 
         @Override
@@ -321,24 +281,81 @@ public final class ReplayPropagationModel implements PropagationModel {
             if (!(times >= MIN_SPEED && times <= MAX_SPEED)) {
                 throw new IllegalArgumentException("a speed of " + times + " is not from " + MIN_SPEED + " to " + MAX_SPEED);
             }
-            Player running = player;
-            if (running != null) {
-                running.speed(times);
-            }
+            run.speed(times);
         }
 
         @Override
         public void jump(double seconds) {
-            double duration = durationSeconds();
+            Run running = run;
+            double duration = running.durationSeconds();
             if (!(seconds >= 0 && seconds <= duration)) {
                 throw new IllegalArgumentException(seconds + " s is not in the recording (0 to " + duration + " s)");
             }
-            Player running = player;
-            if (running != null) {
-                // The duration in seconds times 1000 may come back a hair above it in milliseconds.
-                running.jump(Math.min(seconds * 1000, running.recording.durationMillis()));
-            }
+            running.jump(seconds);
         }
+    }
+
+    /** A run of the replay as the controls and the map see it: the {@link Player} from a start to its shutdown, or none. */
+    private interface Run extends Replay {
+
+        /** No replay: nothing to play, its time 0, at speed 1; the controls do nothing. */
+        Run STOPPED = new Run() {
+            @Override
+            public double durationSeconds() {
+                return 0;
+            }
+
+            @Override
+            public double pollSeconds() {
+                return 0;
+            }
+
+            @Override
+            public double timeSeconds() {
+                return 0;
+            }
+
+            @Override
+            public double speed() {
+                return 1;
+            }
+
+            @Override
+            public boolean playing() {
+                return false;
+            }
+
+            @Override
+            public void play() {
+            }
+
+            @Override
+            public void pause() {
+            }
+
+            @Override
+            public void speed(double times) {
+            }
+
+            @Override
+            public void jump(double seconds) {
+            }
+
+            @Override
+            public List<Wall> walls() {
+                return List.of();
+            }
+
+            @Override
+            public void stop() {
+            }
+        };
+
+        /** The walls recorded at or before the replay's time. */
+        List<Wall> walls();
+
+        /** Stops the run's thread. */
+        void stop();
     }
 
     // ---- the replay's thread ----
@@ -347,8 +364,9 @@ public final class ReplayPropagationModel implements PropagationModel {
      * One run of the replay, from a start to its shutdown: the recording, its clock (guarded by
      * this player) and the thread that applies the polls.
      */
-    private final class Player implements Runnable {
+    private final class Player implements Run, Runnable {
 
+        private final RobotLinkModel server;
         private final Recording recording;
         private final ReplayClock replayClock;
         private final Thread thread;
@@ -362,7 +380,8 @@ public final class ReplayPropagationModel implements PropagationModel {
         /** A failure already logged (a listener that throws); null after a good poll. */
         private String failure;
 
-        Player(Recording recording, ReplayClock replayClock) {
+        Player(RobotLinkModel server, Recording recording, ReplayClock replayClock) {
+            this.server = server;
             this.recording = recording;
             this.replayClock = replayClock;
             thread = new Thread(this, "replay");
@@ -370,41 +389,92 @@ public final class ReplayPropagationModel implements PropagationModel {
             thread.start();
         }
 
-        synchronized long millis() {
-            return replayClock.millis(clock.getAsLong());
+        @Override
+        public double durationSeconds() {
+            return recording.durationMillis() / 1000.0;
         }
 
-        synchronized double time() {
-            return replayClock.time(clock.getAsLong());
+        @Override
+        public synchronized double timeSeconds() {
+            return replayClock.time(clock.getAsLong()) / 1000.0;
         }
 
-        synchronized double speed() {
+        /** The poll applied last, as GETSS reads it (the model's {@code applied}, swapped whole by this thread). */
+        @Override
+        public double pollSeconds() {
+            int index = applied.index();
+            return index < 0 ? 0 : recording.pollMillis(index) / 1000.0;
+        }
+
+        @Override
+        public synchronized double speed() {
             return replayClock.speed();
         }
 
-        synchronized boolean playing() {
+        @Override
+        public synchronized boolean playing() {
             return replayClock.playing(clock.getAsLong());
         }
 
-        synchronized void play() {
-            replayClock.play(clock.getAsLong());
-            wake();
+        @Override
+        public void play() {
+            boolean changed;
+            synchronized (this) {
+                changed = !replayClock.playing(clock.getAsLong());
+                replayClock.play(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
-        synchronized void pause() {
-            replayClock.pause(clock.getAsLong());
-            wake();
+        @Override
+        public void pause() {
+            boolean changed;
+            synchronized (this) {
+                changed = replayClock.playing(clock.getAsLong());
+                replayClock.pause(clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
-        synchronized void speed(double times) {
-            replayClock.speed(times, clock.getAsLong());
-            wake();
+        @Override
+        public void speed(double times) {
+            boolean changed;
+            synchronized (this) {
+                changed = times != replayClock.speed();
+                replayClock.speed(times, clock.getAsLong());
+                wake();
+            }
+            moved(changed);
         }
 
-        synchronized void jump(double millis) {
-            replayClock.jump(millis, clock.getAsLong());
-            log.fine("replay: jumped to " + minutesSeconds((long) millis));
-            wake();
+        @Override
+        public void jump(double seconds) {
+            synchronized (this) {
+                // The duration in seconds times 1000 may come back a hair above it in milliseconds.
+                double millis = Math.min(seconds * 1000, recording.durationMillis());
+                replayClock.jump(millis, clock.getAsLong());
+                log.fine("replay: jumped to " + minutesSeconds((long) millis));
+                wake();
+            }
+            moved(true);
+        }
+
+        /**
+         * Tells the listeners where the replay is after a move that changed something (the event
+         * log and the recording keep every one: the log's lines are limited), outside this
+         * player's lock: the listeners take the server's.
+         */
+        private void moved(boolean changed) {
+            if (changed) {
+                listener().replayMoved(timeSeconds(), speed(), playing());
+            }
+        }
+
+        @Override
+        public synchronized List<Wall> walls() {
+            return recording.wallsAt(replayClock.millis(clock.getAsLong()));
         }
 
         private void wake() {
@@ -412,7 +482,8 @@ public final class ReplayPropagationModel implements PropagationModel {
             notifyAll();
         }
 
-        void stop() {
+        @Override
+        public void stop() {
             synchronized (this) {
                 stopped = true;
                 notifyAll();
@@ -438,12 +509,12 @@ public final class ReplayPropagationModel implements PropagationModel {
                 // Before the first poll, the first: a replay that starts or jumps to 0 shows the run's beginning.
                 int index = Math.max(0, recording.pollIndexAt(millis));
                 try {
-                    List<String> registered = linkModel.getListOfRegisteredRobots();
+                    List<String> registered = server.getListOfRegisteredRobots();
                     if (index != appliedIndex || !registered.equals(appliedTo)) {
                         apply(index, registered);
                     }
                     failure = null;
-                } catch (RuntimeException | Error e) {
+                } catch (IOException | RuntimeException | Error e) {
                     failed(e);
                 }
                 if (atEnd && !saidEnd) {
@@ -474,10 +545,10 @@ public final class ReplayPropagationModel implements PropagationModel {
         }
 
         /**
-         * Applies the poll as a simulator model applies its own: kicks, then the state of every
-         * pair of present robots published, announced ({@code polled}) and set in one go.
+         * Applies the poll as a simulator model applies its own ({@link #applyPoll}), with the
+         * recorded state of every pair of present robots.
          */
-        private void apply(int index, List<String> registeredBefore) {
+        private void apply(int index, List<String> registeredBefore) throws IOException {
             Entry.Poll poll = recording.polls().get(index);
             Map<String, ReportedRobot> listed = new LinkedHashMap<>();
             Map<String, ModelPoll.Robot> robots = new HashMap<>();
@@ -486,50 +557,35 @@ public final class ReplayPropagationModel implements PropagationModel {
                 listed.put(robot.name(), new ReportedRobot(robot.name(), at.x(), at.y(), at.z(), robot.batteryEmpty()));
                 robots.put(robot.name(), robot);
             }
-            List<ModelPoll.Kick> kicks = new ArrayList<>();
-            for (PollStep.Kick kick : PollStep.kicks(registeredBefore, listed, true)) {
-                if (stopped) {
-                    return;
-                }
-                log.info("kicking " + kick.robot() + ": " + kick.reason("recording") + " at " + minutesSeconds(poll.millis()));
-                if (kick.batteryEmpty()) {
-                    listener.robotOutOfBattery(kick.robot());
-                }
-                linkModel.kickOutRobot(kick.robot());
-                kicks.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
+            List<String> appliedNow = applyPoll(new Poll(registeredBefore, listed, true, "recording", " at " + minutesSeconds(poll.millis()),
+                    recording.wallsAt(poll.millis()), () -> stopped), present -> {
+                        // A pair this poll has no row for keeps the state it was last recorded in (its robots left
+                        // the recorded run before its end); one never recorded (the two were never there together) is up.
+                        List<RobotPair> pairs = PollStep.pairs(present);
+                        Map<RobotPair, ModelPoll.Pair> rows = new HashMap<>();
+                        poll.pairs().forEach(row -> rows.put(RobotPair.of(row.first(), row.second()), row));
+                        Set<RobotPair> missing = new HashSet<>(pairs);
+                        missing.removeAll(rows.keySet());
+                        if (!missing.isEmpty() && index > 0) {
+                            rows.putAll(recording.lastRows(index - 1, missing));
+                        }
+                        List<ModelPoll.Pair> decided = new ArrayList<>();
+                        for (RobotPair pair : pairs) {
+                            ModelPoll.Pair row = rows.get(pair);
+                            decided.add(row != null ? new ModelPoll.Pair(pair.first(), pair.second(), row.strength(), row.obstacles(), row.live())
+                                    : new ModelPoll.Pair(pair.first(), pair.second(), Double.NaN, Double.NaN, true));
+                        }
+                        if (stopped) {
+                            return null;
+                        }
+                        // Only now, whole: a GETSS meanwhile answers from the poll before.
+                        applied = new Applied(index, robots, rows);
+                        return decided;
+                    });
+            if (appliedNow != null) {
+                appliedIndex = index;
+                appliedTo = appliedNow;
             }
-            List<String> registered = linkModel.getListOfRegisteredRobots();
-            Map<RobotPair, ModelPoll.Pair> recorded = new HashMap<>();
-            poll.pairs().forEach(pair -> recorded.put(RobotPair.of(pair.first(), pair.second()), pair));
-            // A pair the poll has no row for (one of the two had not registered when it was recorded) stays up.
-            List<ModelPoll.Pair> decided = new ArrayList<>();
-            for (RobotPair pair : PollStep.pairs(PollStep.present(registered, listed))) {
-                ModelPoll.Pair row = recorded.get(pair);
-                decided.add(row != null ? new ModelPoll.Pair(pair.first(), pair.second(), row.strength(), row.obstacles(), row.live())
-                        : new ModelPoll.Pair(pair.first(), pair.second(), Double.NaN, Double.NaN, true));
-            }
-            if (stopped) {
-                return;
-            }
-            // Only now, whole: a GETSS meanwhile answers from the poll before.
-            applied = new Applied(index, robots, recorded);
-            listener.polled(new ModelPoll(poll.robots(), kicks, decided, recording.wallsAt(poll.millis())));
-            Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
-            decided.forEach(pair -> inRange.put(RobotPair.of(pair.first(), pair.second()), pair.live()));
-            Set<RobotPair> changed = linkModel.applyLinkStates(inRange);
-            for (ModelPoll.Pair pair : decided) {
-                if (!changed.contains(RobotPair.of(pair.first(), pair.second()))) {
-                    continue;
-                }
-                if (pair.live()) {
-                    listener.connectionInRange(pair.first(), pair.second());
-                } else {
-                    double distance = robots.get(pair.first()).position().distanceTo(robots.get(pair.second()).position());
-                    listener.connectionOutOfRange(pair.first(), pair.second(), pair.strength(), distance);
-                }
-            }
-            appliedIndex = index;
-            appliedTo = registered;
         }
 
         /** A failure that is not the recording's (a bug, a listener that throws): logged once, then the replay goes on. */

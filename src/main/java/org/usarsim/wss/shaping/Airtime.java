@@ -13,7 +13,8 @@ import java.util.Map;
  * twice.
  *
  * <p>A link direction asks for its bytes' airtime through its {@link Hop}, one {@link Grant} at
- * a time, each of at most {@link #QUANTUM_NS} of airtime. Reservations on a radio queue up one
+ * a time, each of at most {@link #QUANTUM_NS} of airtime, whatever the rate (a byte at 1 bit/s
+ * lasts 8 s: it is carried over 4,000 grants, and the links sharing its radio keep their turns). Reservations on a radio queue up one
  * after the other, so when every busy direction books the same few grants ahead (as
  * {@link ShapedFlow} does), the directions sharing a radio take turns in equal slices of TIME,
  * not of bytes: a slow far link and a fast near one each get their share, and neither starves.
@@ -43,11 +44,11 @@ public final class Airtime {
     private static final int SLICES = (int) (WINDOW_NS / SLICE_NS);
 
     /**
-     * Airtime granted to one direction: {@code bytes} (at least 1) are on the air from
-     * {@code startNs} (never before the time asked) to {@code endNs}; they may reach the target
-     * at {@code endNs} plus the link's delay.
+     * Airtime granted to one direction: its radio and its peer's are on the air for it from
+     * {@code startNs} (never before the time asked) to {@code endNs}, at most {@link #QUANTUM_NS}.
+     * What the slot carries is the direction's to say ({@link ShapedFlow}): bytes, or part of one.
      */
-    public record Grant(int bytes, long startNs, long endNs) {
+    public record Grant(long startNs, long endNs) {
     }
 
     private final boolean shared;
@@ -116,32 +117,29 @@ public final class Airtime {
         }
 
         /**
-         * Airtime for up to {@code wantedBytes} (at least 1) at {@code bitsPerSecond}: as many as
-         * fit in {@link #QUANTUM_NS} (at least 1 byte), starting when both radios are free and not
-         * before {@code nowNs}. Both radios are then busy until the grant's end.
+         * A slot of {@code nanos} of airtime (1 to {@link #QUANTUM_NS}), starting when both radios
+         * are free and not before {@code nowNs}. Both radios are then busy until the slot's end.
+         * Slots are measured in time, not bytes, so a slow link takes no more than its turn of a
+         * shared radio however long one of its bytes lasts: it carries a byte over as many slots
+         * as the byte needs.
          *
          * @throws IllegalStateException once the hop is closed
          */
-        public Grant grant(long bitsPerSecond, long wantedBytes, long nowNs) {
-            if (wantedBytes < 1) {
-                throw new IllegalArgumentException("a grant is for 1 byte or more, not " + wantedBytes);
-            }
-            if (bitsPerSecond < 1 || bitsPerSecond > Bitrate.MAX) {
-                throw new IllegalArgumentException("a rate from 1 to " + Bitrate.MAX + " bit/s, not " + bitsPerSecond);
+        public Grant grant(long nanos, long nowNs) {
+            if (nanos < 1 || nanos > QUANTUM_NS) {
+                throw new IllegalArgumentException("a grant of 1 to " + QUANTUM_NS + " ns, not " + nanos);
             }
             synchronized (Airtime.this) {
                 if (closed) {
                     throw new IllegalStateException("this hop is closed");
                 }
-                long most = Math.max(1, Bitrate.bytesIn(QUANTUM_NS, bitsPerSecond));
-                int bytes = (int) Math.min(Math.min(wantedBytes, most), Integer.MAX_VALUE);
                 long start = latest(nowNs, latest(sender.busyUntil, receiver.busyUntil));
-                long end = start + Bitrate.nanos(bytes, bitsPerSecond);
+                long end = start + nanos;
                 sender.reserve(start, end, nowNs);
                 if (receiver != sender) {
                     receiver.reserve(start, end, nowNs);
                 }
-                return new Grant(bytes, start, end);
+                return new Grant(start, end);
             }
         }
 

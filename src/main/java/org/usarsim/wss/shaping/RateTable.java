@@ -49,38 +49,15 @@ public final class RateTable {
         if (whole.isBlank()) {
             throw refused(whole, "no steps; give dBm:rate steps from the strongest signal to the weakest, e.g. -72:54M,-87:6M");
         }
-        String[] items = whole.split(",", -1);
         List<Step> steps = new ArrayList<>();
-        for (int i = 0; i < items.length; i++) {
-            String item = items[i].strip();
-            String which = "step " + (i + 1);
-            if (item.isEmpty()) {
-                throw refused(whole, which + " is empty");
-            }
-            String[] parts = item.split(":", -1);
-            if (parts.length != 2) {
-                throw refused(whole, which + " (" + item + ") is not dBm:rate");
-            }
-            String dBm = parts[0].strip();
-            String rate = parts[1].strip();
-            if (!dBm.matches("[+-]?\\d+(\\.\\d+)?")) {
-                throw refused(whole, which + " (" + item + "): " + (dBm.isEmpty() ? "the dBm is missing" : dBm + " is not a number of dBm"));
-            }
-            String rateProblem = Bitrate.problem(rate);
-            if (rateProblem != null) {
-                throw refused(whole, which + " (" + item + "): " + (rate.isEmpty() ? "the rate is missing" : rate + " " + rateProblem));
-            }
-            Step step = new Step(Double.parseDouble(dBm), Bitrate.parse(rate));
-            if (!steps.isEmpty() && step.dBm() >= steps.get(steps.size() - 1).dBm()) {
-                throw refused(whole, "steps must go from the strongest to the weakest signal");
-            }
-            steps.add(step);
+        for (DbmRows.Row row : DbmRows.parse(whole, "step", "rate", Bitrate::problem)) {
+            steps.add(new Step(row.dBm(), Bitrate.parse(row.value())));
         }
         return new RateTable(steps);
     }
 
     private static IllegalArgumentException refused(String text, String problem) {
-        return new IllegalArgumentException("\"" + text + "\": " + problem);
+        return DbmRows.refused(text, problem);
     }
 
     /**

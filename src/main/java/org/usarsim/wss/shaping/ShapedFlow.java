@@ -20,9 +20,9 @@ import java.util.ArrayDeque;
  * read at t over an idle radio is due at t + delay + its bytes x 8 / rate.
  *
  * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
- * memory is bounded by {@link #capacity()}: about rate x delay, plus four grants' worth (the one
- * on the air, one starting, and two booked ahead), plus one chunk; a direction that holds that much reads no more,
- * and TCP's back-pressure reaches the sender.
+ * memory is bounded by {@link #capacity()}: rate x (delay + queue), the queue
+ * ({@code wss.shaping.queueMs}, 100 ms by default) being what a radio's queue would hold; a
+ * direction that holds that much reads no more, and TCP's back-pressure reaches the sender.
  *
  * <p>Used by one thread; it never reads a clock nor blocks.
  */
@@ -36,43 +36,77 @@ public final class ShapedFlow {
      */
     static final long LOOKAHEAD_NS = 2 * Airtime.QUANTUM_NS;
 
+    /** The least a direction may hold whatever its rate: one frame's payload (so that a link at 1 bit/s still reads). */
+    public static final int MIN_HELD = 1500;
+
     private final Airtime.Hop hop;
-    private final int chunkSize;
+    private final int queueMs;
     private long bitsPerSecond;
     private int delayMs;
     private long capacity;
     /** Read and not yet written, in order; each buffer's position is what was written of it. */
     private final ArrayDeque<ByteBuffer> chunks = new ArrayDeque<>();
-    /** Grants whose bytes are not yet due: {end of their bytes in the stream, time they are due}, in order. */
-    private final ArrayDeque<long[]> releases = new ArrayDeque<>();
+    /** Grants whose bytes are not yet due, in order. */
+    private final ArrayDeque<Slot> slots = new ArrayDeque<>();
     // Offsets in the stream of bytes this direction carries, received >= granted >= released >= written.
     private long received;
     private long granted;
     private long released;
     private long written;
+    /** The part of byte {@code granted} already on the air, in bit x nanoseconds (below {@link #BYTE}). */
+    private long carried;
     private long lastStartNs;
     private boolean anyGrant;
+    /** The rate or the delay changed since the last step: the grants not yet begun are counted again. */
+    private boolean changed;
+
+    /** One byte in bit x nanoseconds: a grant of d ns at R bit/s carries R x d of them. */
+    private static final long BYTE = 8_000_000_000L;
+
+    /**
+     * One grant of airtime and what it carries: the stream from {@code fromOffset} (with
+     * {@code fromCarried} of the next byte already on the air before it) to {@code toOffset},
+     * due at {@code dueNs}.
+     */
+    private static final class Slot {
+        final long startNs;
+        final long endNs;
+        final long fromOffset;
+        final long fromCarried;
+        long toOffset;
+        long dueNs;
+
+        Slot(Airtime.Grant grant, long fromOffset, long fromCarried) {
+            this.startNs = grant.startNs();
+            this.endNs = grant.endNs();
+            this.fromOffset = fromOffset;
+            this.fromCarried = fromCarried;
+        }
+    }
 
     /**
      * A direction that sends through {@code hop} at {@code bitsPerSecond} with {@code delayMs}
-     * of delay, read {@code chunkSize} bytes at a time at most; it owns the hop and closes it.
+     * of delay and a queue of {@code queueMs} ({@code wss.shaping.queueMs}); it owns the hop and closes it.
      */
-    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int chunkSize) {
-        if (chunkSize < 1) {
-            throw new IllegalArgumentException("a chunk of 1 byte or more, not " + chunkSize);
+    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int queueMs) {
+        if (queueMs < ShapingConfig.MIN_QUEUE_MS || queueMs > ShapingConfig.MAX_QUEUE_MS) {
+            throw new IllegalArgumentException("a queue of " + ShapingConfig.MIN_QUEUE_MS + " to " + ShapingConfig.MAX_QUEUE_MS
+                    + " ms, not " + queueMs);
         }
         this.hop = hop;
-        this.chunkSize = chunkSize;
+        this.queueMs = queueMs;
         setConditions(bitsPerSecond, delayMs);
     }
 
     /**
-     * The bytes a direction may hold: rate x (delay + 2 x {@link Airtime#QUANTUM_NS} +
-     * {@link #LOOKAHEAD_NS}) / 8 + one chunk. Enough to keep the radio busy at that rate (bytes wait out the delay and their grants
-     * while more are read), and no more.
+     * The bytes a direction may hold: rate x (delay + queue) / 8, at least {@link #MIN_HELD}.
+     * The delay's bytes are in flight; the queue's wait their turn on the air, as a radio's
+     * queue holds frames (issue 27: a link held seconds). A queue of at least
+     * {@link ShapingConfig#MIN_QUEUE_MS} covers the grants booked ahead (8 ms), so the radio is
+     * kept busy at full rate.
      */
-    public static long capacity(long bitsPerSecond, int delayMs, int chunkSize) {
-        return Bitrate.bytesIn(delayMs * 1_000_000L + 2 * Airtime.QUANTUM_NS + LOOKAHEAD_NS, bitsPerSecond) + chunkSize;
+    public static long capacity(long bitsPerSecond, int delayMs, int queueMs) {
+        return Math.max(MIN_HELD, Bitrate.bytesIn((delayMs + (long) queueMs) * 1_000_000L, bitsPerSecond));
     }
 
     /**
@@ -87,9 +121,10 @@ public final class ShapedFlow {
             throw new IllegalArgumentException("a delay from " + ShapingConfig.MIN_DELAY_MS + " to "
                     + ShapingConfig.MAX_DELAY_MS + " ms, not " + delayMs);
         }
+        changed |= bitsPerSecond != this.bitsPerSecond || delayMs != this.delayMs;
         this.bitsPerSecond = bitsPerSecond;
         this.delayMs = delayMs;
-        this.capacity = capacity(bitsPerSecond, delayMs, chunkSize);
+        this.capacity = capacity(bitsPerSecond, delayMs, queueMs);
     }
 
     /** The rate in bit/s. */
@@ -177,8 +212,8 @@ public final class ShapedFlow {
     public long nanosUntilNext(long nowNs) {
         pump(nowNs);
         long next = Long.MAX_VALUE;
-        if (!releases.isEmpty()) {
-            next = Math.max(0, releases.peekFirst()[1] - nowNs);
+        if (!slots.isEmpty()) {
+            next = Math.max(0, slots.peekFirst().dueNs - nowNs);
         }
         if (granted < received) {
             next = Math.min(next, Math.max(0, lastStartNs - LOOKAHEAD_NS - nowNs));
@@ -191,17 +226,74 @@ public final class ShapedFlow {
         hop.close();
     }
 
-    /** Takes grants while it is this direction's turn, then marks what has fallen due. */
+    /**
+     * Counts again, at the present rate and delay, the grants that have not begun (after a
+     * change), takes grants while it is this direction's turn, then marks what has fallen due.
+     */
     private void pump(long nowNs) {
-        while (granted < received && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)) {
-            Airtime.Grant grant = hop.grant(bitsPerSecond, received - granted, nowNs);
-            granted += grant.bytes();
-            lastStartNs = grant.startNs();
-            anyGrant = true;
-            releases.addLast(new long[] {granted, grant.endNs() + delayMs * 1_000_000L});
+        if (changed) {
+            changed = false;
+            recount(nowNs);
         }
-        while (!releases.isEmpty() && releases.peekFirst()[1] - nowNs <= 0) {
-            released = releases.pollFirst()[0];
+        while (granted < received && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)) {
+            Slot slot = new Slot(hop.grant(nanosFor(received - granted), nowNs), granted, carried);
+            fill(slot);
+            slots.addLast(slot);
+            lastStartNs = slot.startNs;
+            anyGrant = true;
+        }
+        while (!slots.isEmpty() && slots.peekFirst().dueNs - nowNs <= 0) {
+            released = slots.pollFirst().toOffset;
+        }
+    }
+
+    /**
+     * The airtime the next grant asks for: one quantum, or less if that carries all of
+     * {@code wanted} bytes (the time for them, rounded up: a byte is never early).
+     */
+    private long nanosFor(long wanted) {
+        long quantum = carried + bitsPerSecond * Airtime.QUANTUM_NS;
+        if (wanted > quantum / BYTE) {
+            return Airtime.QUANTUM_NS;
+        }
+        long needed = wanted * BYTE - carried;
+        return Math.max(1, Math.min(Airtime.QUANTUM_NS, (needed + bitsPerSecond - 1) / bitsPerSecond));
+    }
+
+    /** What {@code slot} carries at the present rate, from where the stream stands, and when it is due. */
+    private void fill(Slot slot) {
+        long bitNanos = carried + bitsPerSecond * (slot.endNs - slot.startNs);
+        long bytes = Math.min(bitNanos / BYTE, received - granted);
+        granted += bytes;
+        carried = granted == received ? 0 : bitNanos - bytes * BYTE;
+        slot.toOffset = granted;
+        slot.dueNs = slot.endNs + delayMs * 1_000_000L;
+    }
+
+    /**
+     * After a change of rate or delay: the grants booked but not yet begun at {@code nowNs} carry
+     * what the new rate puts in them, due after the new delay. The one on the air keeps its own.
+     */
+    private void recount(long nowNs) {
+        Slot first = null;
+        for (var it = slots.descendingIterator(); it.hasNext();) {
+            Slot slot = it.next();
+            if (slot.startNs - nowNs <= 0) {
+                break;
+            }
+            first = slot;
+        }
+        if (first == null) {
+            return;
+        }
+        granted = first.fromOffset;
+        carried = first.fromCarried;
+        boolean counting = false;
+        for (Slot slot : slots) {
+            counting |= slot == first;
+            if (counting) {
+                fill(slot);
+            }
         }
     }
 }

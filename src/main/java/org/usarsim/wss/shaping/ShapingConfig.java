@@ -14,13 +14,23 @@ import java.util.Objects;
  * @param rates the rate of a pair for its strength
  * @param delayMs the delay, from {@link #MIN_DELAY_MS} to {@link #MAX_DELAY_MS}
  * @param airtime whether links sharing a robot share its radio's airtime
+ * @param queueMs the most a direction holds beyond its delay, in milliseconds at its rate
+ * @param loss the share of datagrams a pair loses for its strength ({@code wss.shaping.loss}; UDP only)
  */
-public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, int queueMs, LossTable loss) {
 
     public static final String SHAPING = "wss.shaping";
     public static final String RATES = "wss.shaping.rates";
     public static final String DELAY_MS = "wss.shaping.delayMs";
     public static final String AIRTIME = "wss.shaping.airtime";
+    public static final String LOSS = "wss.shaping.loss";
+    /** The most a direction queues, in milliseconds of its rate (issue 27; docs/shaping.md, "The queue"). */
+    public static final String QUEUE_MS = "wss.shaping.queueMs";
+    /** About what an 802.11 radio holds: a few hundred frames, 100 ms at its rate. */
+    public static final int DEFAULT_QUEUE_MS = 100;
+    /** Below 10 ms a direction could not keep its radio busy (it books its airtime 8 ms ahead). */
+    public static final int MIN_QUEUE_MS = 10;
+    public static final int MAX_QUEUE_MS = 10_000;
 
     public static final int DEFAULT_DELAY_MS = 2;
     public static final int MIN_DELAY_MS = 0;
@@ -31,15 +41,25 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
 
     public ShapingConfig {
         Objects.requireNonNull(rates, "rates");
+        Objects.requireNonNull(loss, "loss");
         String problem = delayProblem(delayMs);
         if (problem != null) {
             throw new IllegalArgumentException(DELAY_MS + ": " + delayMs + " " + problem);
         }
+        String queueProblem = queueProblem(queueMs);
+        if (queueProblem != null) {
+            throw new IllegalArgumentException(QUEUE_MS + ": " + queueMs + " " + queueProblem);
+        }
+    }
+
+    /** With the default queue ({@link #DEFAULT_QUEUE_MS}) and the default loss table. */
+    public ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
+        this(on, rates, delayMs, airtime, DEFAULT_QUEUE_MS, LossTable.DEFAULT);
     }
 
     /**
      * The settings {@code values} give by key ({@link #SHAPING}, {@link #RATES}, {@link #DELAY_MS},
-     * {@link #AIRTIME}; a key not there takes its default; other keys are ignored), each checked,
+     * {@link #AIRTIME}, {@link #LOSS}; a key not there takes its default; other keys are ignored), each checked,
      * even with shaping off, so that a mistake is found before the day it is switched on.
      *
      * @throws IllegalArgumentException for the first bad value, naming its key and the value:
@@ -73,7 +93,24 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         if (!airtimeText.equalsIgnoreCase("true") && !airtimeText.equalsIgnoreCase("false")) {
             throw refused(AIRTIME, airtimeText, "is not true or false");
         }
-        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()));
+        LossTable loss;
+        try {
+            loss = LossTable.parse(value(values, LOSS, LossTable.DEFAULT.toString()));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(LOSS + ": " + e.getMessage(), e);
+        }
+        String queueText = value(values, QUEUE_MS, String.valueOf(DEFAULT_QUEUE_MS));
+        int queueMs;
+        try {
+            queueMs = Integer.parseInt(queueText);
+        } catch (NumberFormatException e) {
+            throw refused(QUEUE_MS, queueText, "is not a whole number of milliseconds");
+        }
+        String queueProblem = queueProblem(queueMs);
+        if (queueProblem != null) {
+            throw refused(QUEUE_MS, queueText, queueProblem);
+        }
+        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), queueMs, loss);
     }
 
     /**
@@ -102,13 +139,26 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     }
 
     private static String delayProblem(long delayMs) {
-        if (delayMs < MIN_DELAY_MS) {
-            return "is below " + MIN_DELAY_MS;
-        }
-        if (delayMs > MAX_DELAY_MS) {
-            return "is above " + MAX_DELAY_MS;
-        }
-        return null;
+        return outside(delayMs, MIN_DELAY_MS, MAX_DELAY_MS);
+    }
+
+    private static String queueProblem(long queueMs) {
+        return outside(queueMs, MIN_QUEUE_MS, MAX_QUEUE_MS);
+    }
+
+    /** "is below MIN", "is above MAX", or null within them. */
+    private static String outside(long value, long min, long max) {
+        return value < min ? "is below " + min : value > max ? "is above " + max : null;
+    }
+
+    /** The same with another loss table (the window's dialog sets the other four keys, a --config file this one). */
+    public ShapingConfig withLoss(LossTable table) {
+        return new ShapingConfig(on, rates, delayMs, airtime, queueMs, table);
+    }
+
+    /** The percent of datagrams a pair of this strength loses: none with shaping off. */
+    public double lossPercent(double dBm) {
+        return on ? loss.percentFor(dBm) : 0;
     }
 
     private static String value(Map<String, String> values, String key, String defaultValue) {

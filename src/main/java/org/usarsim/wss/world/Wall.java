@@ -1,7 +1,7 @@
 package org.usarsim.wss.world;
 
 /** A wall seen from above: a segment from (x1, y1) to (x2, y2), in metres, of any height. */
-record Wall(double x1, double y1, double x2, double y2) {
+public record Wall(double x1, double y1, double x2, double y2) {
 
     /** Whether the straight line on the floor between a and b crosses or touches this wall. */
     boolean blocks(Point a, Point b) {

@@ -25,6 +25,10 @@ final class World {
         return robots.size();
     }
 
+    List<Wall> walls() {
+        return walls;
+    }
+
     int wallCount() {
         return walls.size();
     }

@@ -14,45 +14,16 @@ import org.usarsim.wss.protocol.LineSplitter;
  * {@link LineSplitter#MAX_LINE_BYTES} drops the client. Its log lines go through the server's
  * {@link WorldServer#lines} limit.
  */
-final class WorldClient implements Runnable, LineSplitter.Sink {
+final class WorldClient extends ClientThread implements LineSplitter.Sink {
 
     private static final Logger LOG = Logger.getLogger(WorldClient.class.getName());
 
     private final WorldServer server;
-    private final Socket socket;
-    private final String peer;
     private final LineSplitter splitter = new LineSplitter();
-    /** Its thread, once {@link #start} started it. */
-    private volatile Thread thread;
 
     WorldClient(WorldServer server, Socket socket) {
+        super(socket, "world-client");
         this.server = server;
-        this.socket = socket;
-        this.peer = socket.getInetAddress().getHostAddress() + ":" + socket.getPort();
-    }
-
-    void start() {
-        Thread started = new Thread(this, "world-client " + peer);
-        started.setDaemon(true);
-        thread = started;
-        started.start();
-    }
-
-    /** Waits, until {@code deadline} ({@link System#nanoTime()}) at most, for its thread to end. */
-    void awaitEnd(long deadline) throws InterruptedException {
-        Thread started = thread;
-        long left = deadline - System.nanoTime();
-        if (started != null && left > 0) {
-            started.join(Math.max(1, left / 1_000_000));
-        }
-    }
-
-    void close() {
-        try {
-            socket.close();
-        } catch (IOException e) {
-            LOG.fine(() -> "closing the connection of client " + peer + ": " + e);
-        }
     }
 
     @Override

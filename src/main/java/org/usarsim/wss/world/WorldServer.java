@@ -6,9 +6,6 @@ import java.net.InetSocketAddress;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.file.Path;
-import java.util.List;
-import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
 import java.util.function.DoubleSupplier;
@@ -29,7 +26,7 @@ public final class WorldServer implements AutoCloseable {
     private final World world;
     private final DoubleSupplier clock;
     private final ServerSocketChannel server;
-    private final Set<WorldClient> clients = ConcurrentHashMap.newKeySet();
+    private final ServedClients<WorldClient> clients = new ServedClients<>();
     /** Starts a client's thread: {@link WorldClient#start}, or what a test puts in its place. */
     private final Consumer<WorldClient> starter;
     private final Thread acceptor;
@@ -79,6 +76,16 @@ public final class WorldServer implements AutoCloseable {
         return world.at(clock.getAsDouble());
     }
 
+    /** The seconds the world has run. */
+    double time() {
+        return clock.getAsDouble();
+    }
+
+    /** The world at a time ({@link #time()}). */
+    Snapshot at(double seconds) {
+        return world.at(seconds);
+    }
+
     /** Stops listening, at once, and closes every client connection; waits (at most a second) for their threads to end. */
     @Override
     public void close() {
@@ -86,35 +93,15 @@ public final class WorldServer implements AutoCloseable {
         if (!closed.compareAndSet(false, true)) {
             return;
         }
-        try {
-            server.close();
-        } catch (IOException e) {
-            LOG.fine(() -> "closing the world server's socket: " + e);
-        }
-        // The socket is released only when the thread blocked in accept() has let go of it.
-        try {
-            acceptor.join(1000);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
-        List<WorldClient> closing = List.copyOf(clients);
-        closing.forEach(WorldClient::close);
         // Their threads say "left" before "stopped", not after whoever closed the server has gone on
-        // (Main.run puts its caller's logging back as it returns). At most a second in all.
-        long deadline = System.nanoTime() + 1_000_000_000L;
-        try {
-            for (WorldClient client : closing) {
-                client.awaitEnd(deadline);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        // (Main.run puts its caller's logging back as it returns).
+        clients.closeAll(server, acceptor);
         lines.close();
         LOG.info("world server stopped");
     }
 
     void ended(WorldClient client) {
-        clients.remove(client);
+        clients.ended(client);
     }
 
     /** The clients being served. */
@@ -131,17 +118,7 @@ public final class WorldServer implements AutoCloseable {
 
         @Override
         protected void serve(SocketChannel socket) {
-            WorldClient client = new WorldClient(WorldServer.this, socket.socket());
-            clients.add(client);
-            if (!server.isOpen()) {
-                client.close();
-            }
-            try {
-                starter.accept(client);
-            } catch (Throwable e) {
-                clients.remove(client);
-                throw e;
-            }
+            clients.serve(new WorldClient(WorldServer.this, socket.socket()), server, starter);
         }
 
         @Override

@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
@@ -116,7 +117,7 @@ class HubCoreTest {
         core.forgetIfGone("A", now + 600 * SECOND, late);
         assertEquals(List.of(Changes.PortWork.RELEASE), works(late));
         assertTrue(late.events().contains(new HubEvent.PortForgotten(port.key, port.number)));
-        assertTrue(late.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "forgot 1 WSS port of A, gone for 600 s")),
+        assertTrue(late.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "forgotten WSS ports", "forgot 1 WSS port of A, gone for 600 s")),
                 late.events().toString());
         assertNull(core.port(port.key));
     }
@@ -201,14 +202,16 @@ class HubCoreTest {
 
         Changes modelSays = new Changes();
         shaped.measured(Map.of(ab, new Measurement(-85, Optional.of(new LinkQuality(300_000, 40)))), modelSays);
-        assertEquals(new PairCondition(PairState.UP, 300_000, 40), shaped.conditions().get(ab), "the model's own rate and delay win");
+        assertEquals(new PairCondition(PairState.UP, 300_000, 40, 1), shaped.conditions().get(ab),
+                "the model's own rate and delay win; the loss is the default loss table's for -85 dBm");
 
         shaped.force(AB, Force.UP, new RatePin(1_000_000, 50), now, new Changes());
-        assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50), shaped.conditions().get(ab), "the operator's pin wins");
+        assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50, 1), shaped.conditions().get(ab),
+                "the operator's pin wins (a pin pins rate and delay, the loss follows the strength)");
         assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50), shaped.conditions().get(ba), "both ways");
 
         shaped.release(AB, true, true, now, new Changes());
-        assertEquals(new PairCondition(PairState.UP, 300_000, 40), shaped.conditions().get(ab), "released: the model's again");
+        assertEquals(new PairCondition(PairState.UP, 300_000, 40, 1), shaped.conditions().get(ab), "released: the model's again");
         assertEquals(new PairCondition(PairState.UP, 2_000_000, 5), shaped.conditions().get(ba));
     }
 
@@ -278,13 +281,48 @@ class HubCoreTest {
         assertEquals(2, forever.giveBackRemembered(1, now, first), "a whole robot at a time: G1's two ports");
         assertEquals(List.of(Changes.PortWork.RELEASE, Changes.PortWork.RELEASE), works(first));
         assertTrue(first.portActions().stream().allMatch(action -> action.port().key.pair().contains("G1")), first.portActions().toString());
-        assertTrue(first.events().contains(new HubEvent.Said(java.util.logging.Level.INFO,
+        assertTrue(first.events().contains(new HubEvent.Said(java.util.logging.Level.INFO, "ports given back",
                 "descriptors ran short: gave back 2 remembered WSS ports of 1 robot that left, the longest gone first")), first.events().toString());
 
         Changes rest = new Changes();
         assertEquals(4, forever.giveBackRemembered(100, now, rest), "then G2's and G3's, and nothing of Base's or G4's");
         assertEquals(List.of(new PortKey("G4", "Base", 5000)), forever.ports().stream().map(port -> port.key).toList());
         assertEquals(0, forever.giveBackRemembered(100, now, new Changes()), "nothing left to give");
+    }
+
+    @Test
+    void aDeclaredRobotIsTakenForAnInitAndAKickClosesItsConnectionsButKeepsItAndItsFixedPorts() {
+        assertEquals(HubCore.NameCheck.REGISTERED, core.declare(robot("A", sessionA, 5000), now, new Changes()));
+        assertEquals(HubCore.NameCheck.REGISTERED, core.declare(robot("B", sessionB, 6000), now, new Changes()));
+        assertEquals(HubCore.NameCheck.TAKEN, core.register(robot("A", () -> { }, 7000), now, new Changes()));
+        PortKey key = new PortKey("A", "B", 6000);
+        HubCore.DnsResult fixed = core.fix(key, true, 40007, now, new Changes());
+        assertTrue(fixed.numberUsed());
+        assertTrue(core.isFixed(key));
+        WssPort port = core.port(key);
+        FakeConnection link = new FakeConnection(50000);
+        port.addLink(link);
+        Changes kick = new Changes();
+        core.kick("B", now, kick);
+        assertEquals(1, kick.closes().size(), "its connections close");
+        assertTrue(kick.sessionsToClose().isEmpty());
+        assertTrue(core.isRegistered("B"), "a declared robot stays");
+        assertSame(port, core.port(key), "its fixed port too, with its number");
+        assertEquals(40007, port.number);
+    }
+
+    @Test
+    void aFixedUdpPortsPairHasItsTargetItsCountersAndItsConditions() {
+        registerBoth();
+        HubCore.Admission relay = core.relay(new PortKey("A", "B", 6000), now, new Changes());
+        assertNull(relay.refusal());
+        assertEquals(6000, relay.target().getPort());
+        assertTrue(relay.up().get().passes());
+        Changes broke = new Changes();
+        core.breakPair(AB, now, broke);
+        assertFalse(relay.up().get().passes(), "read live: broken");
+        assertFalse(relay.down().get().passes());
+        assertNotNull(core.relay(new PortKey("A", "Nobody", 1), now, new Changes()).refusal());
     }
 
     private void registerBoth() {

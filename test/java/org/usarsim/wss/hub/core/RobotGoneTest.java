@@ -59,7 +59,7 @@ class RobotGoneTest {
                 late.portActions().stream().map(Changes.PortAction::work).toList(), "both numbers given back");
         assertEquals(List.of(toR1, fromR1).stream().sorted().toList(),
                 late.portActions().stream().map(action -> action.port().number).sorted().toList());
-        assertTrue(late.events().contains(new HubEvent.Said(Level.INFO, "forgot 2 WSS ports of R1, gone for 1 s")),
+        assertTrue(late.events().contains(new HubEvent.Said(Level.INFO, "forgotten WSS ports", "forgot 2 WSS ports of R1, gone for 1 s")),
                 late.events().toString());
         assertTrue(core.ports().isEmpty(), "R2's port to R1 goes with R1's: " + core.ports());
         Changes r2 = new Changes();

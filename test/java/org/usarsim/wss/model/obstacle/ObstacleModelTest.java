@@ -8,6 +8,8 @@ import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
 
 import java.net.ConnectException;
 import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -16,6 +18,11 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.ModelStartException;
+import org.usarsim.wss.model.RobotLinkModel;
+import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.simulator.DataConnection;
@@ -193,5 +200,56 @@ class ObstacleModelTest {
         rig.sim.place("A", 0, 0, 0);
         assertClosedByPeer(b.control, "B, absent from a non-empty list");
         Wait.until("B is deregistered", () -> rig.server.hub.getListOfRegisteredRobots().equals(List.of("A")));
+    }
+
+    @Test
+    void theWallsOfAWorldFileAreCountedByTheModelAndDrawnWhateverTheSimulatorAnswers(@TempDir Path dir) throws Exception {
+        Path world = Files.writeString(dir.resolve("walls.world"), "robot R 0,0,0\nwall 5,-10 5,10\nwall 7,-10 7,10\n");
+        rig(Map.of("obstacle.walls", world.toString()));
+        rig.sim.mode(FakeSimulator.Mode.NO_GETOBS);
+        TestRobot a = rig.robot("A", 0, 0, 0);
+        rig.robot("B", 10, 0, 0);
+        rig.robot("C", 4, 3, 0);
+        rig.polls(2);
+        double oneWallLess = DEFAULT.strength(10) - 2 * 6.325;
+        assertEquals(Replies.signal("B", oneWallLess), a.ask("GETSS {Robot B}"), "two walls between A and B");
+        assertEquals(DEFAULT.strength(5), rig.model.getSignalStrengthForPair("A", "C"), 1e-9, "none between A and C");
+        assertEquals(List.of(), rig.sim.getobsLines(), "the simulator is not asked");
+        assertEquals(List.of(new Wall(5, -10, 5, 10), new Wall(7, -10, 7, 10)), rig.model.walls(), "the map shows them");
+        assertEquals(1, rig.logLines(Level.INFO, "counting the obstacles between robots from the 2 walls of " + world));
+    }
+
+    @Test
+    void aWallsFileThatCannotBeReadRefusesTheStart(@TempDir Path dir) throws Exception {
+        Path world = Files.writeString(dir.resolve("bad.world"), "wall 5,-10\n");
+        ObstaclePropagationModel model = new ObstaclePropagationModel();
+        model.configure(new ModelSettings(Map.of("obstacle.walls", world.toString())));
+        model.setRobotLinkModel(new RobotLinkModel() {
+            @Override
+            public boolean breakConnectionsForPair(String robotA, String robotB) {
+                return false;
+            }
+
+            @Override
+            public boolean resumeConnectionsForPair(String robotA, String robotB) {
+                return false;
+            }
+
+            @Override
+            public void kickOutRobot(String robot) {
+            }
+
+            @Override
+            public List<String> getListOfRegisteredRobots() {
+                return List.of();
+            }
+        });
+        ModelStartException e = assertThrows(ModelStartException.class, model::start);
+        assertTrue(e.getMessage().startsWith("obstacle.walls: " + world + ":1: "), e.getMessage());
+        e = assertThrows(ModelStartException.class, () -> {
+            model.configure(new ModelSettings(Map.of("obstacle.walls", dir.resolve("none.world").toString())));
+            model.start();
+        });
+        assertEquals("obstacle.walls: " + dir.resolve("none.world") + ": no such file", e.getMessage());
     }
 }

@@ -106,7 +106,7 @@ class MapFactsTest {
         for (int i = 0; i < 30_000; i++) {
             walls.append(" {Wall ").append(i).append(".1234,-1.5000,").append(i + 1).append(".5678,-1.5000}");
         }
-        assertTrue(walls.length() > SimulatorConnection.MAX_LINE_BYTES);
+        assertTrue(walls.length() > UsarsimSource.MAX_LINE_BYTES);
         rig = answeringGetwalls(walls.toString());
         rig.polls(3);
         assertEquals(0, rig.logLines(Level.WARNING, "lost the simulator"), "the positions still come");

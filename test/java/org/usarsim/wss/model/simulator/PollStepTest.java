@@ -39,7 +39,7 @@ class PollStepTest {
         List<PollStep.Kick> kicks = PollStep.kicks(List.of("A", "B", "C"), listed, true);
         assertEquals(List.of(new PollStep.Kick("B", true), new PollStep.Kick("C", false)), kicks);
         assertEquals(List.of("its battery is empty", "the simulator does not list it"),
-                kicks.stream().map(PollStep.Kick::reason).toList());
+                kicks.stream().map(kick -> kick.reason("simulator")).toList());
         assertEquals(List.of(new PollStep.Kick("B", true)), PollStep.kicks(List.of("A", "B", "C"), listed, false),
                 "absent robots stay when the model does not kick them; an empty battery is kicked all the same");
     }

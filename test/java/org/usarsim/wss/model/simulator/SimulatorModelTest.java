@@ -155,14 +155,14 @@ class SimulatorModelTest {
     @Test
     void aReplyCutByATimeoutIsWholeWhenItsEndComes() throws Exception {
         try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"));
-                SimulatorConnection connection = SimulatorConnection.open("127.0.0.1", server.getLocalPort(), 200);
+                UsarsimSource connection = UsarsimSource.open("127.0.0.1", server.getLocalPort(), 200);
                 Socket simulator = server.accept()) {
             OutputStream out = simulator.getOutputStream();
             out.write("NUMOBS {From A} {To B} {Obs".getBytes(StandardCharsets.US_ASCII));
             assertEquals(Map.of(), connection.obstacles(List.of(RobotPair.of("A", "B"))), "no whole answer within 200 ms");
             out.write("tCount 1.0000}\r\nPOSITIONS {Robots 1} {Name A Location 1,2,3 BatteryEmpty False}\r\n"
                     .getBytes(StandardCharsets.US_ASCII));
-            assertEquals(Map.of("A", new ReportedRobot("A", 1, 2, 3, false)), connection.positions(),
+            assertEquals(Map.of("A", new ReportedRobot("A", 1, 2, 3, false)), connection.positions(List.of()),
                     "the late NUMOBS is skipped whole, not read as garbage");
         }
     }

@@ -55,6 +55,10 @@ public final class HubCore {
     private final PortCaps caps;
     private final Map<String, RegisteredRobot> robots = new HashMap<>();
     private final Ports ports = new Ports();
+    /** The robots declared instead of registering (docs/fixed-ports.md): they never leave. */
+    private final Set<String> declared = new HashSet<>();
+    /** The fixed TCP ports: WSS ports made at Start, kept to Stop. */
+    private final Set<PortKey> fixed = new HashSet<>();
     /** The control connections whose robots are leaving: their ports drain, their names are freed soon. */
     private final Set<RobotSession> leaving = new HashSet<>();
     /** The model's breaks, the operator's forces, the statistics and the conditions of each pair. */
@@ -132,8 +136,59 @@ public final class HubCore {
         forgetting.left(name, nowNs, out);
     }
 
+    /**
+     * A robot declared in the configuration: registered now, as if it had sent INIT, until the hub
+     * closes; an INIT of its name is refused as for any taken name.
+     */
+    public NameCheck declare(RegisteredRobot robot, long nowNs, Changes out) {
+        NameCheck check = register(robot, nowNs, out);
+        if (check == NameCheck.REGISTERED) {
+            declared.add(robot.name());
+        }
+        return check;
+    }
+
+    /**
+     * A fixed TCP port (docs/fixed-ports.md): the WSS port of {@code key}, allocated as a DNS would
+     * with the number configured, and kept: its robots are declared, so it is never forgotten.
+     */
+    public DnsResult fix(PortKey key, boolean allowed, int number, long nowNs, Changes out) {
+        DnsResult result = dns(key.from(), key.to(), key.targetPort(), allowed, number, nowNs, out);
+        if (result.outcome() == DnsOutcome.OK) {
+            fixed.add(key);
+        }
+        return result;
+    }
+
+    /** Whether the port is a fixed one, made at Start, rather than one a DNS asked for. */
+    public boolean isFixed(PortKey key) {
+        return fixed.contains(key);
+    }
+
+    /**
+     * A fixed UDP port's pair (docs/fixed-ports.md): its counters and its conditions both ways,
+     * live (from the port's source to its target: {@code up}), and the target's address.
+     */
+    public Admission relay(PortKey key, long nowNs, Changes out) {
+        RegisteredRobot target = robots.get(key.to());
+        if (target == null || !robots.containsKey(key.from())) {
+            return new Admission("no such robot", null, null, null, null);
+        }
+        PairStats pairStats = pairs.seen(key.pair(), nowNs, out);
+        OrderedPair up = new OrderedPair(key.from(), key.to());
+        return new Admission(null, new InetSocketAddress(target.address(), key.targetPort()), pairStats,
+                pairs.condition(up), pairs.condition(up.reversed()));
+    }
+
     /** The model kicked the robot out: its ports are given back at once, its links closed, its control connection closed. */
     public void kick(String name, long nowNs, Changes out) {
+        if (declared.contains(name)) { // declared: it stays, its ports too; its connections close
+            for (WssPort port : ports.of(name)) {
+                out.close(port.links(), CloseReason.KICKED);
+            }
+            out.add(new HubEvent.Said(Level.INFO, "declared robots kicked", "kicked out " + name + "'s connections (a declared robot: it stays)"));
+            return;
+        }
         RegisteredRobot robot = robots.remove(name);
         if (robot != null) {
             out.add(new HubEvent.Deregistered(name));
@@ -146,7 +201,7 @@ public final class HubCore {
         forgetting.kicked(name, nowNs, out); // its pairs' statistics are remembered as long as its ports would have been
         if (robot != null) {
             out.closeSession(robot.session());
-            out.add(new HubEvent.Said(Level.INFO, "kicked out " + name));
+            out.add(new HubEvent.Said(Level.INFO, "kicked out robots", "kicked out " + name));
         }
     }
 
@@ -215,7 +270,7 @@ public final class HubCore {
             port.listen();
             out.port(Changes.PortWork.LISTEN, port);
         }
-        out.add(new HubEvent.Said(Level.INFO, "allocated " + port + (listens ? "" : ", not listening")));
+        out.add(new HubEvent.Said(Level.INFO, "allocated WSS ports", "allocated " + port + (listens ? "" : ", not listening")));
         out.add(new HubEvent.PortAllocated(key, port.number, listens));
         return new DnsResult(DnsOutcome.OK, port.number, key, true);
     }
@@ -284,7 +339,7 @@ public final class HubCore {
             port.stopListening();
             out.add(new HubEvent.PortListening(port.key, port.number, false));
         }
-        out.add(new HubEvent.Said(Level.WARNING, port + ": could not listen again: " + why));
+        out.add(new HubEvent.Said(Level.WARNING, "ports that could not listen again", port + ": could not listen again: " + why));
     }
 
     public List<WssPort> ports() {

@@ -96,16 +96,37 @@ public sealed interface HubEvent {
     }
 
     /** The model's: what one poll of the simulator learned and decided (a recording writes it). */
+    record ReplayMoved(double timeSeconds, double speed, boolean playing) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.replayMoved(timeSeconds, speed, playing);
+        }
+    }
+
     record Polled(ModelPoll poll) implements HubEvent {
         public void deliverTo(EventSink sink) {
             sink.polled(poll);
         }
     }
 
-    /** A line of the hub's log about its own changes. */
-    record Said(Level level, String line) implements HubEvent {
+    /**
+     * The links a step closes, closed as its events are delivered, before them: a pair's FORCED or
+     * BROKEN is said once its links can write and report nothing more (issue 27: one DATA_SENT
+     * after a FORCED DOWN, from a link whose close was still to come). The step's socket work
+     * closes them too (a close is done once).
+     */
+    record LinksClosed(List<Changes.Close> closes) implements HubEvent {
         public void deliverTo(EventSink sink) {
-            sink.say(level, line);
+            closes.forEach(close -> close.link().close(close.reason()));
+        }
+    }
+
+    /**
+     * A line of the hub's log about its own changes; {@code kind} names what such lines have in
+     * common, for the limit on them ("allocated WSS ports": docs/reliability.md).
+     */
+    record Said(Level level, String kind, String line) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.say(level, kind, line);
         }
     }
 

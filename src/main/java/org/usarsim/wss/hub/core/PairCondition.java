@@ -3,9 +3,20 @@ package org.usarsim.wss.hub.core;
 /**
  * A pair's condition one way, the one value the hub, the link threads, the statistics, the map
  * and the event log read: its state (up, broken, forced) and, when links are shaped, its rate
- * in bit/s and its delay in milliseconds (0 and 0 when they are not: as fast as the machine goes).
+ * in bit/s and its delay in milliseconds (0 and 0 when they are not: as fast as the machine goes),
+ * and the percent of datagrams a fixed UDP port loses (wss.shaping.loss; 0 unshaped).
  */
-public record PairCondition(PairState state, long bitsPerSecond, int delayMs) {
+public record PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent) {
+
+    /** No datagram lost. */
+    public PairCondition(PairState state, long bitsPerSecond, int delayMs) {
+        this(state, bitsPerSecond, delayMs, 0);
+    }
+
+    /** Whether anything passes: the pair is up, or forced up. */
+    public boolean passes() {
+        return state == PairState.UP || state == PairState.FORCED_UP;
+    }
 
     /** Whether the link is shaped: it has a rate. */
     public boolean shaped() {

@@ -65,7 +65,8 @@ final class PairConditions {
      * The one place a pair's condition one way is computed: its state (a force wins over the
      * model's verdict), and with shaping on its rate and delay: an operator's pin wins, then what
      * the model says of the link ({@code linkQualityForPair}), then the rate table for the
-     * model's strength and the delay setting.
+     * model's strength and the delay setting; the loss percent of datagrams from the loss table
+     * for the model's strength (a pin pins rate and delay, not the loss).
      */
     private PairCondition conditionOf(OrderedPair way) {
         RobotPair pair = RobotPair.of(way.from(), way.to());
@@ -78,7 +79,7 @@ final class PairConditions {
         long rate = pin.pinsRate() ? pin.bitsPerSecond()
                 : measurement.quality().map(LinkQuality::bitsPerSecond).orElseGet(() -> shaping.rates().rateFor(measurement.strength()));
         int delay = pin.pinsDelay() ? pin.delayMs() : measurement.quality().map(LinkQuality::delayMs).orElse(shaping.delayMs());
-        return new PairCondition(state, rate, delay);
+        return new PairCondition(state, rate, delay, shaping.lossPercent(measurement.strength()));
     }
 
     /** Recomputes the pair's conditions both ways (those kept); a rate that changed is said. */

@@ -11,9 +11,14 @@ public enum PairState {
     /** An operator forced the pair down, whatever the model says. */
     FORCED_DOWN,
     /** An operator forced the pair up, whatever the model says. */
-    FORCED_UP;
+    FORCED_UP,
+    /**
+     * One of the two robots is not registered (it left, or was kicked): the pair cannot talk,
+     * whatever it was. Only a snapshot says it; the core keeps the state it had.
+     */
+    GONE;
 
-    /** How the window and the log say it: "up", "broken", "forced down", "forced up". */
+    /** How the window and the log say it: "up", "broken", "forced down", "forced up", "gone". */
     public String text() {
         return name().toLowerCase(Locale.ROOT).replace('_', ' ');
     }

@@ -24,6 +24,8 @@ public final class PairStats {
     private final LongAdder bytesFirstToSecond = new LongAdder();
     private final LongAdder bytesSecondToFirst = new LongAdder();
     private final LongAdder connections = new LongAdder();
+    private final UdpCounts udpFirstToSecond = new UdpCounts();
+    private final UdpCounts udpSecondToFirst = new UdpCounts();
     private volatile CloseReason lastClose;
     private final long firstSeenNs;
     private PairState state;
@@ -52,6 +54,11 @@ public final class PairStats {
     /** The counter of bytes forwarded from {@code robot} to the other robot of the pair. */
     public LongAdder bytesFrom(String robot) {
         return robot.equals(pair.first()) ? bytesFirstToSecond : bytesSecondToFirst;
+    }
+
+    /** The datagrams of the pair's fixed UDP ports from {@code robot} to the other robot of the pair. */
+    public UdpCounts udpFrom(String robot) {
+        return robot.equals(pair.first()) ? udpFirstToSecond : udpSecondToFirst;
     }
 
     /** A connection was established (the WSS reached the target). */

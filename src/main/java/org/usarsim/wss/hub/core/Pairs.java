@@ -93,9 +93,9 @@ final class Pairs {
 
     /** An operator forces the pair, up with its rate and delay pinned (or not: {@link RatePin#NONE}); said once. */
     void force(RobotPair pair, Force force, RatePin pin, Changes out) {
-        forcedPairs.pin(pair, force == Force.UP ? pin : RatePin.NONE);
+        boolean pinned = forcedPairs.pin(pair, force == Force.UP ? pin : RatePin.NONE);
         Force before = forcedPairs.force(pair, force);
-        if (before != force) {
+        if (before != force || pinned) { // a new rate or delay for a pair forced up is a force that changed something
             out.add(new HubEvent.PairForced(pair.first(), pair.second(), force == Force.UP));
         }
     }
@@ -122,7 +122,7 @@ final class Pairs {
         PairStats pairStats = stats.get(pair);
         PairState now = stateOf(pair);
         if (pairStats != null && pairStats.moveTo(now, bothPresent(pair), nowNs) && say) {
-            out.add(new HubEvent.Said(Level.INFO, "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
+            out.add(new HubEvent.Said(Level.INFO, "pair changes", "pair " + pair.first() + " - " + pair.second() + ": " + now.text()));
         }
     }
 

@@ -89,7 +89,7 @@ final class PortForgetting {
             }
         }
         if (forgotten > 0) {
-            out.add(new HubEvent.Said(Level.INFO, "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name
+            out.add(new HubEvent.Said(Level.INFO, "forgotten WSS ports", "forgot " + forgotten + " WSS port" + (forgotten == 1 ? "" : "s") + " of " + name
                     + ", gone for " + memory.goneSeconds(name, nowNs) + " s"));
         }
         if (!kept) {
@@ -120,7 +120,7 @@ final class PortForgetting {
             }
         }
         if (given > 0) {
-            out.add(new HubEvent.Said(Level.INFO, "descriptors ran short: gave back " + given + " remembered WSS port"
+            out.add(new HubEvent.Said(Level.INFO, "ports given back", "descriptors ran short: gave back " + given + " remembered WSS port"
                     + (given == 1 ? "" : "s") + " of " + of + " robot" + (of == 1 ? "" : "s") + " that left, the longest gone first"));
         }
         return given;

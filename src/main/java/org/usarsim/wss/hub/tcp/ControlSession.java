@@ -85,8 +85,8 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
             if (robot == null) {
                 LOG.fine(() -> "control connection from " + peer + " ended: " + e);
             } else {
-                LOG.info("lost the control connection of " + robot + " from " + peer + " (" + e.getMessage()
-                        + "); deregistering it");
+                hub.say(LOG, "lost control connections", address, "lost the control connection of " + robot + " from "
+                        + peer + " (" + e.getMessage() + "); deregistering it");
             }
         } finally {
             close();

@@ -7,6 +7,7 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.ShapedFlow;
 
 /**
  * One way of a link: reads from one channel into its buffer, and counts what the forwarding loop
@@ -44,10 +45,32 @@ final class Direction {
     }
 
     /**
+     * Writes what waits in {@code buffer} to the output and counts it, unless the link is closed:
+     * under the link's send lock, so that once {@link Link#close} returns no byte more reaches the
+     * target nor is reported (a pair forced down: its DATA_SENT lines end before FORCED, issue 27).
+     */
+    void send(ByteBuffer buffer) throws IOException {
+        synchronized (link.sending) {
+            if (!link.isClosed()) {
+                sent(out.write(buffer));
+            }
+        }
+    }
+
+    /** As {@link #send(ByteBuffer)}, for what a shaped flow has due at {@code now}. */
+    void send(ShapedFlow flow, long now) throws IOException {
+        synchronized (link.sending) {
+            if (!link.isClosed()) {
+                sent(flow.writeTo(out, now));
+            }
+        }
+    }
+
+    /**
      * The one count of bytes sent: what reached the target's socket, for the statistics and the
      * event log alike.
      */
-    void sent(int written) {
+    private void sent(int written) {
         if (written > 0) {
             forwarded.add(written);
             events.dataSent(fromRobot, toRobot, written);

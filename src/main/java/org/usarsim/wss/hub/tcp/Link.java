@@ -7,7 +7,9 @@ import java.nio.channels.CancelledKeyException;
 import java.nio.channels.ClosedSelectorException;
 import java.nio.channels.Selector;
 import java.nio.channels.SocketChannel;
+import java.util.EnumSet;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
@@ -44,6 +46,8 @@ public final class Link implements Runnable, Connection {
     private final LinkHub hub;
     private final Selector selector;
     private final AtomicBoolean closed = new AtomicBoolean();
+    /** Held while a direction writes and reports what it wrote, and by {@link #close}: no byte is sent once closed. */
+    final Object sending = new Object();
     /** The pair's counters: this link adds its bytes and its opening, and says why it closed. */
     private final PairStats stats;
     /** With links shaped: how; null forwards as fast as the machine goes (wss.shaping = off). */
@@ -121,10 +125,33 @@ public final class Link implements Runnable, Connection {
     @Override
     public void close(CloseReason reason) {
         closeReason.compareAndSet(null, reason);
-        if (closed.compareAndSet(false, true)) {
-            Closing.quietly(source);
-            Closing.quietly(target);
-            selector.wakeup();
+        synchronized (sending) { // a write under way is written and reported first; none after
+            if (closed.compareAndSet(false, true)) {
+                if (CUTS.contains(reason)) {
+                    resetOnClose(source);
+                    resetOnClose(target);
+                }
+                Closing.quietly(source);
+                Closing.quietly(target);
+                selector.wakeup();
+            }
+        }
+    }
+
+    /**
+     * The closes that cut a stream (a break, a kick, a FORCE down, the server's stop): both ends get
+     * a reset, not an end of stream, so that neither robot takes a cut stream for a finished one
+     * (issue 27; docs/protocol.md section 4.3). An end's own close or reset ends the link cleanly.
+     */
+    private static final Set<CloseReason> CUTS = EnumSet.of(CloseReason.OUT_OF_RANGE, CloseReason.KICKED, CloseReason.FORCED,
+            CloseReason.SERVER_STOPPED);
+
+    /** SO_LINGER 0: the close sends a reset (RST) instead of an end of stream (FIN). */
+    private static void resetOnClose(SocketChannel channel) {
+        try {
+            channel.setOption(StandardSocketOptions.SO_LINGER, 0);
+        } catch (IOException | RuntimeException e) {
+            // Not connected or already closed: nothing to reset.
         }
     }
 
@@ -178,7 +205,9 @@ public final class Link implements Runnable, Connection {
 
     private void forward() throws IOException {
         for (SocketChannel channel : new SocketChannel[] {source, target}) {
-            buffers.apply(channel);
+            if (shaping == null) {
+                buffers.apply(channel); // a shaped link sizes them by its rate before it reads (ShapedForwarding)
+            }
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
             hub.keepAlive().apply(channel);

@@ -75,6 +75,11 @@ public final class PortSockets {
         return bindListening(new InetSocketAddress(bindAddress, 0));
     }
 
+    /** A new listening socket on a fixed port's number (docs/fixed-ports.md), shared as a port's sockets share it. */
+    public static ServerSocketChannel bindNumber(InetAddress bindAddress, int number) throws IOException {
+        return bindListening(new InetSocketAddress(bindAddress, number));
+    }
+
     /** The number a socket from {@link #bindNew} holds. */
     public static int numberOf(ServerSocketChannel bound) {
         return bound.socket().getLocalPort();

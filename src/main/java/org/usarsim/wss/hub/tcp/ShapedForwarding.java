@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub.tcp;
 
 import java.io.IOException;
+import java.net.StandardSocketOptions;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.concurrent.TimeUnit;
@@ -92,6 +93,22 @@ final class ShapedForwarding extends Forwarding {
         return to.flow.due(now) > 0 ? ops | SelectionKey.OP_WRITE : ops;
     }
 
+    /**
+     * The kernel's buffers of a shaped direction (the WSS's receive buffer on its input, its send
+     * buffer on its output), in time at the direction's rate: with the 4 MiB of
+     * {@code wss.socketBuffer}, or the OS's own sizing, the kernel held seconds of a slow link's
+     * stream besides the flow's queue (issue 27). At least {@link #LEAST_SOCKET_BUFFER}, 64 KiB:
+     * on loopback a segment is 64 KiB, and a smaller buffer stalls TCP on its delayed
+     * acknowledgements (4 KiB moved 0.76 Mbit/s on a 4 Mbit/s link).
+     */
+    static final long SOCKET_BUFFER_NS = TimeUnit.MILLISECONDS.toNanos(20);
+    static final int LEAST_SOCKET_BUFFER = 64 * 1024;
+
+    /** The socket buffer size for a shaped direction at {@code bitsPerSecond}. */
+    static int socketBuffer(long bitsPerSecond) {
+        return (int) Math.max(LEAST_SOCKET_BUFFER, Math.min(1 << 22, bitsPerSecond / 8 * SOCKET_BUFFER_NS / 1_000_000_000L));
+    }
+
     /** One direction's flow and its pair's live condition one way. */
     private static final class Way {
         private final Direction direction;
@@ -104,7 +121,19 @@ final class ShapedForwarding extends Forwarding {
             this.condition = condition;
             this.followed = condition.get();
             this.flow = new ShapedFlow(shaping.airtime().open(direction.fromRobot, direction.toRobot, now), followed.bitsPerSecond(),
-                    followed.delayMs(), direction.buffer.capacity());
+                    followed.delayMs(), shaping.queueMs());
+            sizeBuffers();
+        }
+
+        /** The input's receive buffer and the output's send buffer at the rate. */
+        private void sizeBuffers() {
+            int size = socketBuffer(flow.rate());
+            try {
+                direction.in.setOption(StandardSocketOptions.SO_RCVBUF, size);
+                direction.out.setOption(StandardSocketOptions.SO_SNDBUF, size);
+            } catch (IOException | RuntimeException e) {
+                // A socket already closed: the link is ending anyway.
+            }
         }
 
         /** Takes the pair's condition now: a new rate or delay applies to the bytes not yet on the air. */
@@ -113,7 +142,11 @@ final class ShapedForwarding extends Forwarding {
             if (now != followed) {
                 followed = now;
                 if (now.shaped()) {
+                    boolean newRate = now.bitsPerSecond() != flow.rate();
                     flow.setConditions(now.bitsPerSecond(), now.delayMs());
+                    if (newRate) {
+                        sizeBuffers();
+                    }
                 }
             }
         }
@@ -142,7 +175,7 @@ final class ShapedForwarding extends Forwarding {
 
         /** Writes what is due, counted as unshaped. */
         void writeDue(long now) throws IOException {
-            direction.sent(flow.writeTo(direction.out, now));
+            direction.send(flow, now);
         }
     }
 }

@@ -8,8 +8,8 @@ import org.usarsim.wss.shaping.Airtime;
 /**
  * What a shaped link forwards by (docs/shaping.md): its pair's live condition each way (the
  * core's one value per ordered pair, {@code up} from the port's source to its target), the
- * robots' radios and the clock.
+ * robots' radios, the clock, and each direction's queue ({@code wss.shaping.queueMs}).
  */
 public record Shaping(Airtime airtime, AtomicReference<PairCondition> up, AtomicReference<PairCondition> down,
-        LongSupplier clock) {
+        LongSupplier clock, int queueMs) {
 }

@@ -19,6 +19,12 @@ public interface SocketRules {
     /** An INFO line a client caused (an operator's FORCE), written to {@code log} within the same limits as the WARNINGs. */
     void note(Logger log, String category, InetAddress client, String message);
 
+    /**
+     * An INFO line of the server's about what a client did (its control connection lost), within
+     * the limit on such lines per kind (docs/reliability.md).
+     */
+    void say(Logger log, String kind, InetAddress client, String message);
+
     /** A WARNING a client caused, written to {@code log} within the limit per client (docs/reliability.md); {@code cause} may be null. */
     void warn(Logger log, String category, InetAddress client, String message, Throwable cause);
 }

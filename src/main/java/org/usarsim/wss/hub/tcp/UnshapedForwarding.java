@@ -118,7 +118,7 @@ final class UnshapedForwarding extends Forwarding {
             if (!pending) {
                 return;
             }
-            direction.sent(direction.out.write(direction.buffer));
+            direction.send(direction.buffer);
             if (!direction.buffer.hasRemaining()) {
                 direction.buffer.clear();
                 pending = false;

@@ -23,10 +23,6 @@ public final class PollStep {
 
     /** A registered robot to kick: one the simulator does not list, or one whose battery is empty. */
     public record Kick(String robot, boolean batteryEmpty) {
-        String reason() {
-            return reason("simulator");
-        }
-
         /** Why, in words, when {@code lister} (the simulator, the recording) lists the robots. */
         public String reason(String lister) {
             return batteryEmpty ? "its battery is empty" : "the " + lister + " does not list it";

@@ -2,51 +2,72 @@ package org.usarsim.wss.model.simulator;
 
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
-import java.util.logging.Logger;
 import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.model.WssEventListener;
 
 /**
- * A propagation model driven by robot positions polled from a USARSim-compatible simulator. Every
- * interval it sends {@code GETPOS}; then it kicks the registered robots the simulator no longer
+ * A propagation model driven by robot positions polled from a {@link PositionSource}: a
+ * USARSim-compatible simulator's position socket, or rosbridge ({@code positions}). Every interval
+ * it asks the source where the robots are; then it kicks the registered robots the source no longer
  * lists or whose battery is empty, and breaks or resumes every pair of listed robots by its
- * strength (events only on change). When the simulator goes away, answers late or sends garbage,
+ * strength (events only on change). When the source goes silent, answers late or sends garbage,
  * the model says so once, keeps the last known link state and reconnects with a growing pause.
  *
  * <p>Subclasses give the strength of a pair; the rest is here, in one place.
  */
-public abstract class SimulatorModel implements PropagationModel {
+public abstract class SimulatorModel extends PollingModel {
 
     private static final long MAX_BACKOFF_MS = 10_000;
 
-    /** The settings of every simulator model: the simulator's connection, the path loss, the link stability. */
+    /** Where the positions come from: the values of {@code positions}. */
+    static final String USARSIM = "usarsim";
+    static final String ROSBRIDGE = "rosbridge";
+
+    /**
+     * The settings of every simulator model: where the positions come from (positions.*, the
+     * simulator's socket usarsim.*, or rosbridge.*), the path loss, the link stability.
+     */
     static final List<Setting> SETTINGS = List.of(
+            Setting.choice("positions", "Positions from", USARSIM, List.of(USARSIM, ROSBRIDGE))
+                    .help("Where the robots' positions come from: a USARSim-compatible position socket (usarsim.*)"
+                            + " or a rosbridge WebSocket (rosbridge.*, docs/ros.md)"),
+            Setting.integer("positions.interval", "Poll interval", 1000).from(100).to(60000).unit("ms").alias("usarsim.interval")
+                    .help("Milliseconds between two applications of the robots' positions: a GETPOS,"
+                            + " or rosbridge's throttle_rate (formerly usarsim.interval)"),
             Setting.host("usarsim.host", "Host", "127.0.0.1")
                     .help("The machine of the simulator's position socket: a host name or an IP address"),
             Setting.integer("usarsim.port", "Port", 7435).from(1).to(65535).noun("a port number")
                     .help("The simulator's position port, 7435 as a rule; not 3000, which is USARSim's robot port"),
-            Setting.integer("usarsim.interval", "Poll interval", 1000).from(100).to(60000).unit("ms")
-                    .help("Milliseconds between two requests for the robots' positions (GETPOS)"),
             Setting.integer("usarsim.timeout", "Timeout", 2000).from(100).to(60000).unit("ms")
                     .help("Milliseconds to wait for the simulator's answer"),
+            Setting.text("rosbridge.url", "URL", RosbridgeConfig.DEFAULT_URL)
+                    .help("The rosbridge server's WebSocket: ws://HOST:PORT (rosbridge_server's default port is 9090)"),
+            Setting.text("rosbridge.topic", "Topic", RosbridgeConfig.DEFAULT_TOPIC)
+                    .help("The topic of the poses: /gazebo/model_states, /tf, or a per-robot one such as /{robot}/odom"),
+            Setting.choice("rosbridge.type", "Message type", "", RosbridgeConfig.TYPES).orEmpty("by the topic")
+                    .help("The topic's message type, where its name does not tell"),
+            Setting.text("rosbridge.frame", "Frame", RosbridgeConfig.DEFAULT_FRAME)
+                    .help("On /tf: the frame positions are in; each robot's chain of transforms is composed up to it"),
+            Setting.text("rosbridge.names", "Names", "").orEmpty("the WSS names")
+                    .help("WSS robot names to model names or frames, WSS=MODEL separated by commas (Scout=scout_1);"
+                            + " others by their WSS name, or {robot}/base_link on /tf"),
+            Setting.integer("rosbridge.stale", "Stale limit", 0).from(0).to(600000).unit("ms").note("0: 3 poll intervals")
+                    .help("A robot whose pose is older is unlisted (kicked); nothing at all for this long: rosbridge is silent"),
+            Setting.integer("rosbridge.maxMessage", "Largest message", 16).from(1).to(1024).unit("MiB")
+                    .help("A longer message from rosbridge (its fragments together) is dropped with a line in the log"),
             Setting.number("distance.cutoff", "Cutoff", "-93").unit("dBm")
                     .help("Below this signal strength two robots cannot talk; -93 dBm is a property of the channel, best left as it is"),
             Setting.number("distance.pd0", "Pd0", "-49.67").unit("dBm").help("The signal strength at distance d0"),
@@ -69,16 +90,10 @@ public abstract class SimulatorModel implements PropagationModel {
         }
     }
 
-    private final Logger log = Logger.getLogger(getClass().getName());
     private final PollClock clock;
 
-    /** The values given by {@link #configure}, over the declared defaults: checked and frozen at each start. */
-    private volatile Map<String, String> given = Map.of();
     /** The configuration of the current run (or the last one); null before the first start. */
     private volatile SimulatorConfig config;
-    private volatile RobotLinkModel linkModel;
-    private volatile WssEventListener listener = new WssEventListener() {
-    };
     /** What the last poll learned and decided, swapped whole: GETSS and accepts read it. */
     private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
@@ -111,51 +126,38 @@ public abstract class SimulatorModel implements PropagationModel {
         return DialogLayout.DISTANCE;
     }
 
-    /** Takes the values; they are checked, by their settings' rules, at the next start. */
-    @Override
-    public void configure(ModelSettings settings) {
-        Map<String, String> values = new HashMap<>(given);
-        values.putAll(settings.asMap());
-        given = Map.copyOf(values);
-    }
-
-    @Override
-    public void setRobotLinkModel(RobotLinkModel linkModel) {
-        this.linkModel = linkModel;
-    }
-
-    @Override
-    public void setEventListener(WssEventListener listener) {
-        this.listener = listener;
-    }
-
-    /** Checks and freezes the configuration, connects to the simulator and starts polling it. */
+    /** Checks and freezes the configuration, opens the source of positions and starts polling it. */
     @Override
     public synchronized void start() throws ModelStartException {
         if (poller != null) {
             return;
         }
-        if (linkModel == null) {
-            throw new ModelStartException("no server to act on (setRobotLinkModel was not called)");
-        }
-        SimulatorConfig run = SimulatorConfig.read(settings(), given);
-        SimulatorConnection connection;
+        RobotLinkModel server = server();
+        SimulatorConfig run = SimulatorConfig.read(settings(), given());
+        started(run.values());
+        PositionSource.Opener opener = run.opener(clock);
+        PositionSource source = null;
+        IOException unreachable = null;
         try {
-            connection = SimulatorConnection.open(run.host(), run.port(), run.timeoutMs());
+            source = opener.open();
         } catch (IOException | RuntimeException e) {
-            throw new ModelStartException("cannot reach the simulator at " + run.where() + " (" + e.getMessage() + ")", e);
+            if (!opener.startsSilent()) {
+                throw new ModelStartException("cannot reach the simulator at " + run.where() + " (" + e.getMessage() + ")", e);
+            }
+            unreachable = e instanceof IOException io ? io : new IOException(e.getMessage(), e);
         }
         config = run;
         LinkStates links = new LinkStates(run.pathLoss().cutoff(), run.margin(), run.holdSeconds());
         snapshot = PollSnapshot.empty(links, clock.nanoTime());
-        walls = List.of();
-        started(run.values());
+        List<Wall> own = ownWalls();
+        walls = own == null ? List.of() : List.copyOf(own);
         PathLoss pathLoss = run.pathLoss();
-        log.info(name() + " polls the simulator at " + run.where() + " every " + run.intervalMs() + " ms; range "
+        log.info(name() + (run.rosbridge() != null ? " takes positions from " : " polls the simulator at ") + run.where()
+                + " every " + run.intervalMs() + " ms; range "
                 + metres(pathLoss.range()) + " (cutoff " + pathLoss.cutoff() + " dBm"
                 + (run.margin() > 0 ? ", margin " + run.margin() + " dB" : "")
                 + (run.holdSeconds() > 0 ? ", hold time " + run.holdSeconds() + " s" : "") + ")");
-        poller = new Poller(run, connection);
+        poller = new Poller(server, run, opener, source, unreachable);
     }
 
     /** Stops polling; a poll under way is abandoned (its connection closed) and acts on nothing more. */
@@ -256,15 +258,25 @@ public abstract class SimulatorModel implements PropagationModel {
      * count of each pair that has one. Published with this poll's positions. None by default.
      */
     protected Map<RobotPair, Double> obstacleCounts(Map<String, ReportedRobot> listed, List<RobotPair> pairs,
-            SimulatorConnection simulator) throws IOException {
+            PositionSource source) throws IOException {
         return Map.of();
     }
 
     /**
-     * Called at every start, before the first poll, with the run's checked settings (every
-     * declared key): a subclass reads its own and forgets what the last run learned.
+     * Called at every start, before the source is opened, with the run's checked settings (every
+     * declared key): a subclass reads its own and forgets what the last run learned; it may refuse
+     * the start.
      */
-    protected void started(ModelSettings settings) {
+    protected void started(ModelSettings settings) throws ModelStartException {
+    }
+
+    /**
+     * The walls of the model's own (the Obstacle model's {@code obstacle.walls}), read at the start,
+     * which the map shows and a recording keeps instead of the source's; null (the default) for
+     * the source's.
+     */
+    protected List<Wall> ownWalls() {
+        return null;
     }
 
     /** The path loss of the current run (the declared defaults before the first start). */
@@ -281,23 +293,31 @@ public abstract class SimulatorModel implements PropagationModel {
      */
     private final class Poller implements Runnable {
 
+        private final RobotLinkModel server;
         private final SimulatorConfig run;
+        private final PositionSource.Opener opener;
         private final Thread thread;
         private volatile boolean stopped;
-        private volatile SimulatorConnection connection;
+        private volatile PositionSource connection;
         /** Why the simulator is unusable since {@link #troubleSince}; null while it answers. */
         private String trouble;
         private long troubleSince;
         /** A failure that is not the simulator's, already logged; null after a good poll. */
         private String failure;
-        /** The connection whose walls {@link #walls} holds. */
-        private SimulatorConnection wallsFrom;
+        /** The source's walls as {@link #walls} holds them: learnt again when the source gives others. */
+        private List<Wall> wallsFrom;
         /** Whether this run said that the simulator gives no walls. */
         private boolean saidNoWalls;
 
-        Poller(SimulatorConfig run, SimulatorConnection connection) {
+        /** Polls {@code source}; when it is null (unreachable at the start, for {@code unreachable}), opens one first. */
+        Poller(RobotLinkModel server, SimulatorConfig run, PositionSource.Opener opener, PositionSource source, IOException unreachable) {
+            this.server = server;
             this.run = run;
-            this.connection = connection;
+            this.opener = opener;
+            this.connection = source;
+            if (unreachable != null) {
+                lost(unreachable);
+            }
             thread = new Thread(this, name() + " poller");
             thread.setDaemon(true);
             thread.start();
@@ -318,18 +338,24 @@ public abstract class SimulatorModel implements PropagationModel {
         public void run() {
             long backoffMs = run.intervalMs();
             long next = clock.nanoTime();
+            if (trouble != null) {
+                // Unreachable at the start: the first attempt again after a pause, as after a loss.
+                next += backoffMs * 1_000_000L;
+                backoffMs = nextBackoff(backoffMs, run.intervalMs());
+            }
             try {
                 while (pause(next)) {
                     next = clock.nanoTime() + run.intervalMs() * 1_000_000L;
                     try {
-                        SimulatorConnection simulator = connection;
+                        PositionSource simulator = connection;
                         if (simulator == null) {
-                            simulator = SimulatorConnection.open(run.host(), run.port(), run.timeoutMs());
+                            simulator = opener.open();
                             connection = simulator;
                         }
-                        poll(simulator);
-                        back();
-                        backoffMs = run.intervalMs();
+                        if (poll(simulator)) {
+                            back();
+                            backoffMs = run.intervalMs();
+                        }
                     } catch (IOException e) {
                         if (stopped) {
                             return;
@@ -359,87 +385,61 @@ public abstract class SimulatorModel implements PropagationModel {
             return !stopped;
         }
 
-        /** One poll: positions, kicks, obstacle counts, then every pair of listed robots decided, published, broken or resumed. */
-        private void poll(SimulatorConnection simulator) throws IOException {
-            RobotLinkModel hub = linkModel;
-            List<String> registeredBefore = hub.getListOfRegisteredRobots();
-            Map<String, ReportedRobot> listed = simulator.positions();
-            if (stopped) {
-                return;
+        /**
+         * One poll: positions, kicks, obstacle counts, then every pair of listed robots decided,
+         * published, broken or resumed. False when the source gave none, being just opened (the
+         * poll acts on nothing).
+         */
+        private boolean poll(PositionSource simulator) throws IOException {
+            List<String> registeredBefore = server.getListOfRegisteredRobots();
+            Map<String, ReportedRobot> listed = simulator.positions(registeredBefore);
+            if (stopped || listed == null) {
+                return false;
             }
-            learnWalls(simulator);
-            List<PollStep.Kick> kicks = PollStep.kicks(registeredBefore, listed, kicksRobotsAbsentFrom(listed));
-            for (PollStep.Kick kick : kicks) {
-                log.info("kicking " + kick.robot() + ": " + kick.reason());
-                if (kick.batteryEmpty()) {
-                    listener.robotOutOfBattery(kick.robot());
-                }
-                hub.kickOutRobot(kick.robot());
+            if (ownWalls() == null) {
+                learnWalls(simulator);
             }
-            List<String> present = PollStep.present(hub.getListOfRegisteredRobots(), listed);
+            applyPoll(new Poll(registeredBefore, listed, kicksRobotsAbsentFrom(listed), "simulator", "", walls, () -> stopped),
+                    present -> decide(present, listed, simulator));
+            failure = null;
+            return true;
+        }
+
+        /** The obstacle counts, then every pair of the present robots decided and published (GETSS reads it); null when stopped. */
+        private List<ModelPoll.Pair> decide(List<String> present, Map<String, ReportedRobot> listed, PositionSource simulator)
+                throws IOException {
             Map<RobotPair, Double> obstacles = obstacleCounts(listed, PollStep.pairs(present), simulator);
             if (stopped) {
-                return;
+                return null;
             }
             PollStep.Decision decision = PollStep.decide(present, listed, obstacles, clock.nanoTime(), snapshot.links(),
                     SimulatorModel.this::strength);
             // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
             snapshot = decision.snapshot();
-            listener.polled(polled(listed, kicks, decision.links(), obstacles));
-            // Every pair's state in one go: a robot that drove out of range of many stops all their ports together.
-            Map<RobotPair, Boolean> inRange = new LinkedHashMap<>();
-            decision.links().forEach(link -> inRange.put(link.pair(), link.live()));
-            Set<RobotPair> changed = hub.applyLinkStates(inRange);
+            List<ModelPoll.Pair> pairs = new ArrayList<>(decision.links().size());
             for (PollStep.Link link : decision.links()) {
-                RobotPair pair = link.pair();
-                if (!changed.contains(pair)) {
-                    continue;
-                }
-                if (link.live()) {
-                    log.fine(pair + " in range: " + link.strength() + " dBm");
-                    listener.connectionInRange(pair.first(), pair.second());
-                } else {
-                    log.fine(pair + " out of range: " + link.strength() + " dBm at " + metres(link.distance()));
-                    listener.connectionOutOfRange(pair.first(), pair.second(), link.strength(), link.distance());
-                }
-            }
-            failure = null;
-        }
-
-        /** What this poll learned and decided, for the listeners (a recording): sent before its breaks and resumes are applied. */
-        private ModelPoll polled(Map<String, ReportedRobot> listed, List<PollStep.Kick> kicks, List<PollStep.Link> links,
-                Map<RobotPair, Double> obstacles) {
-            List<ModelPoll.Robot> robots = new ArrayList<>(listed.size());
-            for (ReportedRobot robot : listed.values()) {
-                robots.add(new ModelPoll.Robot(robot.name(), new Position(robot.x(), robot.y(), robot.z()), robot.batteryEmpty()));
-            }
-            List<ModelPoll.Kick> kicked = new ArrayList<>(kicks.size());
-            for (PollStep.Kick kick : kicks) {
-                kicked.add(new ModelPoll.Kick(kick.robot(), kick.batteryEmpty()));
-            }
-            List<ModelPoll.Pair> pairs = new ArrayList<>(links.size());
-            for (PollStep.Link link : links) {
                 RobotPair pair = link.pair();
                 pairs.add(new ModelPoll.Pair(pair.first(), pair.second(), link.strength(), obstacles.getOrDefault(pair, Double.NaN),
                         link.live()));
             }
-            return new ModelPoll(robots, kicked, pairs, walls);
+            return pairs;
         }
 
-        /** Takes the walls of a new connection once they are known, and says what they are, once per connection. */
-        private void learnWalls(SimulatorConnection simulator) {
+        /** Takes the source's walls once they are known, and says what they are, each time it gives others. */
+        private void learnWalls(PositionSource simulator) {
             List<Wall> given = simulator.walls();
-            if (given == null || simulator == wallsFrom) {
+            if (given == null || given == wallsFrom) {
                 return;
             }
-            wallsFrom = simulator;
+            wallsFrom = given;
             walls = given;
             if (simulator.wallsProblem() != null) {
                 log.warning("the simulator at " + run.where() + " gave its walls in a reply that cannot be read ("
                         + simulator.wallsProblem() + "): the map shows none");
             } else if (given.isEmpty()) {
                 if (!saidNoWalls) {
-                    log.info("the simulator at " + run.where() + " gives no walls (USARSim does not answer GETWALLS): the map shows none");
+                    log.info("the simulator at " + run.where() + " gives no walls" + (run.rosbridge() == null
+                            ? " (USARSim does not answer GETWALLS)" : "") + ": the map shows none");
                     saidNoWalls = true;
                 }
             } else {
@@ -476,7 +476,7 @@ public abstract class SimulatorModel implements PropagationModel {
         }
 
         private void close() {
-            SimulatorConnection open = connection;
+            PositionSource open = connection;
             connection = null;
             if (open != null) {
                 open.close();
@@ -487,9 +487,5 @@ public abstract class SimulatorModel implements PropagationModel {
     /** The pause after a failed attempt that follows one of {@code backoffMs}: doubled, up to 10 s (or the interval, if longer). */
     static long nextBackoff(long backoffMs, int intervalMs) {
         return Math.min(backoffMs * 2, Math.max(MAX_BACKOFF_MS, intervalMs));
-    }
-
-    private static String metres(double metres) {
-        return String.format(java.util.Locale.ROOT, "%.2f m", metres);
     }
 }

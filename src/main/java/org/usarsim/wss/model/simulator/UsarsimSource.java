@@ -1,7 +1,6 @@
 package org.usarsim.wss.model.simulator;
 
 import java.io.ByteArrayOutputStream;
-import java.io.Closeable;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -18,12 +17,12 @@ import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Wall;
 
 /**
- * One connection to a USARSim-compatible position socket: {@code GETPOS} and {@code GETOBS}, each
- * answered by one line, and once {@code GETWALLS}, which only the world server answers. Used by
- * one thread at a time. Every request waits at most the timeout for its answer; a stale answer to
- * an earlier request (a late {@code NUMOBS}) is skipped.
+ * Positions from a USARSim-compatible position socket: one connection, {@code GETPOS} and
+ * {@code GETOBS}, each answered by one line, and once {@code GETWALLS}, which only the world server
+ * answers. Used by one thread at a time. Every request waits at most the timeout for its answer; a
+ * stale answer to an earlier request (a late {@code NUMOBS}) is skipped.
  */
-public final class SimulatorConnection implements Closeable {
+public final class UsarsimSource implements PositionSource {
 
     /** Longer lines are garbage: about 15 000 robots would fit. */
     static final int MAX_LINE_BYTES = 1024 * 1024;
@@ -48,7 +47,7 @@ public final class SimulatorConnection implements Closeable {
     /** A WALLS line over {@link #MAX_LINE_BYTES} is being dropped up to its end: it costs the walls, not the simulator. */
     private boolean droppingWalls;
 
-    private SimulatorConnection(Socket socket, int timeoutMs) throws IOException {
+    private UsarsimSource(Socket socket, int timeoutMs) throws IOException {
         this.socket = socket;
         this.timeoutMs = timeoutMs;
         socket.setTcpNoDelay(true);
@@ -56,12 +55,32 @@ public final class SimulatorConnection implements Closeable {
         out = socket.getOutputStream();
     }
 
+    /** How a run opens it: {@code host:port}, its connection refused at the start as it is today. */
+    static PositionSource.Opener opener(String host, int port, int timeoutMs) {
+        return new PositionSource.Opener() {
+            @Override
+            public PositionSource open() throws IOException {
+                return UsarsimSource.open(host, port, timeoutMs);
+            }
+
+            @Override
+            public String where() {
+                return host + ":" + port;
+            }
+
+            @Override
+            public boolean startsSilent() {
+                return false;
+            }
+        };
+    }
+
     /** Connects, waiting at most {@code timeoutMs}; the same timeout bounds every answer. */
-    public static SimulatorConnection open(String host, int port, int timeoutMs) throws IOException {
+    public static UsarsimSource open(String host, int port, int timeoutMs) throws IOException {
         Socket socket = new Socket();
         try {
             socket.connect(new InetSocketAddress(host, port), timeoutMs);
-            return new SimulatorConnection(socket, timeoutMs);
+            return new UsarsimSource(socket, timeoutMs);
         } catch (IOException | RuntimeException e) {
             socket.close();
             throw e;
@@ -69,11 +88,12 @@ public final class SimulatorConnection implements Closeable {
     }
 
     /**
-     * Sends {@code GETPOS}; the robots the simulator lists, by name. The first time on a connection,
-     * {@code GETWALLS} goes before it in the same write: the walls come in their own time
-     * ({@link #walls()}), never delaying the positions.
+     * Sends {@code GETPOS}; the robots the simulator lists, by name (whoever is registered). The
+     * first time on a connection, {@code GETWALLS} goes before it in the same write: the walls come
+     * in their own time ({@link #walls()}), never delaying the positions.
      */
-    public Map<String, ReportedRobot> positions() throws IOException {
+    @Override
+    public Map<String, ReportedRobot> positions(List<String> registered) throws IOException {
         send(wallsToAsk ? "GETWALLS\r\nGETPOS\r\n" : "GETPOS\r\n");
         wallsAsked |= wallsToAsk;
         wallsToAsk = false;
@@ -116,11 +136,13 @@ public final class SimulatorConnection implements Closeable {
      * The walls the simulator gave on this connection; empty when it does not know {@code GETWALLS};
      * null until the first {@link #positions()} showed which.
      */
+    @Override
     public List<Wall> walls() {
         return walls;
     }
 
     /** Why the WALLS answer was not used (malformed); null when it was, or none came. */
+    @Override
     public String wallsProblem() {
         return wallsProblem;
     }
@@ -130,6 +152,7 @@ public final class SimulatorConnection implements Closeable {
      * within the timeout: the count per answered pair, NaN where the simulator answered a negative
      * count. A pair without an answer is absent from the result (a simulator may not know GETOBS).
      */
+    @Override
     public Map<RobotPair, Double> obstacles(Collection<RobotPair> pairs) throws IOException {
         Map<RobotPair, Double> counts = new HashMap<>();
         if (pairs.isEmpty()) {

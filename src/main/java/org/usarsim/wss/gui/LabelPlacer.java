@@ -1,0 +1,59 @@
+package org.usarsim.wss.gui;
+
+import java.awt.geom.Point2D;
+import java.awt.geom.Rectangle2D;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Where the map's labels go so that no two boxes overlap (issue 26): the boxes taken so far (the
+ * robots' names first), and for each new label the first of its candidate places that overlaps
+ * none. A label with no free place is left out: the Link statistics say the same. Pure geometry,
+ * one per painting.
+ */
+final class LabelPlacer {
+
+    private final List<Rectangle2D> taken = new ArrayList<>();
+
+    /** Takes a box that is drawn whatever: a robot's name. */
+    void take(Rectangle2D box) {
+        taken.add(box);
+    }
+
+    /**
+     * The first box of {@code width} x {@code height} whose top left is one of {@code corners}
+     * (in order of preference) and overlaps no box taken, then taken; null when every one does.
+     */
+    Rectangle2D place(List<Point2D> corners, double width, double height) {
+        for (Point2D corner : corners) {
+            Rectangle2D box = new Rectangle2D.Double(corner.getX(), corner.getY(), width, height);
+            if (taken.stream().noneMatch(box::intersects)) {
+                taken.add(box);
+                return box;
+            }
+        }
+        return null;
+    }
+
+    /** The boxes taken so far, in order. */
+    List<Rectangle2D> taken() {
+        return List.copyOf(taken);
+    }
+
+    /**
+     * A pair label's candidate corners along the segment from {@code a} to {@code b}: beside its
+     * middle first, then beside points a third and two thirds along, each above and below.
+     */
+    static List<Point2D> alongLine(Point2D a, Point2D b, double width, double height) {
+        List<Point2D> corners = new ArrayList<>();
+        for (double along : new double[] {0.5, 1 / 3.0, 2 / 3.0, 0.25, 0.75}) {
+            double x = a.getX() + (b.getX() - a.getX()) * along;
+            double y = a.getY() + (b.getY() - a.getY()) * along;
+            corners.add(new Point2D.Double(x + 4, y - 4 - height));
+            corners.add(new Point2D.Double(x + 4, y + 4));
+            corners.add(new Point2D.Double(x - 4 - width, y - 4 - height));
+            corners.add(new Point2D.Double(x - 4 - width, y + 4));
+        }
+        return corners;
+    }
+}

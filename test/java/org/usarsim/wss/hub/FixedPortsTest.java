@@ -1,0 +1,192 @@
+package org.usarsim.wss.hub;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.DataInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.DatagramPacket;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.List;
+import java.util.Map;
+import java.util.Random;
+import org.junit.jupiter.api.Tag;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.hub.core.DeclaredRobot;
+import org.usarsim.wss.hub.core.FixedPort;
+import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.PortKey;
+import org.usarsim.wss.hub.core.UdpCounts;
+import org.usarsim.wss.model.noop.NoopPropagationModel;
+
+/** Declared robots and fixed ports over real sockets on 127.0.0.1 (docs/fixed-ports.md): generous bounds, no timing asserted. */
+@Tag("slow")
+class FixedPortsTest {
+
+    private static final InetAddress LOCAL = InetAddress.getLoopbackAddress();
+
+    private static int free() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, LOCAL)) {
+            return socket.getLocalPort();
+        }
+    }
+
+    private static int freeUdp() throws IOException {
+        try (DatagramSocket socket = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            return socket.getLocalPort();
+        }
+    }
+
+    private static TestHub hub(FixedPort... ports) throws Exception {
+        HubConfig config = TestHub.config(true, 65536, 600, 1000, 30).withFixed(new FixedSetup(
+                List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)), List.of(ports), 60));
+        return new TestHub(new NoopPropagationModel(), config);
+    }
+
+    @Test
+    void aFixedTcpPortForwardsIsBrokenByAForceAndAcceptsAgainOnTheSameNumber() throws Exception {
+        try (ServerSocket base = new ServerSocket(0, 50, LOCAL)) {
+            int number = free();
+            try (TestHub test = hub(new FixedPort(FixedPort.Transport.TCP, new PortKey("Scout", "Base", base.getLocalPort()), number))) {
+                assertEquals(List.of("Base", "Scout"), test.hub.getListOfRegisteredRobots());
+                byte[] sent = new byte[1 << 20];
+                new Random(1).nextBytes(sent);
+                try (Socket scout = new Socket(LOCAL, number); Socket atBase = base.accept()) {
+                    scout.getOutputStream().write(sent);
+                    byte[] got = new byte[sent.length];
+                    new DataInputStream(atBase.getInputStream()).readFully(got);
+                    assertArrayEquals(sent, got);
+                    atBase.getOutputStream().write("ok".getBytes());
+                    byte[] answer = new byte[2];
+                    new DataInputStream(scout.getInputStream()).readFully(answer);
+                    assertEquals("ok", new String(answer));
+                    Wait.until("the bytes counted", () -> test.hub.snapshot().pairs().stream()
+                            .anyMatch(pair -> pair.bytesFirstToSecond() == 2 && pair.bytesSecondToFirst() == sent.length));
+                    assertTrue(test.hub.snapshot().ports().stream().anyMatch(port -> port.wssPort() == number && port.listening()));
+
+                    test.hub.force("Scout", "Base", Force.DOWN);
+                    InputStream in = scout.getInputStream();
+                    scout.setSoTimeout(5000);
+                    assertEquals(-1, readOrEnd(in), "the connection closes as the pair breaks");
+                }
+                assertThrows(IOException.class, () -> new Socket(LOCAL, number).close(), "refused while broken");
+                test.hub.release("Scout", "Base");
+                Wait.until("the fixed port listens again", () -> test.hub.snapshot().ports().stream()
+                        .anyMatch(port -> port.wssPort() == number && port.listening()));
+                try (Socket again = new Socket(LOCAL, number); Socket atBase = base.accept()) {
+                    again.getOutputStream().write(7);
+                    assertEquals(7, atBase.getInputStream().read());
+                }
+            }
+        }
+    }
+
+    private static int readOrEnd(InputStream in) throws IOException {
+        try {
+            return in.read();
+        } catch (IOException e) {
+            return -1; // reset: closed all the same
+        }
+    }
+
+    @Test
+    void aDeclaredRobotsNameIsTakenForAnInit() throws Exception {
+        try (TestHub test = hub(); TestRobot robot = test.robot()) {
+            String reply = robot.ask("INIT {Robot Scout} {Port 7000}");
+            assertTrue(reply.contains("Robot.Alread.Exists"), reply);
+        }
+    }
+
+    @Test
+    void aFixedUdpPortRelaysBothWaysPerSenderAndDropsWhileBroken() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int number = freeUdp();
+            try (TestHub test = hub(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number));
+                    DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0));
+                    DatagramSocket second = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                test.hub.addListener(new org.usarsim.wss.model.WssEventListener() {
+                    @Override
+                    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+                        if (from.equals("Scout")) {
+                            reported.add(new long[] {datagrams, bytes, droppedQueue, lost, droppedBroken});
+                        }
+                    }
+                });
+                base.setSoTimeout(5000);
+                scout.setSoTimeout(5000);
+                second.setSoTimeout(5000);
+                byte[] largest = new byte[65_507];
+                new Random(2).nextBytes(largest);
+                scout.send(new DatagramPacket(largest, largest.length, LOCAL, number));
+                DatagramPacket got = new DatagramPacket(new byte[65_536], 65_536);
+                base.receive(got);
+                assertEquals(65_507, got.getLength(), "carried whole");
+                assertArrayEquals(largest, java.util.Arrays.copyOf(got.getData(), got.getLength()));
+                InetSocketAddress scoutsSession = (InetSocketAddress) got.getSocketAddress();
+                base.send(new DatagramPacket("back".getBytes(), 4, scoutsSession));
+                DatagramPacket answer = new DatagramPacket(new byte[100], 100);
+                scout.receive(answer);
+                assertEquals("back", new String(answer.getData(), 0, answer.getLength()));
+                assertEquals(number, answer.getPort(), "from the fixed port");
+
+                second.send(new DatagramPacket("two".getBytes(), 3, LOCAL, number));
+                base.receive(got);
+                assertTrue(!got.getSocketAddress().equals(scoutsSession), "another sender, another session socket");
+
+                test.hub.force("Scout", "Base", Force.DOWN);
+                Wait.until("the pair down", () -> test.hub.snapshot().pairs().stream().anyMatch(pair -> !pair.state().name().equals("UP")));
+                scout.send(new DatagramPacket("lost".getBytes(), 4, LOCAL, number));
+                UdpCounts.Reading[] counts = new UdpCounts.Reading[1];
+                Wait.until("the datagram dropped and counted", () -> {
+                    counts[0] = udp(test, "Scout");
+                    return counts[0].droppedBroken() == 1;
+                });
+                assertEquals(2, counts[0].datagrams());
+                assertEquals(65_507 + 3, counts[0].bytes());
+                base.setSoTimeout(300);
+                assertThrows(SocketTimeoutException.class, () -> base.receive(new DatagramPacket(new byte[10], 10)));
+                Wait.until("the event log's listeners told, within a second or so", () -> reported.stream().mapToLong(r -> r[4]).sum() == 1
+                        && reported.stream().mapToLong(r -> r[0]).sum() == 2);
+            }
+        }
+    }
+
+    /** Base - Scout's UDP counts from Scout to Base ("Base" is the pair's first name). */
+    @Test
+    void aShapedFixedUdpPortLosesWhatTheLossTableSaysAndCountsIt() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int number = freeUdp();
+            HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
+                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true, org.usarsim.wss.shaping.ShapingConfig.DEFAULT_QUEUE_MS,
+                            org.usarsim.wss.shaping.LossTable.parse("0:100")), Map.of())
+                    .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
+                            List.of(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number)), 60));
+            try (TestHub test = new TestHub(new NoopPropagationModel(), config);
+                    DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                for (int i = 0; i < 5; i++) {
+                    scout.send(new DatagramPacket(new byte[100], 100, LOCAL, number));
+                }
+                Wait.until("five datagrams lost to the signal (the Noop model's 0 dBm, a table of 100 % at 0 dBm)",
+                        () -> udp(test, "Scout").lost() == 5);
+                assertEquals(0, udp(test, "Scout").datagrams());
+                base.setSoTimeout(300);
+                assertThrows(SocketTimeoutException.class, () -> base.receive(new DatagramPacket(new byte[200], 200)));
+            }
+        }
+    }
+
+    private final java.util.List<long[]> reported = new java.util.concurrent.CopyOnWriteArrayList<>();
+
+    private static UdpCounts.Reading udp(TestHub test, String from) {
+        HubSnapshot.PairEntry pair = test.hub.snapshot().pairs().get(0);
+        return from.equals(pair.first()) ? pair.udpFirstToSecond() : pair.udpSecondToFirst();
+    }
+}

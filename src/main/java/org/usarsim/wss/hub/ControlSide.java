@@ -1,5 +1,8 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.DnsOutcome;
+import org.usarsim.wss.hub.core.DnsResult;
+import org.usarsim.wss.hub.core.NameCheck;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.channels.ServerSocketChannel;
@@ -10,7 +13,6 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.concurrent.TimeUnit;
 import org.usarsim.wss.hub.core.Force;
-import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.Measurement;
 import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.hub.core.RatePin;
@@ -59,7 +61,7 @@ final class ControlSide extends SocketSide implements ControlHub {
     public boolean register(String name, InetAddress address, List<Integer> acceptPorts, ControlSession session) {
         RegisteredRobot robot = new RegisteredRobot(name, address, acceptPorts, session);
         return executor.stepWaiting((core, now, out) -> core.register(robot, now, out), ControlSide::patience)
-                == HubCore.NameCheck.REGISTERED;
+                == NameCheck.REGISTERED;
     }
 
     /**
@@ -71,9 +73,9 @@ final class ControlSide extends SocketSide implements ControlHub {
      * draining and closing through the one port selector, had an INIT refused for a name
      * that was freed a moment later; MeshReconnectTest, 1 run in 4 beside two busy loops.)
      */
-    private static long patience(HubCore.NameCheck check) {
-        return check == HubCore.NameCheck.TAKEN ? NAME_RELEASE_WAIT_NS
-                : check == HubCore.NameCheck.TAKEN_BY_LEAVING ? NAME_RELEASE_WAIT_NS + DRAIN_NS + PortSelector.CLOSE_WAIT_NS : 0;
+    private static long patience(NameCheck check) {
+        return check == NameCheck.TAKEN ? NAME_RELEASE_WAIT_NS
+                : check == NameCheck.TAKEN_BY_LEAVING ? NAME_RELEASE_WAIT_NS + DRAIN_NS + PortSelector.CLOSE_WAIT_NS : 0;
     }
 
     /**
@@ -128,9 +130,9 @@ final class ControlSide extends SocketSide implements ControlHub {
      * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
      */
     @Override
-    public HubCore.DnsResult dns(String from, String to, int targetPort) {
+    public DnsResult dns(String from, String to, int targetPort) {
         if (from.equals(to)) {
-            return new HubCore.DnsResult(HubCore.DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
+            return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
         }
         boolean allowed = answers.allows(from, to);
         // Shaped, a new pair starts at its own rate, not the lowest.
@@ -145,15 +147,15 @@ final class ControlSide extends SocketSide implements ControlHub {
         }
         ServerSocketChannel socket = bound;
         String why = noNumber;
-        HubCore.DnsResult result = executor.step((core, now, out) -> {
+        DnsResult result = executor.step((core, now, out) -> {
             if (!measurements.isEmpty() && core.isRegistered(from) && core.isRegistered(to)) {
                 core.measured(measurements, out);
             }
             int number = socket == null ? -1 : PortSockets.numberOf(socket);
-            HubCore.DnsResult answer = core.dns(from, to, targetPort, allowed, number, now, out);
-            if (answer.outcome() == HubCore.DnsOutcome.NEEDS_NUMBER) { // new, and no socket could be bound
+            DnsResult answer = core.dns(from, to, targetPort, allowed, number, now, out);
+            if (answer.outcome() == DnsOutcome.NEEDS_NUMBER) { // new, and no socket could be bound
                 core.couldNotAllocate(answer.key(), why, out);
-                return new HubCore.DnsResult(HubCore.DnsOutcome.NO_PORT, -1, answer.key(), false);
+                return new DnsResult(DnsOutcome.NO_PORT, -1, answer.key(), false);
             }
             if (answer.numberUsed()) {
                 executor.adopt(core.port(answer.key()), socket, out);

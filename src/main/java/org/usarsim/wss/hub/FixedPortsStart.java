@@ -1,5 +1,7 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.Admission;
+import org.usarsim.wss.hub.core.DnsResult;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.channels.ServerSocketChannel;
@@ -11,7 +13,6 @@ import java.util.function.LongSupplier;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.DeclaredRobot;
 import org.usarsim.wss.hub.core.FixedPort;
-import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.Measurement;
 import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.hub.core.RegisteredRobot;
@@ -82,11 +83,11 @@ final class FixedPortsStart {
             throw new IOException("cannot listen on fixed port " + port + ": " + e.getMessage(), e);
         }
         Map<OrderedPair, Measurement> measurements = shaped ? answers.measure(List.of(port.key().pair())) : Map.of();
-        HubCore.DnsResult result = executor.step((core, now, out) -> {
+        DnsResult result = executor.step((core, now, out) -> {
             if (!measurements.isEmpty()) {
                 core.measured(measurements, out);
             }
-            HubCore.DnsResult answer = core.fix(port.key(), allowed, port.number(), now, out);
+            DnsResult answer = core.fix(port.key(), allowed, port.number(), now, out);
             if (answer.numberUsed()) {
                 executor.adopt(core.port(answer.key()), socket, out);
             }
@@ -103,8 +104,8 @@ final class FixedPortsStart {
             throws IOException {
         // Shaped, the pair starts at its own rate and loss, not those of a strength not known yet.
         Map<OrderedPair, Measurement> measurements = config.shaping().on() ? answers.measure(List.of(port.key().pair())) : Map.of();
-        HubCore.Admission pair = executor.step((core, now, out) -> {
-            HubCore.Admission admission = core.relay(port.key(), now, out);
+        Admission pair = executor.step((core, now, out) -> {
+            Admission admission = core.relay(port.key(), now, out);
             if (!measurements.isEmpty()) {
                 core.measured(measurements, out);
             }

@@ -1,11 +1,11 @@
 package org.usarsim.wss.hub;
 
+import org.usarsim.wss.hub.core.Admission;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.channels.SocketChannel;
 import java.util.function.LongSupplier;
 import java.util.logging.Logger;
-import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
@@ -59,7 +59,7 @@ final class LinkSide extends SocketSide implements LinkHub {
     public void accepted(WssPort port, int epoch, SocketChannel socket) {
         InetAddress peer = socket.socket().getInetAddress();
         boolean allowed = answers.allows(port.key.from(), port.key.to());
-        HubCore.Admission admission = executor.step((core, now, out) -> core.admit(port, epoch, peer, allowed, now, out));
+        Admission admission = executor.step((core, now, out) -> core.admit(port, epoch, peer, allowed, now, out));
         if (admission.refusal() != null) {
             refuse(port, socket, peer, admission.refusal());
             return;
@@ -91,7 +91,7 @@ final class LinkSide extends SocketSide implements LinkHub {
         }
     }
 
-    private Link newLink(WssPort port, SocketChannel socket, HubCore.Admission admission) throws IOException {
+    private Link newLink(WssPort port, SocketChannel socket, Admission admission) throws IOException {
         Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock, config.shaping().queueMs()) : null;
         return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), shaping);
     }

@@ -36,20 +36,20 @@ class HubCoreTest {
     void aDnsAllocatesAListeningPortWithTheNumberTheHubBound() {
         registerBoth();
         Changes out = new Changes();
-        HubCore.DnsResult asked = core.dns("A", "B", 0, true, -1, now, out);
-        assertEquals(HubCore.DnsOutcome.NEEDS_NUMBER, asked.outcome());
+        DnsResult asked = core.dns("A", "B", 0, true, -1, now, out);
+        assertEquals(DnsOutcome.NEEDS_NUMBER, asked.outcome());
         assertEquals(new PortKey("A", "B", 6000), asked.key());
         assertTrue(out.events().isEmpty() && out.portActions().isEmpty(), "nothing happens before the number is bound");
 
-        HubCore.DnsResult allocated = core.dns("A", "B", 0, true, 40001, now, out);
-        assertEquals(HubCore.DnsOutcome.OK, allocated.outcome());
+        DnsResult allocated = core.dns("A", "B", 0, true, 40001, now, out);
+        assertEquals(DnsOutcome.OK, allocated.outcome());
         assertEquals(40001, allocated.port());
         assertTrue(allocated.numberUsed());
         assertEquals(List.of(Changes.PortWork.LISTEN), works(out));
         assertTrue(out.events().contains(new HubEvent.PortAllocated(asked.key(), 40001, true)), out.events().toString());
 
         Changes again = new Changes();
-        HubCore.DnsResult second = core.dns("A", "B", 6000, true, 40002, now, again);
+        DnsResult second = core.dns("A", "B", 6000, true, 40002, now, again);
         assertEquals(40001, second.port(), "the same DNS, the same port");
         assertFalse(second.numberUsed(), "the hub gives the second number back");
         assertTrue(again.portActions().isEmpty());
@@ -128,7 +128,7 @@ class HubCoreTest {
         core.beginLeaving("A", sessionA);
         core.left("A", sessionA, now, new Changes());
         Changes back = new Changes();
-        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now + 10 * SECOND, back));
+        assertEquals(NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now + 10 * SECOND, back));
         assertEquals(List.of(Changes.PortWork.LISTEN), works(back));
         Changes later = new Changes();
         core.forgetIfGone("A", now + 600 * SECOND, later);
@@ -140,9 +140,9 @@ class HubCoreTest {
     void aTakenNameSaysWhetherItsHolderIsLeaving() {
         registerBoth();
         RobotSession other = () -> { };
-        assertEquals(HubCore.NameCheck.TAKEN, core.register(robot("A", other, 5000), now, new Changes()));
+        assertEquals(NameCheck.TAKEN, core.register(robot("A", other, 5000), now, new Changes()));
         core.beginLeaving("A", sessionA);
-        assertEquals(HubCore.NameCheck.TAKEN_BY_LEAVING, core.register(robot("A", other, 5000), now, new Changes()));
+        assertEquals(NameCheck.TAKEN_BY_LEAVING, core.register(robot("A", other, 5000), now, new Changes()));
     }
 
     @Test
@@ -234,24 +234,24 @@ class HubCoreTest {
         capped.register(new RegisteredRobot("T1", other, List.of(5000, 5001, 5002), () -> { }), now, new Changes());
         capped.register(new RegisteredRobot("T2", other, List.of(5000), () -> { }), now, new Changes());
         int number = 40001;
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5000, true, number++, now, new Changes()).outcome());
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, number++, now, new Changes()).outcome());
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S2", "T2", 0, true, number++, now, new Changes()).outcome());
+        assertEquals(DnsOutcome.OK, capped.dns("S1", "T1", 5000, true, number++, now, new Changes()).outcome());
+        assertEquals(DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, number++, now, new Changes()).outcome());
+        assertEquals(DnsOutcome.OK, capped.dns("S2", "T2", 0, true, number++, now, new Changes()).outcome());
 
         Changes refused = new Changes();
-        assertEquals(HubCore.DnsOutcome.NO_PORT, capped.dns("S2", "T1", 0, true, number++, now, refused).outcome(),
+        assertEquals(DnsOutcome.NO_PORT, capped.dns("S2", "T1", 0, true, number++, now, refused).outcome(),
                 "a fourth port from the swarm's address, by another name: answered as the robot cap is");
         assertEquals(List.of(new HubEvent.Warned("DNS beyond the address limit", swarm, "the robots registered from 10.0.0.1 hold 3"
                 + " WSS ports as source, the most wss.maxPortsPerAddress allows; no new one for S2 -> T1:5000")), refused.events());
         assertTrue(refused.portActions().isEmpty());
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, -1, now, new Changes()).outcome(),
+        assertEquals(DnsOutcome.OK, capped.dns("S1", "T1", 5001, true, -1, now, new Changes()).outcome(),
                 "a port it holds is answered still");
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("T1", "S1", 0, true, number++, now, new Changes()).outcome(),
+        assertEquals(DnsOutcome.OK, capped.dns("T1", "S1", 0, true, number++, now, new Changes()).outcome(),
                 "another address is not affected");
 
         capped.beginLeaving("S1", s1);
         capped.left("S1", s1, now, new Changes());
-        assertEquals(HubCore.DnsOutcome.OK, capped.dns("S2", "T1", 0, true, number, now, new Changes()).outcome(),
+        assertEquals(DnsOutcome.OK, capped.dns("S2", "T1", 0, true, number, now, new Changes()).outcome(),
                 "the ports of a robot that left do not count against its address");
     }
 
@@ -292,11 +292,11 @@ class HubCoreTest {
 
     @Test
     void aDeclaredRobotIsTakenForAnInitAndAKickClosesItsConnectionsButKeepsItAndItsFixedPorts() {
-        assertEquals(HubCore.NameCheck.REGISTERED, core.declare(robot("A", sessionA, 5000), now, new Changes()));
-        assertEquals(HubCore.NameCheck.REGISTERED, core.declare(robot("B", sessionB, 6000), now, new Changes()));
-        assertEquals(HubCore.NameCheck.TAKEN, core.register(robot("A", () -> { }, 7000), now, new Changes()));
+        assertEquals(NameCheck.REGISTERED, core.declare(robot("A", sessionA, 5000), now, new Changes()));
+        assertEquals(NameCheck.REGISTERED, core.declare(robot("B", sessionB, 6000), now, new Changes()));
+        assertEquals(NameCheck.TAKEN, core.register(robot("A", () -> { }, 7000), now, new Changes()));
         PortKey key = new PortKey("A", "B", 6000);
-        HubCore.DnsResult fixed = core.fix(key, true, 40007, now, new Changes());
+        DnsResult fixed = core.fix(key, true, 40007, now, new Changes());
         assertTrue(fixed.numberUsed());
         assertTrue(core.isFixed(key));
         WssPort port = core.port(key);
@@ -314,7 +314,7 @@ class HubCoreTest {
     @Test
     void aFixedUdpPortsPairHasItsTargetItsCountersAndItsConditions() {
         registerBoth();
-        HubCore.Admission relay = core.relay(new PortKey("A", "B", 6000), now, new Changes());
+        Admission relay = core.relay(new PortKey("A", "B", 6000), now, new Changes());
         assertNull(relay.refusal());
         assertEquals(6000, relay.target().getPort());
         assertTrue(relay.up().get().passes());
@@ -326,13 +326,13 @@ class HubCoreTest {
     }
 
     private void registerBoth() {
-        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now, new Changes()));
-        assertEquals(HubCore.NameCheck.REGISTERED, core.register(robot("B", sessionB, 6000), now, new Changes()));
+        assertEquals(NameCheck.REGISTERED, core.register(robot("A", sessionA, 5000), now, new Changes()));
+        assertEquals(NameCheck.REGISTERED, core.register(robot("B", sessionB, 6000), now, new Changes()));
     }
 
     private WssPort registeredPort() {
         registerBoth();
-        HubCore.DnsResult result = core.dns("A", "B", 0, true, 40001, now, new Changes());
+        DnsResult result = core.dns("A", "B", 0, true, 40001, now, new Changes());
         WssPort port = core.port(result.key());
         assertNotNull(port);
         assertTrue(port.listening());

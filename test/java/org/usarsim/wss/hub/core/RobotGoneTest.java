@@ -89,15 +89,15 @@ class RobotGoneTest {
 
     private RobotSession register(HubCore core, String name, int port) {
         RobotSession session = () -> { };
-        assertEquals(HubCore.NameCheck.REGISTERED, core.register(new RegisteredRobot(name, InetAddress.getLoopbackAddress(),
+        assertEquals(NameCheck.REGISTERED, core.register(new RegisteredRobot(name, InetAddress.getLoopbackAddress(),
                 List.of(port), session), now, new Changes()));
         return session;
     }
 
     /** A DNS from one robot to another's first port, with a number the hub bound for it: the port's number. */
     private int dns(HubCore core, String from, String to) {
-        HubCore.DnsResult result = core.dns(from, to, 0, true, nextNumber, now, new Changes());
-        assertEquals(HubCore.DnsOutcome.OK, result.outcome());
+        DnsResult result = core.dns(from, to, 0, true, nextNumber, now, new Changes());
+        assertEquals(DnsOutcome.OK, result.outcome());
         if (result.numberUsed()) {
             nextNumber++;
         }

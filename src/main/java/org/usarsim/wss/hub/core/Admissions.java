@@ -28,16 +28,16 @@ final class Admissions {
     }
 
     /** The first question: where to, with the pair's counters and live conditions, or why not. */
-    HubCore.Admission admit(WssPort port, int epoch, InetAddress peer, boolean allowed, long nowNs, Changes out) {
+    Admission admit(WssPort port, int epoch, InetAddress peer, boolean allowed, long nowNs, Changes out) {
         PortKey key = port.key;
         String refusal = refusal(port, epoch, peer, allowed);
         if (refusal != null) {
-            return new HubCore.Admission(refusal, null, null, null, null);
+            return new Admission(refusal, null, null, null, null);
         }
         InetSocketAddress target = new InetSocketAddress(robots.get(key.to()).address(), key.targetPort());
         PairStats pairStats = pairs.seen(key.pair(), nowNs, out);
         OrderedPair up = new OrderedPair(key.from(), key.to());
-        return new HubCore.Admission(null, target, pairStats, pairs.condition(up), pairs.condition(up.reversed()));
+        return new Admission(null, target, pairStats, pairs.condition(up), pairs.condition(up.reversed()));
     }
 
     /** The second: commits the link to the port, or says why not. */

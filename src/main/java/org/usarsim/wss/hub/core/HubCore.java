@@ -7,7 +7,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.logging.Level;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.shaping.ShapingConfig;
@@ -28,30 +27,6 @@ import org.usarsim.wss.shaping.ShapingConfig;
  */
 public final class HubCore {
 
-    /** The outcome of a DNS. */
-    public enum DnsOutcome { OK, NO_SUCH_ROBOT, NO_SUCH_TARGET_PORT, NO_PORT, NEEDS_NUMBER }
-
-    /**
-     * A DNS's answer: the port's number when OK; the key of a new port when NEEDS_NUMBER (the hub
-     * had no number to offer); {@code numberUsed} when the number the hub offered is the port's now.
-     */
-    public record DnsResult(DnsOutcome outcome, int port, PortKey key, boolean numberUsed) {
-        static DnsResult of(DnsOutcome outcome) {
-            return new DnsResult(outcome, -1, null, false);
-        }
-    }
-
-    /** Whether a name is free for a registration. */
-    public enum NameCheck { REGISTERED, TAKEN, TAKEN_BY_LEAVING, CLOSED }
-
-    /**
-     * Whether a connection accepted on a WSS port may be forwarded: null refusal, where to, the
-     * pair's counters, and its live conditions each way (from the port's source to its target: {@code up}).
-     */
-    public record Admission(String refusal, InetSocketAddress target, PairStats stats,
-            AtomicReference<PairCondition> up, AtomicReference<PairCondition> down) {
-    }
-
     private final PortCaps caps;
     private final Map<String, RegisteredRobot> robots = new HashMap<>();
     private final Ports ports = new Ports();
@@ -67,6 +42,8 @@ public final class HubCore {
     private final PortForgetting forgetting;
     /** Whether a connection accepted on a WSS port may be forwarded. */
     private final Admissions admissions;
+    /** When a WSS port listens. */
+    private final Listening listening;
     /** Set by {@link #close}: nothing registers or listens any more. */
     private boolean closed;
 
@@ -83,6 +60,7 @@ public final class HubCore {
         this.caps = new PortCaps(maxPortsPerRobot, maxPortsPerAddress);
         this.pairs = new Pairs(shaping, robots::containsKey);
         this.forgetting = new PortForgetting(ports, new PortMemory(portMemorySeconds), pairs, robots::containsKey);
+        this.listening = new Listening(robots, pairs, () -> closed);
         this.admissions = new Admissions(modelName, matchSourceAddress, robots, ports, pairs);
     }
 
@@ -103,7 +81,7 @@ public final class HubCore {
         forgetting.arrived(name);
         // A kick forgot the model's breaks of the robot's pairs: their statistics follow the state they are in now.
         pairs.arrived(name, nowNs, out);
-        ports.of(name).forEach(port -> listenIfItShould(port, true, out));
+        ports.of(name).forEach(port -> listening.listenIfItShould(port, true, out));
         return NameCheck.REGISTERED;
     }
 
@@ -131,7 +109,7 @@ public final class HubCore {
         out.add(new HubEvent.Deregistered(name));
         pairs.left(name, nowNs);
         for (WssPort port : ports.of(name)) {
-            stopListening(port, out);
+            listening.stopListening(port, out);
         }
         forgetting.left(name, nowNs, out);
     }
@@ -254,7 +232,7 @@ public final class HubCore {
         pairs.seen(key.pair(), nowNs, out);
         WssPort port = ports.get(key);
         if (port != null) {
-            listenIfItShould(port, allowed, out);
+            listening.listenIfItShould(port, allowed, out);
             return new DnsResult(DnsOutcome.OK, port.number, key, false);
         }
         if (caps.refuse(key, robots.values(), ports, robots.get(from).address(), out)) {
@@ -265,7 +243,7 @@ public final class HubCore {
         }
         port = new WssPort(key, newNumber);
         ports.add(port);
-        boolean listens = shouldListen(key, allowed);
+        boolean listens = listening.shouldListen(key, allowed);
         if (listens) {
             port.listen();
             out.port(Changes.PortWork.LISTEN, port);
@@ -352,7 +330,7 @@ public final class HubCore {
         boolean changed = pairs.broke(pair, nowNs, out);
         // Forced up: the break is only remembered, for the release.
         for (WssPort port : pairs.forced(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
-            changed |= stopListening(port, out);
+            changed |= listening.stopListening(port, out);
             changed |= port.hasLinks();
             out.close(port.links(), CloseReason.OUT_OF_RANGE);
         }
@@ -363,7 +341,7 @@ public final class HubCore {
     public boolean resumePair(RobotPair pair, long nowNs, Changes out) {
         boolean changed = pairs.resumed(pair, nowNs, out);
         for (WssPort port : ports.between(pair)) {
-            changed |= listenIfItShould(port, true, out);
+            changed |= listening.listenIfItShould(port, true, out);
         }
         return changed;
     }
@@ -379,7 +357,7 @@ public final class HubCore {
     public void force(RobotPair pair, Force force, RatePin pin, long nowNs, Changes out) {
         pairs.force(pair, force, pin, out);
         for (WssPort port : ports.between(pair)) {
-            followVerdict(port, force == Force.UP, CloseReason.FORCED, out);
+            listening.followVerdict(port, force == Force.UP, CloseReason.FORCED, out);
         }
         pairs.record(pair, false, nowNs, out);
     }
@@ -392,7 +370,7 @@ public final class HubCore {
         if (pairs.release(pair, out)) {
             for (WssPort port : ports.between(pair)) {
                 boolean allowed = port.key.from().equals(pair.first()) ? firstToSecond : secondToFirst;
-                followVerdict(port, allowed && !pairs.isBroken(pair), CloseReason.OUT_OF_RANGE, out);
+                listening.followVerdict(port, allowed && !pairs.isBroken(pair), CloseReason.OUT_OF_RANGE, out);
             }
         }
         pairs.record(pair, true, nowNs, out);
@@ -401,19 +379,6 @@ public final class HubCore {
     /** The pair's forced state, or null when the model decides it. */
     public Force forced(RobotPair pair) {
         return pairs.forced(pair);
-    }
-
-    /**
-     * A port of a pair just forced or released follows the verdict at once: not talking, it stops
-     * listening and its links close; talking, it listens again where both robots are registered.
-     */
-    private void followVerdict(WssPort port, boolean talks, CloseReason reason, Changes out) {
-        if (!talks) {
-            stopListening(port, out);
-            out.close(port.links(), reason);
-        } else {
-            listenIfItShould(port, true, out);
-        }
     }
 
     // ---- statistics ----
@@ -458,38 +423,6 @@ public final class HubCore {
     /** Every seen pair's condition one way, now. */
     public Map<OrderedPair, PairCondition> conditions() {
         return pairs.conditions();
-    }
-
-    /**
-     * A WSS port listens while both robots are registered, the target still accepts on the
-     * target port, and the model neither broke nor forbids the pair, unless an operator forced
-     * it ({@link ForcedPairs#allows}).
-     */
-    private boolean shouldListen(PortKey key, boolean modelAllows) {
-        RegisteredRobot target = robots.get(key.to());
-        return !closed && robots.containsKey(key.from()) && target != null && target.ports().contains(key.targetPort())
-                && pairs.talks(key.pair(), modelAllows);
-    }
-
-    /** A port that does not listen and should now listens again. @return whether it does */
-    private boolean listenIfItShould(WssPort port, boolean modelAllows, Changes out) {
-        if (port.listening() || !shouldListen(port.key, modelAllows)) {
-            return false;
-        }
-        port.listen();
-        out.port(Changes.PortWork.LISTEN, port);
-        out.add(new HubEvent.PortListening(port.key, port.number, true));
-        return true;
-    }
-
-    /** @return true when it was listening */
-    private boolean stopListening(WssPort port, Changes out) {
-        if (!port.stopListening()) {
-            return false;
-        }
-        out.port(Changes.PortWork.STOP, port);
-        out.add(new HubEvent.PortListening(port.key, port.number, false));
-        return true;
     }
 
     /**

@@ -1,11 +1,11 @@
 package org.usarsim.wss.hub.tcp;
 
+import org.usarsim.wss.hub.core.DnsResult;
 import java.net.InetAddress;
 import java.util.List;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import org.usarsim.wss.hub.core.Force;
-import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.model.Replay;
 
@@ -28,7 +28,7 @@ public interface ControlHub extends SocketRules {
     OptionalDouble signalStrength(String from, String to);
 
     /** DNS. */
-    HubCore.DnsResult dns(String from, String to, int targetPort);
+    DnsResult dns(String from, String to, int targetPort);
 
     /** REVERSEDNS: the source robot of the link whose outgoing port leads to {@code asker}, or null. */
     String reverseDns(String asker, int port);

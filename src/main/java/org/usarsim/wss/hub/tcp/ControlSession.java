@@ -1,5 +1,6 @@
 package org.usarsim.wss.hub.tcp;
 
+import org.usarsim.wss.hub.core.DnsResult;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.StandardSocketOptions;
@@ -12,7 +13,6 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
-import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.model.Replay;
@@ -173,7 +173,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     private String dns(Command command) throws ProtocolException {
         String other = Arguments.robot(command);
         int targetPort = Arguments.targetPort(command);
-        HubCore.DnsResult result = hub.dns(robot, other, targetPort);
+        DnsResult result = hub.dns(robot, other, targetPort);
         switch (result.outcome()) {
             case OK:
                 return Replies.dns(other, result.port());

@@ -1,0 +1,13 @@
+package org.usarsim.wss.hub.core;
+
+import java.net.InetSocketAddress;
+import java.util.concurrent.atomic.AtomicReference;
+
+/**
+ * Whether a connection accepted on a WSS port may be forwarded ({@link HubCore#admit}): null
+ * refusal, where to, the pair's counters, and its live conditions each way (from the port's source
+ * to its target: {@code up}).
+ */
+public record Admission(String refusal, InetSocketAddress target, PairStats stats,
+        AtomicReference<PairCondition> up, AtomicReference<PairCondition> down) {
+}

@@ -99,6 +99,14 @@ class ReplayClockTest {
     }
 
     @Test
+    void aJumpToTheEndOfALoopReadsAsTheEndUntilTheTimeMovesOn() {
+        ReplayClock clock = new ReplayClock(10_000, true, 0, 1, now);
+        clock.jump(10_000, now);
+        assertEquals(10_000, clock.millis(now), "REPLAY {Time 10} answers Time 10, not 0 (issue 26, item 7)");
+        assertEquals(5, clock.millis(after(5)), "then it wraps and plays on");
+    }
+
+    @Test
     void nanosUntilATimeFollowTheSpeedAndPause() {
         ReplayClock clock = new ReplayClock(60_000, false, 0, 2, now);
         assertEquals(500 * MS, clock.nanosUntil(1_000, now));

@@ -42,8 +42,10 @@ final class ReplayClock {
             return baseMillis;
         }
         double time = baseMillis + (now - baseNanos) / 1e6 * speed;
-        if (time < durationMillis) {
-            return time;
+        // A jump to the end reads as the end until the time moves on (REPLAY {Time <duration>} answers
+        // the duration, looping or not); then a loop wraps.
+        if (time < durationMillis || now == baseNanos) {
+            return Math.min(time, durationMillis);
         }
         if (!loop || durationMillis == 0) {
             return durationMillis;

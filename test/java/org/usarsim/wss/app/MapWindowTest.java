@@ -1,6 +1,7 @@
 package org.usarsim.wss.app;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.usarsim.wss.gui.Gui.find;
 import static org.usarsim.wss.gui.Gui.onEdt;
@@ -8,6 +9,11 @@ import static org.usarsim.wss.gui.Gui.run;
 import static org.usarsim.wss.gui.Gui.until;
 
 import java.awt.Color;
+import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
+import java.util.ArrayList;
+import java.io.Reader;
+import java.awt.geom.Rectangle2D;
+import java.awt.Rectangle;
 import java.awt.event.WindowEvent;
 import java.awt.geom.Point2D;
 import java.net.InetAddress;
@@ -213,6 +219,92 @@ class MapWindowTest {
             map.chooseOnLine("Base", "Scout", 0.25, "Force down");
             until("Base - Scout forced down", () -> map.line("Base", "Scout", PairState.FORCED_DOWN));
             assertEquals(MapProbe.unshapedWidth(), map.lineWidth("Base", "Scout"));
+        }
+    }
+
+    private static final List<String> BUILDING_ROBOTS = List.of("Operator", "Explorer", "Mapper", "Scout");
+    /** Paintings read, each after Explorer (1 m/s) moved: some 6 s of the robots' paths. */
+    private static final int BUILDING_PAINTINGS = 30;
+
+    /**
+     * Issue 26, item 2, read from the window: the building world of docs/examples, its properties'
+     * ObstaclePropagationModel, links shaped, the window at the size it opens (960 x 700), its four
+     * robots registered and every pair asked a DNS of (as MapScreenshot does for
+     * docs/images/map-rates.png), Operator selected. While the robots move, each painting of the map
+     * is read back: no label's box (a pair's strength and rate, the range) lies over another's or
+     * over a robot's name, none is cut by the canvas's edge, and the labels are drawn, not left out.
+     */
+    @Test
+    @Timeout(90)
+    void theBuildingWorldsLabelsWithLinksShapedOverlapNoLabelNorName() throws Exception {
+        int simulatorPort;
+        try (ServerSocket free = new ServerSocket(0, 1, InetAddress.getByName("127.0.0.1"))) {
+            simulatorPort = free.getLocalPort();
+        }
+        world = WorldServer.start(Path.of("docs/examples/building.world"), InetAddress.getByName("127.0.0.1"), simulatorPort);
+        ObstaclePropagationModel model = new ObstaclePropagationModel();
+        Map<String, String> settings = new HashMap<>(Setting.defaults(model.settings()));
+        Properties file = new Properties();
+        try (Reader in = Files.newBufferedReader(Path.of("docs/examples/building.properties"))) {
+            file.load(in);
+        }
+        file.stringPropertyNames().stream().filter(key -> !key.startsWith("wss."))
+                .forEach(key -> settings.put(key, file.getProperty(key).strip()));
+        settings.put("usarsim.port", String.valueOf(simulatorPort));
+        settings.put("usarsim.interval", "200");
+        frame = open(model, new ModelSettings(settings), Map.of("wss.shaping", "on"));
+        assertEquals(new Rectangle(960, 700), onEdt(() -> new Rectangle(frame.getSize())), "the size the window opens at");
+        int port = controlPort();
+
+        List<TestRobot> robots = new ArrayList<>();
+        try {
+            for (int i = 0; i < BUILDING_ROBOTS.size(); i++) {
+                TestRobot robot = new TestRobot(port, "127.0.0." + (i + 2));
+                robots.add(robot);
+                robot.init(BUILDING_ROBOTS.get(i), 7000);
+            }
+            MapProbe map = MapProbe.of(frame);
+            map.showMap();
+            until("the map shows the building's four robots", () -> map.shows(BUILDING_ROBOTS));
+            for (int i = 0; i < robots.size(); i++) { // a DNS makes a pair known to the hub, which shapes it
+                for (int j = i + 1; j < robots.size(); j++) {
+                    robots.get(i).dns(BUILDING_ROBOTS.get(j), 7000);
+                }
+            }
+            map.select("Operator");
+            until("the shaped pairs' rates on the map", () -> map.rate("Operator", "Mapper") > 0 && map.rate("Mapper", "Scout") > 0);
+
+            int pairs = BUILDING_ROBOTS.size() * (BUILDING_ROBOTS.size() - 1) / 2;
+            int fewestDrawn = Integer.MAX_VALUE;
+            Position explorer = map.position("Explorer");
+            for (int painting = 0; painting < BUILDING_PAINTINGS; painting++) {
+                Position before = explorer;
+                until("Explorer moved on the map", () -> !map.position("Explorer").equals(before));
+                explorer = map.position("Explorer");
+                MapProbe.Labels labels = map.paintedLabels();
+                String at = "painting " + painting + ", Explorer at " + explorer;
+                assertEquals(BUILDING_ROBOTS.size(), labels.names().size(), at + ": the names");
+                // Every label but one per pair, and the range's: the labels found a place or were left out.
+                assertEquals(pairs + 1, labels.labels().size() + labels.leftOut(), at + ": " + labels);
+                Rectangle2D canvas = new Rectangle2D.Double(0, 0, labels.canvas().width, labels.canvas().height);
+                for (int i = 0; i < labels.labels().size(); i++) {
+                    Rectangle2D box = labels.labels().get(i);
+                    assertTrue(canvas.contains(box), at + ": label " + box + " inside the canvas " + canvas);
+                    for (Rectangle2D name : labels.names()) {
+                        assertFalse(box.intersects(name), at + ": label " + box + " over the name " + name);
+                    }
+                    for (int j = i + 1; j < labels.labels().size(); j++) {
+                        assertFalse(box.intersects(labels.labels().get(j)), at + ": labels " + box + " and " + labels.labels().get(j));
+                    }
+                }
+                fewestDrawn = Math.min(fewestDrawn, labels.labels().size());
+            }
+            System.out.println("MapWindowTest: fewest labels drawn in a painting " + fewestDrawn + " of " + (pairs + 1));
+            assertTrue(fewestDrawn >= pairs - 1, "at most one label left out in any painting; fewest drawn " + fewestDrawn);
+        } finally {
+            for (TestRobot robot : robots) {
+                robot.close();
+            }
         }
     }
 

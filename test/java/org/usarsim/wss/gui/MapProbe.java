@@ -189,6 +189,24 @@ public final class MapProbe {
     }
 
     /** On the event thread, from the test's thread or from a condition that already runs there. */
+    /** The names' and the labels' boxes the map drew, and how many labels it left out; canvas pixels. */
+    public record Labels(List<java.awt.geom.Rectangle2D> names, List<java.awt.geom.Rectangle2D> labels, int leftOut,
+            java.awt.Dimension canvas) {
+    }
+
+    /** Paints the map now, as the window does, and reads where that painting put its names and labels. */
+    public Labels paintedLabels() {
+        return edt(() -> {
+            javax.swing.JComponent canvas = map.canvas();
+            BufferedImage image = new BufferedImage(canvas.getWidth(), canvas.getHeight(), BufferedImage.TYPE_INT_RGB);
+            Graphics2D g = image.createGraphics();
+            canvas.paint(g);
+            g.dispose();
+            LabelPlacer placed = map.placedLabels();
+            return new Labels(placed.names(), placed.placed(), placed.leftOut(), canvas.getSize());
+        });
+    }
+
     private static <T> T edt(java.util.concurrent.Callable<T> action) {
         if (!javax.swing.SwingUtilities.isEventDispatchThread()) {
             return Gui.onEdt(action);

@@ -8,36 +8,65 @@ import java.util.List;
 /**
  * Where the map's labels go so that no two boxes overlap (issue 26): the boxes taken so far (the
  * robots' names first), and for each new label the first of its candidate places that overlaps
- * none. A label with no free place is left out: the Link statistics say the same. Pure geometry,
- * one per painting.
+ * none and lies wholly on the map (not cut by its edge). A label with no free place is left out: the
+ * Link statistics say the same. Pure geometry, one per painting.
  */
 final class LabelPlacer {
 
+    private final Rectangle2D within;
+
     private final List<Rectangle2D> taken = new ArrayList<>();
+    private final List<Rectangle2D> names = new ArrayList<>();
+    private final List<Rectangle2D> placed = new ArrayList<>();
+    private int leftOut;
+
+    /** Places labels inside {@code within}: the canvas. */
+    LabelPlacer(Rectangle2D within) {
+        this.within = within;
+    }
 
     /** Takes a box that is drawn whatever: a robot's name. */
     void take(Rectangle2D box) {
         taken.add(box);
+        names.add(box);
     }
 
     /**
      * The first box of {@code width} x {@code height} whose top left is one of {@code corners}
-     * (in order of preference) and overlaps no box taken, then taken; null when every one does.
+     * (in order of preference), lies inside the canvas and overlaps no box taken, then taken; null
+     * when every one is cut or overlaps.
      */
     Rectangle2D place(List<Point2D> corners, double width, double height) {
         for (Point2D corner : corners) {
             Rectangle2D box = new Rectangle2D.Double(corner.getX(), corner.getY(), width, height);
-            if (taken.stream().noneMatch(box::intersects)) {
+            if (within.contains(box) && taken.stream().noneMatch(box::intersects)) {
                 taken.add(box);
+                placed.add(box);
                 return box;
             }
         }
+        leftOut++;
         return null;
     }
 
     /** The boxes taken so far, in order. */
     List<Rectangle2D> taken() {
         return List.copyOf(taken);
+    }
+
+    /** The boxes taken whatever (the robots' names), in order. */
+    List<Rectangle2D> names() {
+        return List.copyOf(names);
+    }
+
+    /** The labels' boxes {@link #place} found a free place for, in order. */
+    List<Rectangle2D> placed() {
+        return List.copyOf(placed);
+    }
+
+    /** How many labels {@link #place} left out for want of a free place. */
+    int leftOut() {
+        return leftOut;
     }
 
     /**

@@ -59,6 +59,8 @@ final class MapPanel extends JPanel {
     /** The user's zoom and pan; null while the map fits the world by itself. */
     private MapTransform userTransform;
     private String selected;
+    /** The labels' places of the last painting (tests read what the map drew). */
+    private LabelPlacer lastLabels = new LabelPlacer(new Rectangle2D.Double());
 
     MapPanel(ForceMenu forceMenu) {
         super(new BorderLayout(8, 0));
@@ -99,6 +101,11 @@ final class MapPanel extends JPanel {
 
     String selected() {
         return selected;
+    }
+
+    /** Where the last painting put the names and the labels, and how many labels it left out. */
+    LabelPlacer placedLabels() {
+        return lastLabels;
     }
 
     /** The transform the map is drawn with now: the user's, or the one that fits the world into the canvas. */
@@ -255,12 +262,13 @@ final class MapPanel extends JPanel {
                 double step = gridStep(t.scale());
                 paintGrid(g, t, step);
                 paintWalls(g, t, shown);
-                LabelPlacer labels = new LabelPlacer();
+                LabelPlacer labels = new LabelPlacer(new Rectangle2D.Double(0, 0, getWidth(), getHeight()));
                 nameBoxes(g, t, shown, labels);
                 paintRange(g, t, shown, labels);
                 paintLines(g, t, shown, labels);
                 paintRobots(g, t, shown);
                 paintLegend(g, step, shown);
+                lastLabels = labels;
                 if (shown.robots().stream().noneMatch(robot -> robot.position() != null)) {
                     g.setColor(Color.GRAY);
                     String text = shown.robots().isEmpty() ? "No robots" : "No robot has a position (the model gives none)";
@@ -307,13 +315,20 @@ final class MapPanel extends JPanel {
             g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 160));
             g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
             g.draw(circle);
-            // Under the robot's name: the circle itself may lie beyond the canvas.
+            // Beside the robot's dot: the circle itself may lie beyond the canvas.
             String label = String.format(Locale.ROOT, "range %.1f m", robot.range());
             g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
             FontMetrics metrics = g.getFontMetrics();
-            labels.take(new java.awt.geom.Rectangle2D.Double(at.getX() + DOT - 2, at.getY() + 2 * DOT - metrics.getAscent(),
-                    metrics.stringWidth(label) + 4, metrics.getHeight()));
-            label(g, label, at.getX() + DOT, at.getY() + 2 * DOT);
+            // Under the name first; else left of the dot, below or above it: never over another robot's name.
+            double width = metrics.stringWidth(label) + 4;
+            double top = at.getY() + 2 * DOT - metrics.getAscent();
+            double above = at.getY() - DOT / 2.0 - metrics.getAscent() - metrics.getHeight() - 2;
+            java.awt.geom.Rectangle2D box = labels.place(List.of(new Point2D.Double(at.getX() + DOT - 2, top),
+                    new Point2D.Double(at.getX() - DOT - width, top), new Point2D.Double(at.getX() + DOT - 2, above),
+                    new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight());
+            if (box != null) {
+                label(g, label, box.getX() + 2, box.getY() + metrics.getAscent());
+            }
         }
 
         /** The robots' names' boxes, taken first: a pair's label never lies over a name. */

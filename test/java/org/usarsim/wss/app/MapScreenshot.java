@@ -121,7 +121,7 @@ public final class MapScreenshot {
                     new ModelPreferences(preferences.node("models")), windowLog,
                     new Launch("0", model.name(), false, new ModelSettings(settings), serverConfig.shapingKeysSetBy(serverProperties), true), () -> { })
                     .frame();
-            window.setBounds(0, 0, 1100, 780);
+            window.setBounds(0, 0, 960, 700); // the size the window opens at
             frame.set(window);
         });
         Gui.until("the server runs", () -> running.get() != null);

@@ -92,7 +92,11 @@ class TablesAtWindowSizeTest {
             JTable ports = table("ports");
             until("the port shows", () -> cells(ports).size() == 1);
             for (String name : List.of("robots", "ports", "links")) {
-                assertWhole(table(name));
+                JTable table = table(name);
+                assertWhole(table);
+                // The Connections tab's tables fit at 960 x 700: no column a sideways scroll away.
+                assertTrue(onEdt(() -> minimum(table) <= table.getParent().getWidth()),
+                        name + " fits its viewport: " + onEdt(() -> widths(table)));
             }
             JTabbedPane tabs = onEdt(() -> find(frame.getContentPane(), JTabbedPane.class, "tabs"));
             run(() -> tabs.setSelectedIndex(tabs.indexOfTab("Link statistics")));

@@ -28,7 +28,14 @@ final class RobotsPanel extends JPanel {
         table.setName("robots");
         table.setRowSorter(model.sorter());
         table.setFillsViewportHeight(true);
-        FilteredTablePanel.leastWidths(table, StatsPanel.NAME, "127.0.0.1");
+        FilteredTablePanel.leastWidths(table, StatsPanel.NAME, "127.0.0.1", "65535,65535");
+        // As wide as its columns need, no wider (Swing's default is 450 px): at the size the window
+        // opens, the ports and connections beside it get the rest and show every column whole.
+        int width = 0;
+        for (int column = 0; column < table.getColumnCount(); column++) {
+            width += table.getColumnModel().getColumn(column).getMinWidth();
+        }
+        table.setPreferredScrollableViewportSize(new java.awt.Dimension(width, table.getPreferredScrollableViewportSize().height));
         add(new JLabel("Connected Robots"), BorderLayout.NORTH);
         add(new JScrollPane(table), BorderLayout.CENTER);
     }

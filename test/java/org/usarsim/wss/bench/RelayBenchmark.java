@@ -205,40 +205,103 @@ public final class RelayBenchmark {
 
     private void eventLog() throws Exception {
         Path logs = Files.createTempDirectory("wss-bench-event-log");
-        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs, alternating which goes first)%n%n",
+        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs of runs, ABBA)%n%n",
                 seconds, runs);
+        System.out.println("load average before: " + loadAverage());
         try {
             eventLogPairs(logs);
         } finally {
+            System.out.println("load average after: " + loadAverage());
             reportAndDelete(logs);
         }
     }
 
+    /**
+     * Pairs of runs, one through each server, alternating which goes first (off-on, on-off, ...),
+     * so that a machine whose load drifts favours neither; the ratio on/off is taken per pair and
+     * its median given with a 95 % interval ({@link PairedRatios}). Beside the throughput, the CPU
+     * each server spent per GB forwarded (all its threads, from /proc), which other processes' load
+     * moves far less than the throughput, and of it the event log's writer thread's.
+     */
     private void eventLogPairs(Path logs) throws Exception {
         try (WssProcess off = WssProcess.start("wss.eventLog=false");
                 WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
-            iperfThroughWss(off, 8); // unmeasured: both servers warm, as after a while of a real run
-            iperfThroughWss(on, 8);
-            System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
+            for (int streams : new int[] {8, 1, 8, 1}) { // unmeasured: both servers warm and compiled, as after a while of a real run
+                iperfThroughWss(off, streams);
+                iperfThroughWss(on, streams);
+            }
+            List<String> cpuRows = new ArrayList<>();
+            System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off: median of the pairs |");
             System.out.println("|---|---|---|---|---|");
             for (int streams : new int[] {1, 8}) {
-                double[] offRuns = new double[runs];
-                double[] onRuns = new double[runs];
+                Measured[] offRuns = new Measured[runs];
+                Measured[] onRuns = new Measured[runs];
                 double[] ratios = new double[runs];
+                double[] cpuRatios = new double[runs];
                 for (int run = 0; run < runs; run++) {
                     if (run % 2 == 0) {
-                        offRuns[run] = iperfThroughWss(off, streams);
-                        onRuns[run] = iperfThroughWss(on, streams);
+                        offRuns[run] = measuredThroughWss(off, streams);
+                        onRuns[run] = measuredThroughWss(on, streams);
                     } else {
-                        onRuns[run] = iperfThroughWss(on, streams);
-                        offRuns[run] = iperfThroughWss(off, streams);
+                        onRuns[run] = measuredThroughWss(on, streams);
+                        offRuns[run] = measuredThroughWss(off, streams);
                     }
-                    ratios[run] = onRuns[run] / offRuns[run];
+                    ratios[run] = onRuns[run].mbPerSecond / offRuns[run].mbPerSecond;
+                    cpuRatios[run] = onRuns[run].cpuPerGb() / offRuns[run].cpuPerGb();
                 }
-                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns),
-                        ratios(ratios), median(ratios));
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%s** |%n", streams, median(Measured.mbPerSecond(offRuns)),
+                        median(Measured.mbPerSecond(onRuns)), ratios(ratios), new PairedRatios(ratios).summary());
+                cpuRows.add(String.format(Locale.ROOT, "| %d | %.3f | %.3f | %.3f | %s |", streams, median(Measured.cpuPerGb(offRuns)),
+                        median(Measured.cpuPerGb(onRuns)), median(Measured.writerPerGb(onRuns)), new PairedRatios(cpuRatios).summary()));
             }
+            System.out.println();
+            System.out.println("| links at once | log off: the WSS's CPU s per GB (median) | log on | of it the log's writer thread | on/off per pair: median |");
+            System.out.println("|---|---|---|---|---|");
+            cpuRows.forEach(System.out::println);
         }
+    }
+
+    /** One run through a server: MB/s, GB forwarded, and the CPU seconds the server and its event log's writer thread spent in it. */
+    private record Measured(double mbPerSecond, double gigabytes, double cpuSeconds, double writerSeconds) {
+
+        double cpuPerGb() {
+            return cpuSeconds / gigabytes;
+        }
+
+        static double[] mbPerSecond(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(Measured::mbPerSecond).toArray();
+        }
+
+        static double[] cpuPerGb(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(Measured::cpuPerGb).toArray();
+        }
+
+        static double[] writerPerGb(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(run -> run.writerSeconds / run.gigabytes).toArray();
+        }
+    }
+
+    /** As {@link #iperfThroughWss(WssProcess, int)}, with the server's CPU read from /proc just before and after the stream. */
+    private Measured measuredThroughWss(WssProcess wss, int streams) throws Exception {
+        IperfServer iperf = iperfServer();
+        Process server = iperf.process();
+        try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", iperf.port());
+                ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
+            int port = source.dns("Sink");
+            long cpu = ProcessStats.cpuNanos(wss.pid());
+            long writer = ProcessStats.threadCpuNanos(wss.pid(), "wss-event-log");
+            double mbPerSecond = iperfClient(port, streams);
+            return new Measured(mbPerSecond, mbPerSecond * seconds / 1000, (ProcessStats.cpuNanos(wss.pid()) - cpu) / 1e9,
+                    (ProcessStats.threadCpuNanos(wss.pid(), "wss-event-log") - writer) / 1e9);
+        } finally {
+            stop(server);
+        }
+    }
+
+    /** The machine's load average over 1, 5 and 15 minutes, as /proc/loadavg says. */
+    private static String loadAverage() throws IOException {
+        String[] fields = Files.readString(Path.of("/proc/loadavg")).split(" ");
+        return fields[0] + ", " + fields[1] + ", " + fields[2];
     }
 
     // ---- recording: the same streams with wss.record off and on ----

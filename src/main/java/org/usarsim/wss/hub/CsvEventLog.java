@@ -45,8 +45,16 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     private record Line(String type, long millis, Object... fields) {
     }
 
+    /**
+     * A DATA_SENT, the one event a link fires per chunk: its own record, so that the link's
+     * thread makes one small object and no array and no boxed count (docs/performance.md).
+     */
+    private record DataSent(String from, String to, int bytes, long millis) {
+    }
+
     private final Path file;
-    private final QueuedWriter<Line> writer;
+    /** Queues {@link Line}s and {@link DataSent}s. */
+    private final QueuedWriter<Object> writer;
     private final ZoneId zone = ZoneId.systemDefault();
     /** The writer's last formatted time: events come many to a millisecond. */
     private long formattedMillis = Long.MIN_VALUE;
@@ -57,8 +65,13 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         this.file = file;
         this.writer = new QueuedWriter<>("wss-event-log", LOG, "the event log " + file, out, capacity, new QueuedWriter.Format<>() {
             @Override
-            public void append(StringBuilder text, Line line) {
-                format(text, line.type, line.millis, line.fields);
+            public void append(StringBuilder text, Object item) {
+                if (item instanceof DataSent sent) {
+                    format(text, sent);
+                } else {
+                    Line line = (Line) item;
+                    format(text, line.type, line.millis, line.fields);
+                }
             }
 
             @Override
@@ -89,16 +102,30 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     private void format(StringBuilder text, String type, long millis, Object... fields) {
-        if (millis != formattedMillis) {
-            formattedTime = LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone));
-            formattedMillis = millis;
-        }
-        text.append(type).append(',').append(formattedTime);
+        text.append(type).append(',').append(time(millis));
         for (Object field : fields) {
             text.append(',');
             appendField(text, String.valueOf(field));
         }
         text.append(System.lineSeparator());
+    }
+
+    /** As {@link #format(StringBuilder, String, long, Object...)} would write it with its three fields. */
+    private void format(StringBuilder text, DataSent sent) {
+        text.append("DATA_SENT,").append(time(sent.millis)).append(',');
+        appendField(text, sent.from);
+        text.append(',');
+        appendField(text, sent.to);
+        text.append(',').append(sent.bytes).append(System.lineSeparator());
+    }
+
+    /** The writer's: the time of day of a line; events come many to a millisecond. */
+    private String time(long millis) {
+        if (millis != formattedMillis) {
+            formattedTime = LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone));
+            formattedMillis = millis;
+        }
+        return formattedTime;
     }
 
     /**
@@ -167,7 +194,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     @Override
     public void dataSent(String from, String to, int bytes) {
-        event("DATA_SENT", from, to, bytes);
+        writer.offer(new DataSent(from, to, bytes, System.currentTimeMillis()));
     }
 
     @Override

@@ -6,7 +6,6 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
@@ -37,7 +36,6 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     private static final Logger LOG = Logger.getLogger(CsvEventLog.class.getName());
     private static final DateTimeFormatter FILE_TIME = DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss.SSS");
-    private static final DateTimeFormatter LINE_TIME = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
     /** Events the writer may be behind by: a few seconds of chunks of one fast link. */
     static final int QUEUE_CAPACITY = 65_536;
 
@@ -55,10 +53,8 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     private final Path file;
     /** Queues {@link Line}s and {@link DataSent}s. */
     private final QueuedWriter<Object> writer;
-    private final ZoneId zone = ZoneId.systemDefault();
-    /** The writer's last formatted time: events come many to a millisecond. */
-    private long formattedMillis = Long.MIN_VALUE;
-    private String formattedTime;
+    /** The writer's: a line's time of day. */
+    private final LineTime lineTime = new LineTime(ZoneId.systemDefault());
 
     /** The log writing to {@code out} (named {@code file}), behind a queue of {@code capacity} events. */
     CsvEventLog(Path file, Writer out, int capacity) {
@@ -102,7 +98,8 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     private void format(StringBuilder text, String type, long millis, Object... fields) {
-        text.append(type).append(',').append(time(millis));
+        text.append(type).append(',');
+        lineTime.append(text, millis);
         for (Object field : fields) {
             text.append(',');
             appendField(text, String.valueOf(field));
@@ -112,21 +109,15 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     /** As {@link #format(StringBuilder, String, long, Object...)} would write it with its three fields. */
     private void format(StringBuilder text, DataSent sent) {
-        text.append("DATA_SENT,").append(time(sent.millis)).append(',');
+        text.append("DATA_SENT,");
+        lineTime.append(text, sent.millis);
+        text.append(',');
         appendField(text, sent.from);
         text.append(',');
         appendField(text, sent.to);
         text.append(',').append(sent.bytes).append(System.lineSeparator());
     }
 
-    /** The writer's: the time of day of a line; events come many to a millisecond. */
-    private String time(long millis) {
-        if (millis != formattedMillis) {
-            formattedTime = LINE_TIME.format(Instant.ofEpochMilli(millis).atZone(zone));
-            formattedMillis = millis;
-        }
-        return formattedTime;
-    }
 
     /**
      * A field as RFC 4180 writes it: as it is, unless it holds a comma, a double quote, a CR or a

@@ -32,7 +32,7 @@ import org.usarsim.wss.shaping.Bitrate;
  *
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.ShapingBenchmark [--seconds 10] [--only NAME]
- *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--far-rate 6M] [--cost-rate 8M] [--repeats 7] [--raise-hold 3]
+ *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--far-rate 6M] [--cost-rate 8M] [--repeats 7] [--raise-hold 3] [--raise-from 1]
  * </pre>
  * NAME is one of accuracy, latency, airtime, raise, relay, cost, bulk.
  */
@@ -52,9 +52,11 @@ public final class ShapingBenchmark {
     private final String farRate;
     private final int repeats;
     private final long raiseHold;
+    private final String raiseFrom;
 
     private ShapingBenchmark(int seconds, long bulkBytes, String relayRate, String nearRate, String farRate, String costRate, int repeats,
-            long raiseHold) {
+            long raiseHold, String raiseFrom) {
+        this.raiseFrom = raiseFrom;
         this.repeats = repeats;
         this.raiseHold = raiseHold;
         this.farRate = farRate;
@@ -75,6 +77,7 @@ public final class ShapingBenchmark {
         String farRate = null;
         int repeats = 7;
         long raiseHold = 3;
+        String raiseFrom = "1";
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
@@ -86,13 +89,14 @@ public final class ShapingBenchmark {
                 case "--cost-rate" -> costRate = args[++i];
                 case "--repeats" -> repeats = Integer.parseInt(args[++i]);
                 case "--raise-hold" -> raiseHold = Long.parseLong(args[++i]);
+                case "--raise-from" -> raiseFrom = args[++i];
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
         if (only != null && !List.of("accuracy", "latency", "airtime", "raise", "relay", "cost", "bulk").contains(only)) {
             throw new IllegalArgumentException("--only takes accuracy, latency, airtime, raise, relay, cost or bulk, not " + only);
         }
-        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, farRate, costRate, repeats, raiseHold);
+        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, farRate, costRate, repeats, raiseHold, raiseFrom);
         System.out.printf("WSS shaping benchmark: %d cores, %s, %s, load average %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), java.time.LocalDateTime.now(), load());
         if (only == null || only.equals("accuracy")) {
@@ -245,6 +249,7 @@ public final class ShapingBenchmark {
             long quantum = near * 2 / 1000 / 8;
             long raised = System.nanoTime();
             operator.forceUp("A", "C", nearRate, 2);
+            long replied = System.nanoTime();
             long reached = toC.awaitTotal(before + quantum, 10 * SECOND);
             senderB.stop();
             senderC.stop();
@@ -260,8 +265,9 @@ public final class ShapingBenchmark {
             System.out.printf(Locale.ROOT, "%nThe two link threads waited for a CPU %.0f ms per second (together).%n", waited);
             if (far * 100 <= near) { // a faster far link moves a quantum of the near rate by itself in a few ms
                 System.out.printf(Locale.ROOT, "A-C raised to %s by FORCE: C read %d bytes more (a quantum at the raised rate) %.1f ms"
-                        + " after the FORCE was sent (its round trip, the grant on the air, B's turn, one of its own and the 2 ms"
-                        + " delay: 6 ms, and the threads' wake-ups).%n", Bitrate.format(near), quantum, (reached - raised) / 1e6);
+                        + " after the FORCE was sent, %.1f ms after its reply (the grant on the air, B's turn, one of its own and the"
+                        + " 2 ms delay: 6 ms, and the threads' wake-ups).%n", Bitrate.format(near), quantum, (reached - raised) / 1e6,
+                        (reached - replied) / 1e6);
             }
             System.out.println();
             System.out.println("The shares above are computed from the bytes the peers received.");
@@ -285,8 +291,8 @@ public final class ShapingBenchmark {
      */
     private void raise() throws Exception {
         long rate = Bitrate.parse("54M");
-        System.out.printf("%n## Raise: A-B at 1 bit/s beside A-C at 54 Mbit/s for %d s, then A-B raised to 54 Mbit/s, %d times "
-                + "(load average %s)%n%n", raiseHold, repeats, load());
+        System.out.printf("%n## Raise: A-B at %s beside A-C at 54 Mbit/s for %d s, then A-B raised to 54 Mbit/s, %d times "
+                + "(load average %s)%n%n", Bitrate.format(Bitrate.parse(raiseFrom)), raiseHold, repeats, load());
         long[] trips = new long[repeats];
         long[] fromSent = new long[repeats];
         long[] fromReply = new long[repeats];
@@ -307,7 +313,7 @@ public final class ShapingBenchmark {
                         ControlClient robotB = new ControlClient(wss.controlPort, b, sinkB.port());
                         ControlClient robotC = new ControlClient(wss.controlPort, c, sinkC.port());
                         ControlClient robotA = new ControlClient(wss.controlPort, a, 1)) {
-                    operator.forceUp(a, b, "1", 0);
+                    operator.forceUp(a, b, raiseFrom, 0);
                     operator.forceUp(a, c, "54M", 2);
                     Sender senderB = Sender.start(robotA.dns(b), Long.MAX_VALUE, null);
                     Sender senderC = Sender.start(robotA.dns(c), Long.MAX_VALUE, null);

@@ -12,8 +12,8 @@ import org.usarsim.wss.shaping.ShapedFlow;
 
 /**
  * The loop of a shaped link (wss.shaping = on, docs/shaping.md): each direction reads only what
- * its {@link ShapedFlow} has room for, and writes its bytes when they are due (their airtime's
- * end plus the delay), waiting on the selector at most until the next is due. The pair's
+ * its {@link ShapedFlow} has room for, and writes its bytes when they are due (once on the air,
+ * plus the delay), waiting on the selector at most until the next is due. The pair's
  * condition is read at every turn, and a change wakes the selector ({@link LiveCondition}), so a
  * new rate or delay reaches the bytes still waiting at once. As unshaped, a side's end stops the
  * reading, and both streams end once what was read is written.

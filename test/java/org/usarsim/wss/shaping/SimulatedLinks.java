@@ -145,8 +145,25 @@ final class SimulatedLinks {
 
     /** Runs the directions until {@code endNs}, then writes what is due then. */
     void runUntil(long endNs) {
+        runUntil(endNs, () -> false);
+    }
+
+    /**
+     * Runs the directions until {@code lane} has delivered {@code bytes} in all, at most until
+     * {@code endNs}. @return the time it had, or -1
+     */
+    long runUntilDelivered(Lane lane, long bytes, long endNs) {
+        runUntil(endNs, () -> lane.delivered >= bytes);
+        return lane.delivered >= bytes ? now : -1;
+    }
+
+    /** Runs the directions until {@code endNs}, or until a step after which {@code enough} holds. */
+    private void runUntil(long endNs, java.util.function.BooleanSupplier enough) {
         while (true) {
             step();
+            if (enough.getAsBoolean()) {
+                return;
+            }
             long next = Long.MAX_VALUE;
             for (Lane lane : lanes) {
                 next = Math.min(next, lane.flow.nanosUntilNext(now));

@@ -5,24 +5,26 @@ import java.net.StandardSocketOptions;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.locks.LockSupport;
+import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.shaping.ShapedFlow;
 
 /**
  * The loop of a shaped link (wss.shaping = on, docs/shaping.md): each direction reads only what
- * its {@link ShapedFlow} has room for, and writes its bytes when they are due (their airtime's
- * end plus the delay), waiting on the selector at most until the next is due. The pair's
- * condition is read at every turn, so a rate change reaches the bytes still waiting within one
- * poll of the hub's. As unshaped, a side's end stops the reading, and both streams end once what
- * was read is written.
+ * its {@link ShapedFlow} has room for, and writes its bytes when they are due (once on the air,
+ * plus the delay), waiting on the selector at most until the next is due. The pair's
+ * condition is read at every turn, and a change wakes the selector ({@link LiveCondition}), so a
+ * new rate or delay reaches the bytes still waiting at once. As unshaped, a side's end stops the
+ * reading, and both streams end once what was read is written.
  */
 final class ShapedForwarding extends Forwarding {
 
     private final Shaping shaping;
     private final Way upWay;
     private final Way downWay;
+    /** Wakes this link's selector when either way's condition changes: the one instance watched, and unwatched at the end. */
+    private final Runnable wake;
 
     ShapedForwarding(Link link, Selector selector, Direction up, Direction down, Shaping shaping) throws IOException {
         super(link, selector, up, down);
@@ -30,10 +32,14 @@ final class ShapedForwarding extends Forwarding {
         long now = shaping.clock().getAsLong();
         this.upWay = new Way(up, shaping, shaping.up(), now);
         this.downWay = new Way(down, shaping, shaping.down(), now);
+        this.wake = selector::wakeup;
     }
 
     @Override
     void forward() throws IOException {
+        // Watched before the loop's first reading of the conditions: no change is missed.
+        shaping.up().watch(wake);
+        shaping.down().watch(wake);
         try {
             while (!link.isClosed()) {
                 long now = shaping.clock().getAsLong();
@@ -63,6 +69,8 @@ final class ShapedForwarding extends Forwarding {
                 }
             }
         } finally {
+            shaping.up().unwatch(wake);
+            shaping.down().unwatch(wake);
             upWay.flow.close();
             downWay.flow.close();
         }
@@ -113,10 +121,10 @@ final class ShapedForwarding extends Forwarding {
     private static final class Way {
         private final Direction direction;
         private final ShapedFlow flow;
-        private final AtomicReference<PairCondition> condition;
+        private final LiveCondition condition;
         private PairCondition followed;
 
-        Way(Direction direction, Shaping shaping, AtomicReference<PairCondition> condition, long now) {
+        Way(Direction direction, Shaping shaping, LiveCondition condition, long now) {
             this.direction = direction;
             this.condition = condition;
             this.followed = condition.get();

@@ -28,8 +28,8 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     public static final String QUEUE_MS = "wss.shaping.queueMs";
     /**
      * What an 802.11 radio keeps queued under a saturating stream: Linux's mac80211 runs CoDel
-     * on every Wi-Fi queue with a 20 ms target, and the WSS, which never drops a TCP byte, holds
-     * its limit as long as a stream saturates it (docs/shaping.md, "The queue").
+     * on each station's queues with a 20 ms target, and the WSS, which never drops a TCP byte,
+     * holds its limit as long as a stream saturates it (docs/shaping.md, "The queue").
      */
     public static final int DEFAULT_QUEUE_MS = 20;
     /** Below 10 ms a direction could not keep its radio busy (it books its airtime 8 ms ahead). */

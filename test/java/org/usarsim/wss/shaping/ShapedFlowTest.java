@@ -191,9 +191,10 @@ class ShapedFlowTest {
     @Test
     void aRateChangeReachesTheBytesStillWaiting() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
-        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 100 ms / 8");
+        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, 100), "1 Mbit/s x 100 ms / 8");
+        assertEquals(2_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 20 ms / 8");
         long capacity = 5096;
-        Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
+        Lane lane = links.add("A", "B", 1_000_000, 0, 100, CHUNK, SimulatedLinks.finite(capacity), null);
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
         lane.flow.setConditions(8_000_000, 0);
@@ -219,7 +220,7 @@ class ShapedFlowTest {
             Lane lane = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
             links.runFor(2 * SECOND);
             long most = Bitrate.bytesIn((2 + ShapingConfig.DEFAULT_QUEUE_MS) * MS, rate);
-            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and 100 ms at the rate, the default queue");
+            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and the default queue at the rate");
             assertEquals(rate * 2 / 8.0, lane.delivered, rate * 2 / 8.0 / 100, Bitrate.format(rate) + ": and the rate is kept");
         }
         assertEquals(ShapedFlow.MIN_HELD, ShapedFlow.capacity(1, 2, ShapingConfig.DEFAULT_QUEUE_MS), "a frame at least");
@@ -269,13 +270,14 @@ class ShapedFlowTest {
     void aDirectionNeverHoldsMoreThanItsCapacity() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
         Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
-        assertEquals(6_000_000 * 200 / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
+        int queueMs = ShapingConfig.DEFAULT_QUEUE_MS;
+        assertEquals(6_000_000 * (100 + queueMs) / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
         links.runFor(2 * SECOND);
         assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
         assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
 
         lane.flow.setConditions(1_000_000, 100);
-        assertEquals(1_000_000 * 200 / 1000 / 8, lane.flow.capacity());
+        assertEquals(1_000_000 * (100 + queueMs) / 1000 / 8, lane.flow.capacity());
         assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
         assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
         lane.mostHeld = 0;

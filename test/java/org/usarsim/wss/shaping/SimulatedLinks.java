@@ -122,7 +122,12 @@ final class SimulatedLinks {
 
     /** As {@link #add}, reading chunks of random sizes from 1 to {@code chunkSize} with {@code sizes}. */
     Lane add(String from, String to, long bitsPerSecond, int delayMs, int chunkSize, Source source, Random sizes) {
-        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, ShapingConfig.DEFAULT_QUEUE_MS);
+        return add(from, to, bitsPerSecond, delayMs, ShapingConfig.DEFAULT_QUEUE_MS, chunkSize, source, sizes);
+    }
+
+    /** A lane with a queue of {@code queueMs} rather than the default. */
+    Lane add(String from, String to, long bitsPerSecond, int delayMs, int queueMs, int chunkSize, Source source, Random sizes) {
+        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, queueMs);
         Lane lane = new Lane(flow, source, chunkSize, sizes);
         lanes.add(lane);
         return lane;

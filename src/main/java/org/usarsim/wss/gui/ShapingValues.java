@@ -22,7 +22,7 @@ final class ShapingValues {
     private ShapingValues() {
     }
 
-    /** Each key's default: links not shaped, the default rate table, 2 ms, shared airtime, a queue of 100 ms. */
+    /** Each key's default: links not shaped, the default rate table, 2 ms, shared airtime, a queue of 20 ms. */
     static Map<String, String> defaults() {
         ShapingConfig off = ShapingConfig.OFF;
         Map<String, String> values = new LinkedHashMap<>();

@@ -25,7 +25,7 @@ import java.util.List;
  *
  * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
  * memory is bounded by {@link #capacity()}: rate x (delay + queue), the queue
- * ({@code wss.shaping.queueMs}, 100 ms by default) being what a radio's queue would hold; a
+ * ({@code wss.shaping.queueMs}, 20 ms by default) being what a radio's queue would hold; a
  * direction that holds that much reads no more, and TCP's back-pressure reaches the sender.
  *
  * <p>Used by one thread; it never reads a clock nor blocks.

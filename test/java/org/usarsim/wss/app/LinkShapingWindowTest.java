@@ -45,6 +45,7 @@ import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * The window's "Link shaping...", for real: the dialog typed into (a refused rate table, delay and
@@ -182,7 +183,7 @@ class LinkShapingWindowTest {
         Window dialog = dialog();
         assertEquals("-72:54M,-73:48M,-77:36M,-81:24M,-83:18M,-85:12M,-86:9M,-87:6M", text(dialog, RATES), "the default table");
         assertEquals("2", text(dialog, DELAY));
-        assertEquals("100", text(dialog, QUEUE), "the default queue");
+        assertEquals(String.valueOf(ShapingConfig.DEFAULT_QUEUE_MS), text(dialog, QUEUE), "the default queue");
         assertFalse(onEdt(() -> find(dialog, JCheckBox.class, "wss.shaping").isSelected()), "off by default");
         assertTrue(onEdt(() -> find(dialog, JCheckBox.class, "wss.shaping.airtime").isSelected()), "shared airtime by default");
 

@@ -59,7 +59,7 @@ class ConfigFileTest {
             Map.entry("wss.shaping.rates", "-72:54M,-73:48M,-77:36M,-81:24M,-83:18M,-85:12M,-86:9M,-87:6M"),
             Map.entry("wss.shaping.delayMs", "2"),
             Map.entry("wss.shaping.airtime", "true"),
-            Map.entry("wss.shaping.queueMs", "100"),
+            Map.entry("wss.shaping.queueMs", "20"),
             Map.entry("wss.shaping.loss", "-85:1,-87:10,-90:50"),
             Map.entry("wss.fixed", ""),
             Map.entry("wss.udpIdleSeconds", "60"),

@@ -45,10 +45,11 @@ import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
+import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * The window's "Link shaping...", for real: the dialog typed into (a refused rate table and delay,
- * then good ones), the server the application starts ({@link WindowServers}) shaping the links of
+ * The window's "Link shaping...", for real: the dialog typed into (a refused rate table, delay and
+ * queue, then good ones), the server the application starts ({@link WindowServers}) shaping the links of
  * robots over real sockets as the dialog said, and the choice remembered by the next window, with a
  * --config file's keys over it.
  */
@@ -62,6 +63,7 @@ class LinkShapingWindowTest {
     private static final Color INVALID = new Color(255, 205, 205);
     private static final String RATES = "wss.shaping.rates";
     private static final String DELAY = "wss.shaping.delayMs";
+    private static final String QUEUE = "wss.shaping.queueMs";
 
     private Preferences preferences;
     private WindowLog windowLog;
@@ -146,6 +148,13 @@ class LinkShapingWindowTest {
         run(() -> find(dialog, JButton.class, button).doClick());
     }
 
+    /** Types {@code text} into the field of {@code key}, presses OK and returns what the dialog says under its fields. */
+    private static String okWith(Window dialog, String key, String text) {
+        type(dialog, key, text);
+        press(dialog, "ok");
+        return message(dialog);
+    }
+
     private String summary() {
         JLabel summary = component(JLabel.class, "shapingSummary");
         return onEdt(summary::getText);
@@ -174,6 +183,7 @@ class LinkShapingWindowTest {
         Window dialog = dialog();
         assertEquals("-72:54M,-73:48M,-77:36M,-81:24M,-83:18M,-85:12M,-86:9M,-87:6M", text(dialog, RATES), "the default table");
         assertEquals("2", text(dialog, DELAY));
+        assertEquals(String.valueOf(ShapingConfig.DEFAULT_QUEUE_MS), text(dialog, QUEUE), "the default queue");
         assertFalse(onEdt(() -> find(dialog, JCheckBox.class, "wss.shaping").isSelected()), "off by default");
         assertTrue(onEdt(() -> find(dialog, JCheckBox.class, "wss.shaping.airtime").isSelected()), "shared airtime by default");
 
@@ -185,30 +195,34 @@ class LinkShapingWindowTest {
         assertEquals(reason, onEdt(() -> find(dialog, JTextField.class, RATES).getToolTipText()));
         type(dialog, DELAY, "soon");
         assertTrue(refused(dialog, DELAY), "the delay's field is red");
+        type(dialog, QUEUE, "5");
+        assertTrue(refused(dialog, QUEUE), "the queue's field is red");
+        assertEquals("5 is below 10", onEdt(() -> find(dialog, JTextField.class, QUEUE).getToolTipText()));
         press(dialog, "ok");
-        assertEquals("<html>Rates by strength: " + reason + " (and 1 more marked)</html>", message(dialog));
+        assertEquals("<html>Rates by strength: " + reason + " (and 2 more marked)</html>", message(dialog));
         assertEquals(1, onEdt(() -> Gui.showing(TITLE).size()), "OK refused: the dialog stays open");
 
-        type(dialog, RATES, "-74:48M,-72:54M");
-        press(dialog, "ok");
         assertEquals("<html>Rates by strength: \"-74:48M,-72:54M\": steps must go from the strongest to the weakest signal"
-                + " (and 1 more marked)</html>", message(dialog));
-        type(dialog, RATES, " -50:11M, -90:2M ");
+                + " (and 2 more marked)</html>", okWith(dialog, RATES, "-74:48M,-72:54M"));
+        assertEquals("<html>Delay: soon is not a whole number of milliseconds (and 1 more marked)</html>",
+                okWith(dialog, RATES, " -50:11M, -90:2M "));
         assertFalse(refused(dialog, RATES));
-        press(dialog, "ok");
-        assertEquals("<html>Delay: soon is not a whole number of milliseconds</html>", message(dialog));
-        type(dialog, DELAY, "10001");
-        press(dialog, "ok");
-        assertEquals("<html>Delay: 10001 is above 10000</html>", message(dialog));
+        assertEquals("<html>Delay: 10001 is above 10000 (and 1 more marked)</html>", okWith(dialog, DELAY, "10001"));
+        assertEquals("<html>Queue: 5 is below 10</html>", okWith(dialog, DELAY, "5"));
+        assertEquals("<html>Queue: long is not a whole number of milliseconds</html>", okWith(dialog, QUEUE, "long"));
+        assertEquals("<html>Queue: 10001 is above 10000</html>", okWith(dialog, QUEUE, "10001"));
 
         // Good values, shaping on: OK stores them, and the window says what the next Start uses.
-        type(dialog, DELAY, "5");
+        type(dialog, QUEUE, " 300 ");
+        assertFalse(refused(dialog, QUEUE));
         run(() -> find(dialog, JCheckBox.class, "wss.shaping").setSelected(true));
         press(dialog, "ok");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         assertEquals("Links shaped: 2 to 11 Mbit/s by strength, 5 ms delay, shared airtime", summary());
 
         int port = start();
+        until("the log says the shaping the server started with, its queue too", () -> find(frame.getContentPane(), JTextArea.class, "log")
+                .getText().contains("links are shaped (wss.shaping = on): rate table -50:11M,-90:2M, delay 5 ms, airtime shared, queue 300 ms"));
         try (TestRobot r1 = new TestRobot(port, "127.0.0.2"); TestRobot r2 = new TestRobot(port, "127.0.0.3")) {
             r1.init("r1");
             r2.initAccepting("r2");
@@ -221,6 +235,8 @@ class LinkShapingWindowTest {
             // While the server runs, the dialog shows what it runs with, read-only.
             Window running = dialog();
             assertEquals("-50:11M, -90:2M", text(running, RATES), "as entered");
+            assertEquals("300", text(running, QUEUE));
+            assertFalse(onEdt(() -> find(running, JTextField.class, QUEUE).isEnabled()));
             assertFalse(onEdt(() -> find(running, JTextField.class, RATES).isEnabled()));
             assertFalse(onEdt(() -> find(running, JCheckBox.class, "wss.shaping").isEnabled()));
             assertEquals(List.of("Close"), onEdt(() -> Gui.all(running, JButton.class).stream().map(JButton::getText).toList()));
@@ -235,6 +251,7 @@ class LinkShapingWindowTest {
         run(() -> find(dialog, JCheckBox.class, "wss.shaping").setSelected(true));
         type(dialog, RATES, "-60:24M,-80:1.5M");
         type(dialog, DELAY, "30");
+        type(dialog, QUEUE, "400");
         run(() -> find(dialog, JCheckBox.class, "wss.shaping.airtime").setSelected(false));
         press(dialog, "ok");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
@@ -247,22 +264,24 @@ class LinkShapingWindowTest {
         assertTrue(onEdt(() -> find(again, JCheckBox.class, "wss.shaping").isSelected()));
         assertEquals("-60:24M,-80:1.5M", text(again, RATES));
         assertEquals("30", text(again, DELAY));
+        assertEquals("400", text(again, QUEUE));
         assertFalse(onEdt(() -> find(again, JCheckBox.class, "wss.shaping.airtime").isSelected()));
         press(again, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         closeWindow();
 
         // With --config: the keys the file sets go over the stored ones (the others stay), and are not stored...
-        frame = openWindow(Map.of("wss.shaping.delayMs", "7", "wss.shaping", "off"));
+        frame = openWindow(Map.of("wss.shaping.delayMs", "7", "wss.shaping", "off", QUEUE, "250"));
         assertEquals("Links not shaped", summary());
         Window withFile = dialog();
         assertFalse(onEdt(() -> find(withFile, JCheckBox.class, "wss.shaping").isSelected()), "the file's off");
         assertEquals("7", text(withFile, DELAY), "the file's, over the stored 30");
         assertEquals("-60:24M,-80:1.5M", text(withFile, RATES), "the stored, which the file does not set");
+        assertEquals("250", text(withFile, QUEUE), "the file's, over the stored 400");
         press(withFile, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         WindowPreferences stored = new WindowPreferences(preferences.node("window"));
-        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false"),
+        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false", QUEUE, "400"),
                 stored.shaping());
 
         // ...until OK stores what the dialog shows: from then on, what was entered.
@@ -271,6 +290,7 @@ class LinkShapingWindowTest {
         press(entered, "ok");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         assertEquals("9", stored.shaping().get(DELAY));
+        assertEquals("250", stored.shaping().get(QUEUE), "the file's value, shown and OK'd");
         assertEquals("off", stored.shaping().get("wss.shaping"), "the file's value, shown and OK'd");
         Window after = dialog();
         assertEquals("9", text(after, DELAY), "what was entered, no longer the file's 7");

@@ -26,17 +26,22 @@ public final class ControlClient implements AutoCloseable {
     private final InputStream in;
 
     public ControlClient(int wssPort, String name, int acceptPort) throws IOException {
-        this(wssPort);
+        this("127.0.0.1", wssPort, name, acceptPort);
+    }
+
+    /** A robot whose control connection goes to the WSS at {@code host} (a benchmark's own address across a veth, say). */
+    ControlClient(String host, int wssPort, String name, int acceptPort) throws IOException {
+        this(host, wssPort);
         String reply = ask("INIT {Robot " + name + "} {Port " + acceptPort + "}");
         if (!reply.equals("INITREPLY {Status OK}")) {
             throw new IOException("INIT " + name + ": " + reply);
         }
     }
 
-    private ControlClient(int wssPort) throws IOException {
+    private ControlClient(String host, int wssPort) throws IOException {
         channel = SocketChannel.open();
         socket = channel.socket();
-        socket.connect(new InetSocketAddress("127.0.0.1", wssPort), 5000);
+        socket.connect(new InetSocketAddress(host, wssPort), 5000);
         socket.setSoTimeout(10_000);
         socket.setTcpNoDelay(true);
         in = new BufferedInputStream(socket.getInputStream(), 512);
@@ -44,7 +49,7 @@ public final class ControlClient implements AutoCloseable {
 
     /** An operator's control connection from 127.0.0.1: no INIT, for FORCE. */
     static ControlClient operator(int wssPort) throws IOException {
-        return new ControlClient(wssPort);
+        return new ControlClient("127.0.0.1", wssPort);
     }
 
     /** The connection itself, for {@link MeshAsker} (non-blocking while it asks, blocking again after). */

@@ -32,9 +32,9 @@ import org.usarsim.wss.shaping.Bitrate;
  *
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.ShapingBenchmark [--seconds 10] [--only NAME]
- *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--far-rate 6M] [--cost-rate 8M]
+ *     [--bulk-mb 100] [--relay-rate 24M] [--near-rate 24M] [--far-rate 6M] [--cost-rate 8M] [--repeats 7] [--raise-hold 3] [--raise-from 1]
  * </pre>
- * NAME is one of accuracy, latency, airtime, relay, cost, bulk.
+ * NAME is one of accuracy, latency, airtime, raise, relay, cost, bulk.
  */
 public final class ShapingBenchmark {
 
@@ -50,8 +50,15 @@ public final class ShapingBenchmark {
     private final String nearRate;
     private final String costRate;
     private final String farRate;
+    private final int repeats;
+    private final long raiseHold;
+    private final String raiseFrom;
 
-    private ShapingBenchmark(int seconds, long bulkBytes, String relayRate, String nearRate, String farRate, String costRate) {
+    private ShapingBenchmark(int seconds, long bulkBytes, String relayRate, String nearRate, String farRate, String costRate, int repeats,
+            long raiseHold, String raiseFrom) {
+        this.raiseFrom = raiseFrom;
+        this.repeats = repeats;
+        this.raiseHold = raiseHold;
         this.farRate = farRate;
         this.seconds = seconds;
         this.bulkBytes = bulkBytes;
@@ -68,6 +75,9 @@ public final class ShapingBenchmark {
         String nearRate = "24M";
         String costRate = "8M";
         String farRate = null;
+        int repeats = 7;
+        long raiseHold = 3;
+        String raiseFrom = "1";
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--seconds" -> seconds = Integer.parseInt(args[++i]);
@@ -77,13 +87,16 @@ public final class ShapingBenchmark {
                 case "--near-rate" -> nearRate = args[++i];
                 case "--far-rate" -> farRate = args[++i];
                 case "--cost-rate" -> costRate = args[++i];
+                case "--repeats" -> repeats = Integer.parseInt(args[++i]);
+                case "--raise-hold" -> raiseHold = Long.parseLong(args[++i]);
+                case "--raise-from" -> raiseFrom = args[++i];
                 default -> throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
-        if (only != null && !List.of("accuracy", "latency", "airtime", "relay", "cost", "bulk").contains(only)) {
-            throw new IllegalArgumentException("--only takes accuracy, latency, airtime, relay, cost or bulk, not " + only);
+        if (only != null && !List.of("accuracy", "latency", "airtime", "raise", "relay", "cost", "bulk").contains(only)) {
+            throw new IllegalArgumentException("--only takes accuracy, latency, airtime, raise, relay, cost or bulk, not " + only);
         }
-        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, farRate, costRate);
+        ShapingBenchmark benchmark = new ShapingBenchmark(seconds, bulkMb * 1_000_000, relayRate, nearRate, farRate, costRate, repeats, raiseHold, raiseFrom);
         System.out.printf("WSS shaping benchmark: %d cores, %s, %s, load average %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name") + " " + System.getProperty("java.version"), java.time.LocalDateTime.now(), load());
         if (only == null || only.equals("accuracy")) {
@@ -94,6 +107,9 @@ public final class ShapingBenchmark {
         }
         if (only == null || only.equals("airtime")) {
             benchmark.airtime();
+        }
+        if (only == null || only.equals("raise")) {
+            benchmark.raise();
         }
         if (only == null || only.equals("relay")) {
             benchmark.relay();
@@ -233,6 +249,7 @@ public final class ShapingBenchmark {
             long quantum = near * 2 / 1000 / 8;
             long raised = System.nanoTime();
             operator.forceUp("A", "C", nearRate, 2);
+            long replied = System.nanoTime();
             long reached = toC.awaitTotal(before + quantum, 10 * SECOND);
             senderB.stop();
             senderC.stop();
@@ -248,15 +265,113 @@ public final class ShapingBenchmark {
             System.out.printf(Locale.ROOT, "%nThe two link threads waited for a CPU %.0f ms per second (together).%n", waited);
             if (far * 100 <= near) { // a faster far link moves a quantum of the near rate by itself in a few ms
                 System.out.printf(Locale.ROOT, "A-C raised to %s by FORCE: C read %d bytes more (a quantum at the raised rate) %.1f ms"
-                        + " after the FORCE was sent (its round trip, the grant on the air, B's turn, one of its own and the 2 ms"
-                        + " delay: 6 ms, and the threads' wake-ups).%n", Bitrate.format(near), quantum, (reached - raised) / 1e6);
+                        + " after the FORCE was sent, %.1f ms after its reply (the grant on the air, B's turn, one of its own and the"
+                        + " 2 ms delay: 6 ms, and the threads' wake-ups).%n", Bitrate.format(near), quantum, (reached - raised) / 1e6,
+                        (reached - replied) / 1e6);
             }
             System.out.println();
             System.out.println("The shares above are computed from the bytes the peers received.");
         }
     }
 
-    // ---- 4. relay: A to R to B, R's own program relaying ----
+    // ---- 4. raise: a link at 1 bit/s raised to 54 Mbit/s beside one at 54 Mbit/s ----
+
+    /** How long a recovered link's share is measured over: ten turns of each link on A's radio. */
+    private static final long SHARE_WINDOW_NS = 20_000_000L;
+
+    /**
+     * Issue 27's probe, {@code repeats} times, each with robots of its own in one server: A-B
+     * pinned to 1 bit/s (delay 0) and A-C to 54 Mbit/s (delay 2 ms) by FORCE, A sending to both as
+     * fast as the WSS takes it; after {@code raiseHold} seconds (A-B's buffers full, its sender's TCP
+     * waiting for a window) an operator raises A-B to 54 Mbit/s (delay 0). Measured from the FORCE's
+     * sending and from its reply: the time until B reads its next byte, until it has read a
+     * quantum's worth at 54 Mbit/s (13,500 bytes) more than the frame A-B held, and until both links
+     * are back to their share (the end of the first {@link #SHARE_WINDOW_NS} over which each moved
+     * at least 40 % of A's radio: 20 ms at the soonest).
+     */
+    private void raise() throws Exception {
+        long rate = Bitrate.parse("54M");
+        System.out.printf("%n## Raise: A-B at %s beside A-C at 54 Mbit/s for %d s, then A-B raised to 54 Mbit/s, %d times "
+                + "(load average %s)%n%n", Bitrate.format(Bitrate.parse(raiseFrom)), raiseHold, repeats, load());
+        long[] trips = new long[repeats];
+        long[] fromSent = new long[repeats];
+        long[] fromReply = new long[repeats];
+        long[] quanta = new long[repeats];
+        long[] shares = new long[repeats];
+        long quantum = rate * 2 / 1000 / 8;
+        try (WssProcess wss = WssProcess.start("wss.shaping=on"); ControlClient operator = ControlClient.operator(wss.controlPort)) {
+            System.out.println("| run | FORCE's round trip, ms | B's next byte, ms after the FORCE was sent | after its reply "
+                    + "| B's frame and a quantum more, ms after the FORCE was sent | both at their share, ms after the FORCE was sent |");
+            System.out.println("|---|---|---|---|---|---|");
+            for (int i = 0; i < repeats; i++) {
+                Counter toB = new Counter(true);
+                Counter toC = new Counter(true);
+                String a = "A" + i;
+                String b = "B" + i;
+                String c = "C" + i;
+                try (Sink sinkB = new Sink(toB, null); Sink sinkC = new Sink(toC, null);
+                        ControlClient robotB = new ControlClient(wss.controlPort, b, sinkB.port());
+                        ControlClient robotC = new ControlClient(wss.controlPort, c, sinkC.port());
+                        ControlClient robotA = new ControlClient(wss.controlPort, a, 1)) {
+                    operator.forceUp(a, b, raiseFrom, 0);
+                    operator.forceUp(a, c, "54M", 2);
+                    Sender senderB = Sender.start(robotA.dns(b), Long.MAX_VALUE, null);
+                    Sender senderC = Sender.start(robotA.dns(c), Long.MAX_VALUE, null);
+                    sleepUntil(toC.awaitFirst(10 * SECOND) + raiseHold * SECOND);
+                    long sent = System.nanoTime();
+                    operator.forceUp(a, b, "54M", 0);
+                    long replied = System.nanoTime();
+                    long before = toB.at(sent);
+                    long next = toB.awaitAfter(sent, 30 * SECOND);
+                    trips[i] = replied - sent;
+                    fromSent[i] = next - sent;
+                    fromReply[i] = next - replied;
+                    quanta[i] = toB.awaitTotal(before + 1500 + quantum, 30 * SECOND) - sent;
+                    shares[i] = bothAtShare(toB, toC, sent, rate / 2, 30 * SECOND) - sent;
+                    senderB.stop();
+                    senderC.stop();
+                }
+                System.out.printf(Locale.ROOT, "| %d | %.1f | %.1f | %.1f | %.1f | %.1f |%n", i + 1, trips[i] / 1e6, fromSent[i] / 1e6,
+                        fromReply[i] / 1e6, quanta[i] / 1e6, shares[i] / 1e6);
+            }
+        }
+        System.out.printf(Locale.ROOT, "| median | %.1f | **%.1f** | **%.1f** | **%.1f** | **%.1f** |%n", RelayBenchmark.percentile(trips, 50) / 1e6,
+                RelayBenchmark.percentile(fromSent, 50) / 1e6, RelayBenchmark.percentile(fromReply, 50) / 1e6,
+                RelayBenchmark.percentile(quanta, 50) / 1e6, RelayBenchmark.percentile(shares, 50) / 1e6);
+        System.out.printf(Locale.ROOT, "| max | %.1f | %.1f | %.1f | %.1f | %.1f |%n", max(trips) / 1e6, max(fromSent) / 1e6, max(fromReply) / 1e6,
+                max(quanta) / 1e6, max(shares) / 1e6);
+        System.out.printf(Locale.ROOT, "%nThe logic's bound for B's next byte (ShapedFlowTest, moved clock): one quantum, 2 ms, plus a "
+                + "frame's airtime at 54 Mbit/s, 0.22 ms, plus the delay, 0, from the moment the link takes the raise; a quantum "
+                + "more within four quanta. A negative time after the reply: B read its byte before the operator read the reply.%n");
+    }
+
+    private static long max(long[] values) {
+        return Arrays.stream(values).max().getAsLong();
+    }
+
+    /**
+     * The end of the first {@link #SHARE_WINDOW_NS} after {@code fromNs} over which both links
+     * moved at least 80 % of {@code share} bit/s (40 % of the radio each), in steps of 0.1 ms,
+     * waiting at most {@code timeoutNs}.
+     */
+    private static long bothAtShare(Counter one, Counter other, long fromNs, long share, long timeoutNs)
+            throws InterruptedException, IOException {
+        long least = share * 8 / 10 / 8 * SHARE_WINDOW_NS / SECOND;
+        long deadline = System.nanoTime() + timeoutNs;
+        for (long end = fromNs + SHARE_WINDOW_NS;; end += 100_000L) {
+            while (System.nanoTime() - end < 0) {
+                if (System.nanoTime() - deadline > 0) {
+                    throw new IOException("the links did not recover their shares");
+                }
+                Thread.sleep(5);
+            }
+            if (one.between(end - SHARE_WINDOW_NS, end) >= least && other.between(end - SHARE_WINDOW_NS, end) >= least) {
+                return end;
+            }
+        }
+    }
+
+    // ---- 5. relay: A to R to B, R's own program relaying ----
 
     /**
      * A sends to R (pinned A:R), R's program writes every byte it reads to B through the WSS
@@ -294,7 +409,7 @@ public final class ShapingBenchmark {
         }
     }
 
-    // ---- 5. cost: server CPU per MB, 50 links shaped and not ----
+    // ---- 6. cost: server CPU per MB, 50 links shaped and not ----
 
     /**
      * 10 robots each sending to the next 5 as fast as the WSS takes it: 50 links at once. The
@@ -394,7 +509,7 @@ public final class ShapingBenchmark {
         }
     }
 
-    // ---- 6. bulk integrity: a two-hop shaped path, hashed at both ends ----
+    // ---- 7. bulk integrity: a two-hop shaped path, hashed at both ends ----
 
     /**
      * {@code bulkBytes} of seeded random bytes from A to R through the WSS, R's program relaying
@@ -492,6 +607,23 @@ public final class ShapingBenchmark {
                 TimeUnit.NANOSECONDS.timedWait(this, left);
             }
             return times[0];
+        }
+
+        /** When the first read after {@code afterNs} was, waiting for it at most {@code timeoutNs}. */
+        synchronized long awaitAfter(long afterNs, long timeoutNs) throws InterruptedException, IOException {
+            long deadline = System.nanoTime() + timeoutNs;
+            while (count == 0 || times[count - 1] - afterNs <= 0) {
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    throw new IOException("no byte arrived");
+                }
+                TimeUnit.NANOSECONDS.timedWait(this, left);
+            }
+            int first = count - 1;
+            while (first > 0 && times[first - 1] - afterNs > 0) {
+                first--;
+            }
+            return times[first];
         }
 
         /** When the running total first reached {@code bytes}, waiting for it at most {@code timeoutNs}. */

@@ -420,6 +420,77 @@ class DistanceModelDialogTest {
         assertEquals(List.of("usarsim.port"), List.of(root.node(OBSTACLE).keys()));
     }
 
+    // ---- where the positions come from ----
+
+    private static final List<String> USARSIM_FIELDS = List.of("usarsim.host", "usarsim.port", "usarsim.timeout");
+    private static final List<String> ROSBRIDGE_FIELDS = List.of("rosbridge.url", "rosbridge.topic", "rosbridge.type",
+            "rosbridge.frame", "rosbridge.names", "rosbridge.stale", "rosbridge.maxMessage");
+
+    /** Whether each field, and the label naming it, is enabled; a greyed field on the grey of one that cannot be edited. */
+    private void assertEnabled(List<String> keys, boolean enabled, String when) {
+        for (String key : keys) {
+            JTextField field = field(key);
+            assertEquals(enabled, Gui.onEdt(field::isEnabled), key + " enabled " + when);
+            JLabel label = Gui.onEdt(() -> Gui.all(dialog, JLabel.class).stream()
+                    .filter(l -> l.getLabelFor() == field).findFirst().orElseThrow());
+            assertEquals(enabled, Gui.onEdt(label::isEnabled), key + "'s label enabled " + when);
+            if (!enabled) {
+                assertEquals(Gui.onEdt(DialogParts::readOnlyBackground), Gui.onEdt(field::getBackground), key + "'s background " + when);
+            }
+        }
+    }
+
+    @Test
+    void theFieldsOfTheSourceNotChosenAreGreyedAsPositionsChanges() {
+        for (PropagationModel model : List.of(DISTANCE_MODEL, OBSTACLE_MODEL)) {
+            open((SimulatorModel) model, true);
+            List<String> rosbridge = new java.util.ArrayList<>(ROSBRIDGE_FIELDS);
+            List<String> always = new java.util.ArrayList<>(List.of("positions", "positions.interval", "distance.cutoff",
+                    "distance.n", "distance.pd0", "distance.d0", "distance.margin", "distance.holdTime"));
+            if (model == OBSTACLE_MODEL) {
+                rosbridge.add("rosbridge.map");
+                always.addAll(List.of("obstacle.attenuation", "obstacle.cacheDistance", "obstacle.walls"));
+            }
+            assertEnabled(USARSIM_FIELDS, true, "with positions = usarsim, the default");
+            assertEnabled(rosbridge, false, "with positions = usarsim, the default");
+            type("positions", "rosbridge");
+            assertEnabled(USARSIM_FIELDS, false, "with positions = rosbridge");
+            assertEnabled(rosbridge, true, "with positions = rosbridge");
+            type("positions", "ros");
+            assertEnabled(USARSIM_FIELDS, true, "while positions names neither");
+            assertEnabled(rosbridge, true, "while positions names neither");
+            type("positions", " usarsim ");
+            assertEnabled(USARSIM_FIELDS, true, "with positions = usarsim again");
+            assertEnabled(rosbridge, false, "with positions = usarsim again");
+            assertEnabled(always, true, "whatever positions says");
+            Gui.run(() -> dialog.dispose());
+        }
+    }
+
+    @Test
+    void aStoredRosbridgeGreysTheUsarsimFieldsAndAGreyedRefusedValueSaysHowToEditIt() throws Exception {
+        preferences.store(DISTANCE_MODEL, Map.of("positions", "rosbridge"));
+        open(new DistanceOnlyPropagationModel(), true);
+        assertEnabled(USARSIM_FIELDS, false, "with positions = rosbridge stored");
+        assertEnabled(ROSBRIDGE_FIELDS, true, "with positions = rosbridge stored");
+        type("rosbridge.stale", "-1");
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("rosbridge.stale")::getBackground));
+        type("positions", "usarsim");
+        assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field("rosbridge.stale")::getBackground), "refused, greyed or not");
+        click(DistanceModelDialog.OK);
+        assertTrue(Gui.onEdt(dialog::isShowing));
+        assertTrue(label(DistanceModelDialog.MESSAGE).startsWith("<html>Stale limit (ms): '-1' is not "), label(DistanceModelDialog.MESSAGE));
+        assertTrue(label(DistanceModelDialog.MESSAGE).endsWith("(greyed: set Positions from to rosbridge to edit it)</html>"),
+                label(DistanceModelDialog.MESSAGE));
+        type("positions", "rosbridge");
+        type("rosbridge.stale", "0");
+        type("positions", "usarsim");
+        click(DistanceModelDialog.OK);
+        waitClosed();
+        assertEquals("usarsim", preferences.load(DISTANCE_MODEL).get("positions"));
+        assertEquals("0", preferences.load(DISTANCE_MODEL).get("rosbridge.stale"), "a greyed field's value is stored");
+    }
+
     // ---- numbers ----
 
     @Test

@@ -183,6 +183,42 @@ class FixedPortsTest {
         }
     }
 
+    /**
+     * Datagrams queued at a low rate take a raised one (issue 27): 20 of 1,000 bytes from Scout at
+     * 16 kbit/s, half a second of airtime each; once the first arrived the pair is raised to
+     * 54 Mbit/s. The two already booked keep their airtime, the 17 others go at the new rate: all
+     * within a second or so, where at 16 kbit/s they would take 9.5 s more (before, the queue took
+     * a new rate only with the next datagram that came in).
+     */
+    @Test
+    void datagramsQueuedAtALowRateTakeARaisedRate() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int number = freeUdp();
+            HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
+                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 0, true), Map.of())
+                    .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
+                            List.of(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number)), 60));
+            try (TestHub test = new TestHub(new NoopPropagationModel(), config);
+                    DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                test.hub.force("Scout", "Base", Force.UP, new org.usarsim.wss.hub.core.RatePin(16_000, 0));
+                for (int i = 0; i < 20; i++) {
+                    scout.send(new DatagramPacket(new byte[1000], 1000, LOCAL, number));
+                }
+                base.setSoTimeout(5000);
+                DatagramPacket packet = new DatagramPacket(new byte[2000], 2000);
+                base.receive(packet);
+                long raised = System.nanoTime();
+                test.hub.force("Scout", "Base", Force.UP, new org.usarsim.wss.hub.core.RatePin(54_000_000, 0));
+                for (int i = 1; i < 20; i++) {
+                    base.receive(packet);
+                }
+                double seconds = (System.nanoTime() - raised) / 1e9;
+                System.out.printf(java.util.Locale.ROOT, "FixedPortsTest: 19 datagrams %.2f s after the raise%n", seconds);
+                assertTrue(seconds < 4, "the 19 others " + seconds + " s after the raise: two at 16 kbit/s, 17 at 54 Mbit/s");
+            }
+        }
+    }
+
     private final java.util.List<long[]> reported = new java.util.concurrent.CopyOnWriteArrayList<>();
 
     private static UdpCounts.Reading udp(TestHub test, String from) {

@@ -109,8 +109,9 @@ class ShapedFlowTest {
         long before = pinned.delivered;
         long raisedAt = links.now;
         pinned.flow.setConditions(fast, delayMs);
-        // The grant on the air keeps its rate (one quantum at most), the other link has its turn (one
-        // quantum), then the raised link's next grant is at 54 Mbit/s: its bytes arrive after it and the delay.
+        // The grant on the air carries at the new rate from the change (what fits of it before its end),
+        // the other link has its turn (one quantum), then the raised link's next grant carries the
+        // rest at 54 Mbit/s: everything held arrives within two quanta and the delay.
         long waiting = pinned.flow.held();
         links.runUntil(raisedAt + 2 * Airtime.QUANTUM_NS + delayMs * MS);
         assertTrue(pinned.delivered - before >= waiting, "the " + waiting + " bytes that waited at 1 bit/s arrive within "
@@ -120,6 +121,44 @@ class ShapedFlowTest {
         links.runFor(10 * SECOND);
         assertEquals(0.5, (pinned.delivered - pinnedBefore) * 8.0 / fast / 10, 0.05, "then half the airtime each");
         assertEquals(0.5, (near.delivered - nearBefore) * 8.0 / fast / 10, 0.05);
+    }
+
+    /**
+     * Issue 27's probe on the moved clock: A-B at 1 bit/s beside A-C at 54 Mbit/s, A-B raised to
+     * 54 Mbit/s at 40 moments over two turns of A's radio (during A-B's own grant and during
+     * A-C's). The grant on the air carries at the new rate from the change, and a grant booked
+     * ahead is due once the bytes it carries are on the air: B's next byte comes within one quantum
+     * (A-C's turn at most), the airtime of what A-B held (a frame, 1,500 bytes: 0.22 ms) and the
+     * delay. The bytes read after the raise ride in the time A-B's grants booked at 1 bit/s have
+     * to spare: within four quanta and the delay B has had a whole quantum at 54 Mbit/s more.
+     */
+    @Test
+    void aRateRaisedReachesTheLinkWithinOneQuantumAndItsDelayWhateverTheMoment() {
+        long fast = 54_000_000;
+        for (int delayMs : new int[] {0, 2}) {
+            long worst = 0;
+            for (int moment = 0; moment < 40; moment++) {
+                SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+                Lane pinned = links.add("A", "B", 1, delayMs, CHUNK, SimulatedLinks.endless());
+                links.add("A", "C", fast, delayMs, CHUNK, SimulatedLinks.endless());
+                links.runFor(SECOND + moment * 100_000L);
+                long held = pinned.flow.held();
+                long raisedAt = links.now;
+                pinned.flow.setConditions(fast, delayMs);
+                long before = pinned.delivered;
+                long next = links.runUntilDelivered(pinned, before + 1, raisedAt + SECOND) - raisedAt;
+                long bound = Airtime.QUANTUM_NS + Bitrate.nanos(held, fast) + delayMs * MS;
+                assertTrue(next >= delayMs * MS && next <= bound, "raised " + moment * 100 + " µs into the turns, delay " + delayMs
+                        + " ms: B's next byte " + next + " ns after, bound " + bound);
+                worst = Math.max(worst, next);
+                links.runUntil(raisedAt + 4 * Airtime.QUANTUM_NS + delayMs * MS);
+                long quantum = Bitrate.bytesIn(Airtime.QUANTUM_NS, fast);
+                assertTrue(pinned.delivered - before >= held + quantum, "raised " + moment * 100 + " µs into the turns: "
+                        + (pinned.delivered - before) + " bytes within four quanta, not " + held + " held and a quantum's " + quantum);
+            }
+            // The bound is reached: a raise at the start of A-C's turn waits for all of it.
+            assertTrue(worst > Airtime.QUANTUM_NS + delayMs * MS, "the worst moment, " + worst + " ns, waits A-C's turn");
+        }
     }
 
     @Test
@@ -152,18 +191,24 @@ class ShapedFlowTest {
     @Test
     void aRateChangeReachesTheBytesStillWaiting() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, true);
-        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 100 ms / 8");
+        assertEquals(12_500, ShapedFlow.capacity(1_000_000, 0, 100), "1 Mbit/s x 100 ms / 8");
+        assertEquals(2_500, ShapedFlow.capacity(1_000_000, 0, ShapingConfig.DEFAULT_QUEUE_MS), "1 Mbit/s x 20 ms / 8");
         long capacity = 5096;
-        Lane lane = links.add("A", "B", 1_000_000, 0, CHUNK, SimulatedLinks.finite(capacity));
+        Lane lane = links.add("A", "B", 1_000_000, 0, 100, CHUNK, SimulatedLinks.finite(capacity), null);
         links.runFor(MS);
         assertEquals(capacity, lane.read, "all read at once");
         lane.flow.setConditions(8_000_000, 0);
         // Four grants of 2 ms were taken at 1 Mbit/s (0-2 ms on the air, 2-8 ms booked ahead). The
-        // one on the air keeps its rate (250 bytes); the three not begun carry 2,000 bytes each at
-        // 8 Mbit/s: the 4,846 bytes left are all on the air by 8 ms. At 1 Mbit/s they would take 38.8.
-        links.runUntil(8 * MS - 1);
-        assertEquals(250 + 2 * 2000, lane.delivered);
-        links.runUntil(8 * MS);
+        // one on the air carries at 8 Mbit/s from the change at 1 ms (125 + 1,000 bytes); those not
+        // begun carry 2,000 bytes each: the last 1,971 bytes are on the air 1.971 ms into the third
+        // grant, and due then, not at its end. At 1 Mbit/s they would take 38.8 ms.
+        links.runUntil(2 * MS);
+        assertEquals(125 + 1000, lane.delivered);
+        links.runUntil(4 * MS);
+        assertEquals(125 + 1000 + 2000, lane.delivered);
+        links.runUntil(4 * MS + 1_971_000 - 1);
+        assertEquals(125 + 1000 + 2000, lane.delivered);
+        links.runUntil(4 * MS + 1_971_000);
         assertEquals(capacity, lane.delivered);
         assertEquals(lane.sent.getValue(), lane.got.getValue());
     }
@@ -175,7 +220,7 @@ class ShapedFlowTest {
             Lane lane = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
             links.runFor(2 * SECOND);
             long most = Bitrate.bytesIn((2 + ShapingConfig.DEFAULT_QUEUE_MS) * MS, rate);
-            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and 100 ms at the rate, the default queue");
+            assertEquals(most, lane.mostHeld, Bitrate.format(rate) + ": the delay and the default queue at the rate");
             assertEquals(rate * 2 / 8.0, lane.delivered, rate * 2 / 8.0 / 100, Bitrate.format(rate) + ": and the rate is kept");
         }
         assertEquals(ShapedFlow.MIN_HELD, ShapedFlow.capacity(1, 2, ShapingConfig.DEFAULT_QUEUE_MS), "a frame at least");
@@ -225,13 +270,14 @@ class ShapedFlowTest {
     void aDirectionNeverHoldsMoreThanItsCapacity() {
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
         Lane lane = links.add("A", "B", 6_000_000, 100, CHUNK, SimulatedLinks.endless(), new Random(16));
-        assertEquals(6_000_000 * 200 / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
+        int queueMs = ShapingConfig.DEFAULT_QUEUE_MS;
+        assertEquals(6_000_000 * (100 + queueMs) / 1000 / 8, lane.flow.capacity(), "rate x (delay + queue) / 8");
         links.runFor(2 * SECOND);
         assertTrue(lane.mostHeld <= lane.flow.capacity(), lane.mostHeld + " held");
         assertTrue(lane.mostHeld >= 6_000_000 * 100 / 1000 / 8, "the capacity is what limits the reading: " + lane.mostHeld);
 
         lane.flow.setConditions(1_000_000, 100);
-        assertEquals(1_000_000 * 200 / 1000 / 8, lane.flow.capacity());
+        assertEquals(1_000_000 * (100 + queueMs) / 1000 / 8, lane.flow.capacity());
         assertEquals(0, lane.flow.room(), "a slower rate: no room until what is held drains");
         assertThrows(IllegalStateException.class, () -> lane.flow.accept(ByteBuffer.allocate(1), links.now));
         lane.mostHeld = 0;

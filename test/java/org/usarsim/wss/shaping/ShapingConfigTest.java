@@ -13,8 +13,8 @@ import org.junit.jupiter.api.Test;
 class ShapingConfigTest {
 
     @Test
-    void theQueueIs100MsByDefaultAndFrom10To10000Ms() {
-        assertEquals(100, ShapingConfig.from(Map.of()).queueMs());
+    void theQueueIs20MsByDefaultAndFrom10To10000Ms() {
+        assertEquals(20, ShapingConfig.from(Map.of()).queueMs());
         assertEquals(250, ShapingConfig.from(Map.of(ShapingConfig.QUEUE_MS, " 250 ")).queueMs());
         for (String bad : new String[] {"9", "10001", "soon", ""}) {
             IllegalArgumentException e = assertThrows(IllegalArgumentException.class,

@@ -122,7 +122,12 @@ final class SimulatedLinks {
 
     /** As {@link #add}, reading chunks of random sizes from 1 to {@code chunkSize} with {@code sizes}. */
     Lane add(String from, String to, long bitsPerSecond, int delayMs, int chunkSize, Source source, Random sizes) {
-        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, ShapingConfig.DEFAULT_QUEUE_MS);
+        return add(from, to, bitsPerSecond, delayMs, ShapingConfig.DEFAULT_QUEUE_MS, chunkSize, source, sizes);
+    }
+
+    /** A lane with a queue of {@code queueMs} rather than the default. */
+    Lane add(String from, String to, long bitsPerSecond, int delayMs, int queueMs, int chunkSize, Source source, Random sizes) {
+        ShapedFlow flow = new ShapedFlow(airtime.open(from, to, now), bitsPerSecond, delayMs, queueMs);
         Lane lane = new Lane(flow, source, chunkSize, sizes);
         lanes.add(lane);
         return lane;
@@ -145,8 +150,25 @@ final class SimulatedLinks {
 
     /** Runs the directions until {@code endNs}, then writes what is due then. */
     void runUntil(long endNs) {
+        runUntil(endNs, () -> false);
+    }
+
+    /**
+     * Runs the directions until {@code lane} has delivered {@code bytes} in all, at most until
+     * {@code endNs}. @return the time it had, or -1
+     */
+    long runUntilDelivered(Lane lane, long bytes, long endNs) {
+        runUntil(endNs, () -> lane.delivered >= bytes);
+        return lane.delivered >= bytes ? now : -1;
+    }
+
+    /** Runs the directions until {@code endNs}, or until a step after which {@code enough} holds. */
+    private void runUntil(long endNs, java.util.function.BooleanSupplier enough) {
         while (true) {
             step();
+            if (enough.getAsBoolean()) {
+                return;
+            }
             long next = Long.MAX_VALUE;
             for (Lane lane : lanes) {
                 next = Math.min(next, lane.flow.nanosUntilNext(now));

@@ -143,7 +143,7 @@ final class Server implements AutoCloseable {
             ShapingConfig shaping = config.shaping();
             java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
                     ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
-                            + (shaping.airtime() ? "shared" : "not shared")
+                            + (shaping.airtime() ? "shared" : "not shared") + ", queue " + shaping.queueMs() + " ms"
                     : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
         } catch (IOException e) {
             closeRecords();

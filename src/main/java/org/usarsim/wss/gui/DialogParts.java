@@ -138,8 +138,13 @@ final class DialogParts {
     static void readOnly(JTextComponent field) {
         field.setEnabled(false);
         field.setDisabledTextColor(READ_ONLY_TEXT);
+        field.setBackground(readOnlyBackground());
+    }
+
+    /** The look and feel's grey of a field that cannot be edited. */
+    static Color readOnlyBackground() {
         Color grey = javax.swing.UIManager.getColor("TextField.inactiveBackground");
-        field.setBackground(grey != null ? grey : javax.swing.UIManager.getColor("control"));
+        return grey != null ? grey : javax.swing.UIManager.getColor("control");
     }
 
     /** The words of a refused value: "Timeout (ms): '50' is not a whole number of ...". */

@@ -20,6 +20,7 @@ import org.usarsim.wss.model.DialogLayout;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.simulator.PathLoss;
+import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
  * The configuration dialog of the models whose {@code dialogLayout()} is {@link DialogLayout#DISTANCE}
@@ -73,6 +74,9 @@ final class DistanceModelDialog extends JDialog {
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
     private static final String WALLS = "obstacle.walls";
     private static final String MAP = "rosbridge.map";
+    /** The fields of one source of positions: greyed while {@code positions} names the other. */
+    private static final List<String> USARSIM_KEYS = List.of(HOST, PORT, TIMEOUT);
+    private static final List<String> ROSBRIDGE_KEYS = List.of(URL, TOPIC, TYPE, FRAME, NAMES, STALE, MAX_MESSAGE, MAP);
 
     private final PropagationModel model;
     private final List<Setting> declared;
@@ -82,6 +86,7 @@ final class DistanceModelDialog extends JDialog {
 
     private final Map<String, JTextField> fields = new LinkedHashMap<>();
     private final Map<String, Setting> rules = new LinkedHashMap<>();
+    private final Map<String, JLabel> labels = new LinkedHashMap<>();
     private final JTextField distance = new JTextField(10);
     private final JLabel rangeNote = new JLabel(" ");
     private final JLabel message = new JLabel(" ");
@@ -122,6 +127,7 @@ final class DistanceModelDialog extends JDialog {
         fields.forEach((key, field) -> field.setText(values.get(key)));
         updating = false;
         showDistance();
+        followPositions();
         if (!editable) {
             fields.values().forEach(DialogParts::readOnly);
             DialogParts.readOnly(distance);
@@ -150,6 +156,7 @@ final class DistanceModelDialog extends JDialog {
             JTextField field = field(setting);
             JLabel label = DialogParts.label(setting.labelWithUnit(), setting.help(), field);
             (left ? leftLabels : rightLabels).add(label);
+            labels.put(keys[i], label);
             panel.add(label, cell(left ? 0 : 2, row, left ? 0 : 18));
             panel.add(field, cell(left ? 1 : 3, row, 6));
         }
@@ -242,8 +249,12 @@ final class DistanceModelDialog extends JDialog {
         fields.put(setting.key(), field);
         rules.put(setting.key(), setting);
         boolean parameter = List.of(CUTOFF, N, PD0, D0).contains(setting.key());
+        boolean positions = setting.key().equals(POSITIONS);
         field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
             mark(field, setting.problem(field.getText()) != null);
+            if (positions) {
+                followPositions();
+            }
             if (!updating) {
                 message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
                 if (parameter) {
@@ -260,8 +271,38 @@ final class DistanceModelDialog extends JDialog {
         field.setMinimumSize(field.getPreferredSize());
     }
 
+    /** Red while its value is refused, greyed or not; else white, or grey while greyed. */
     private void mark(JTextField field, boolean invalid) {
-        field.setBackground(invalid ? INVALID : normalBackground);
+        field.setBackground(invalid ? INVALID : field.isEnabled() ? normalBackground : DialogParts.readOnlyBackground());
+    }
+
+    // ---- where the positions come from ----
+
+    /**
+     * Greys (disables) the fields, and their labels, of the source of positions that
+     * {@code positions} does not name: the rosbridge ones (with the Obstacles group's Map topic)
+     * while it says usarsim, the USARSim Connection ones while it says rosbridge; both stay
+     * editable while it names neither (a value being typed). Greyed fields keep their values, which
+     * OK still checks and stores.
+     */
+    private void followPositions() {
+        if (!editable) {
+            return; // every field is read-only already
+        }
+        String positions = fields.get(POSITIONS).getText().strip();
+        enable(USARSIM_KEYS, !positions.equals(SimulatorModel.ROSBRIDGE));
+        enable(ROSBRIDGE_KEYS, !positions.equals(SimulatorModel.USARSIM));
+    }
+
+    private void enable(List<String> keys, boolean enabled) {
+        for (String key : keys) {
+            JTextField field = fields.get(key);
+            if (field != null) { // the Map topic: the Obstacles group only
+                field.setEnabled(enabled);
+                labels.get(key).setEnabled(enabled);
+                mark(field, rules.get(key).problem(field.getText()) != null);
+            }
+        }
     }
 
     // ---- the cutoff distance, both ways ----
@@ -407,7 +448,10 @@ final class DistanceModelDialog extends JDialog {
                 refused++;
                 if (first == null) {
                     first = entry.getValue();
-                    refusal = DialogParts.refusal(rules.get(entry.getKey()).labelWithUnit(), text, problem);
+                    refusal = DialogParts.refusal(rules.get(entry.getKey()).labelWithUnit(), text, problem)
+                            + (first.isEnabled() ? "" : " (greyed: set Positions from to "
+                                    + (USARSIM_KEYS.contains(entry.getKey()) ? SimulatorModel.USARSIM : SimulatorModel.ROSBRIDGE)
+                                    + " to edit it)");
                 }
             }
             values.put(entry.getKey(), text);

@@ -4,6 +4,7 @@ import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Window;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -18,37 +19,47 @@ import javax.swing.JTextField;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * "Link shaping...": the four {@code wss.shaping*} settings (docs/shaping.md) for the window's
- * next Start, laid out as the generated model dialog: shape links (a check box), the rate table,
- * the delay, shared airtime (a check box), each field named by its key. A rate table or a delay
- * that is refused turns its field red as it is typed, the reason in its tooltip; OK checks both
- * with the same rules ({@link ShapingValues#problem}) and refuses with the first reason under the
- * fields, else stores the values in the {@link WindowPreferences}. Read-only while a server runs
- * (every field disabled, Close only). Modal; build and show it on the event thread.
+ * "Link shaping...": the five {@code wss.shaping*} settings of the window (docs/shaping.md) for
+ * its next Start, laid out as the generated model dialog: shape links (a check box), the rate
+ * table, the delay, shared airtime (a check box), the queue, each field named by its key. A rate
+ * table, a delay or a queue that is refused turns its field red as it is typed, the reason in its
+ * tooltip; OK checks them with the same rules ({@link ShapingValues#problem}) and refuses with the
+ * first reason under the fields, else stores the values in the {@link WindowPreferences}.
+ * Read-only while a server runs (every field disabled, Close only). Modal; build and show it on
+ * the event thread.
  */
 final class LinkShapingDialog extends JDialog {
 
     static final String TITLE = "Link shaping";
     static final String RATES_LABEL = "Rates by strength";
     static final String DELAY_LABEL = "Delay";
+    static final String QUEUE_LABEL = "Queue";
     private static final String RATES_HELP = "Steps dBm:rate from the strongest signal to the weakest, comma-separated:"
             + " a pair whose strength is at or above a step's dBm gets its rate; below the last, the last."
             + " A rate is bit/s with k for 1000 or M for 1000000 (wss.shaping.rates)";
     private static final String DELAY_HELP = "Bytes reach the target no sooner than this after the WSS read them, plus their time on"
             + " the air: whole milliseconds from " + ShapingConfig.MIN_DELAY_MS + " to " + ShapingConfig.MAX_DELAY_MS
             + " (wss.shaping.delayMs)";
+    private static final String QUEUE_HELP = "The most a link holds one way beyond its delay, as a radio's queue holds frames:"
+            + " in time at the link's rate, whole milliseconds from " + ShapingConfig.MIN_QUEUE_MS + " to " + ShapingConfig.MAX_QUEUE_MS
+            + "; then the sender waits, as TCP makes it (wss.shaping.queueMs)";
+
+    /** Each text field's label, by its key, for a refusal under the fields. */
+    private static final Map<String, String> LABELS = Map.of(ShapingConfig.RATES, RATES_LABEL, ShapingConfig.DELAY_MS, DELAY_LABEL,
+            ShapingConfig.QUEUE_MS, QUEUE_LABEL);
 
     private final boolean editable;
     private final WindowPreferences preferences;
     private final JCheckBox shaping = new JCheckBox("Shape every link like radio");
     private final JTextField rates = new JTextField(40);
     private final JTextField delay = new JTextField(6);
+    private final JTextField queue = new JTextField(6);
     private final JCheckBox airtime = new JCheckBox("A robot's links share its radio's airtime");
     private final JLabel message = new JLabel(" ");
     private final Color normalBackground = rates.getBackground();
     private boolean saved;
 
-    /** Shows {@code values} (a value for each of the four keys); OK stores them in {@code preferences}. */
+    /** Shows {@code values} (a value for each of the five keys); OK stores them in {@code preferences}. */
     LinkShapingDialog(Window owner, boolean editable, WindowPreferences preferences, Map<String, String> values) {
         super(owner, TITLE, ModalityType.APPLICATION_MODAL);
         this.editable = editable;
@@ -64,6 +75,8 @@ final class LinkShapingDialog extends JDialog {
                 DELAY_HELP);
         box(rows, 3, "Shared airtime", airtime, ShapingConfig.AIRTIME, Boolean.parseBoolean(values.get(ShapingConfig.AIRTIME)),
                 "Links sharing a robot share its radio's airtime, by time (wss.shaping.airtime)");
+        field(rows, 4, QUEUE_LABEL, queue, ShapingConfig.QUEUE_MS, values.get(ShapingConfig.QUEUE_MS), "ms at the link's rate, beyond its delay",
+                QUEUE_HELP);
 
         DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
         // Three lines for a refusal: a rate table's repeats the table.
@@ -130,13 +143,19 @@ final class LinkShapingDialog extends JDialog {
         values.put(ShapingConfig.RATES, rates.getText().strip());
         values.put(ShapingConfig.DELAY_MS, delay.getText().strip());
         values.put(ShapingConfig.AIRTIME, String.valueOf(airtime.isSelected()));
-        String rateProblem = ShapingValues.problem(ShapingConfig.RATES, rates.getText());
-        String delayProblem = ShapingValues.problem(ShapingConfig.DELAY_MS, delay.getText());
-        if (rateProblem != null || delayProblem != null) {
-            boolean both = rateProblem != null && delayProblem != null;
-            DialogParts.showMessage(message, (rateProblem != null ? RATES_LABEL + ": " + rateProblem : DELAY_LABEL + ": " + delayProblem)
-                    + (both ? " (and 1 more marked)" : ""));
-            (rateProblem != null ? rates : delay).requestFocusInWindow();
+        values.put(ShapingConfig.QUEUE_MS, queue.getText().strip());
+        List<JTextField> refused = new ArrayList<>();
+        String first = null;
+        for (JTextField field : List.of(rates, delay, queue)) {
+            String problem = ShapingValues.problem(field.getName(), field.getText());
+            if (problem != null) {
+                first = first != null ? first : LABELS.get(field.getName()) + ": " + problem;
+                refused.add(field);
+            }
+        }
+        if (first != null) {
+            DialogParts.showMessage(message, first + (refused.size() > 1 ? " (and " + (refused.size() - 1) + " more marked)" : ""));
+            refused.get(0).requestFocusInWindow();
             return;
         }
         try {

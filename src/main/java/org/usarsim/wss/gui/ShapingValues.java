@@ -7,21 +7,22 @@ import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * The four link shaping settings as the window keeps, shows and starts them: text by key
+ * The five link shaping settings as the window keeps, shows and starts them: text by key
  * ({@code wss.shaping}, {@code wss.shaping.rates}, {@code wss.shaping.delayMs},
- * {@code wss.shaping.airtime}, docs/shaping.md), each checked by the rule a properties file's are
- * checked with, {@link ShapingConfig#from} (the rates by {@link RateTable#parse}, the delay by
- * {@link ShapingConfig#parseDelayMs}). No state.
+ * {@code wss.shaping.airtime}, {@code wss.shaping.queueMs}, docs/shaping.md), each checked by the
+ * rule a properties file's are checked with, {@link ShapingConfig#from} (the rates by
+ * {@link RateTable#parse}, the delay by {@link ShapingConfig#parseDelayMs}). No state.
  */
 final class ShapingValues {
 
     /** The keys, in the dialog's order. */
-    static final List<String> KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS, ShapingConfig.AIRTIME);
+    static final List<String> KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS, ShapingConfig.AIRTIME,
+            ShapingConfig.QUEUE_MS);
 
     private ShapingValues() {
     }
 
-    /** Each key's default: links not shaped, the default rate table, 2 ms, shared airtime. */
+    /** Each key's default: links not shaped, the default rate table, 2 ms, shared airtime, a queue of 20 ms. */
     static Map<String, String> defaults() {
         ShapingConfig off = ShapingConfig.OFF;
         Map<String, String> values = new LinkedHashMap<>();
@@ -29,6 +30,7 @@ final class ShapingValues {
         values.put(ShapingConfig.RATES, off.rates().toString());
         values.put(ShapingConfig.DELAY_MS, String.valueOf(off.delayMs()));
         values.put(ShapingConfig.AIRTIME, String.valueOf(off.airtime()));
+        values.put(ShapingConfig.QUEUE_MS, String.valueOf(off.queueMs()));
         return values;
     }
 

@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.WritableByteChannel;
 import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.List;
 
 /**
  * One direction of one shaped link: the bytes read from one robot and not yet written to the
@@ -13,15 +15,17 @@ import java.util.ArrayDeque;
  *
  * <p>Bytes go on the air in order, lazily: whenever the direction's last grant starts within
  * {@link #LOOKAHEAD_NS}, the bytes not yet on the air ask its {@link Airtime.Hop} for the next
- * grant, at the rate the link has at that moment, so a rate change reaches every byte not yet
- * booked at the next step (grants already booked, at most a few milliseconds of airtime, keep
- * their rate). So a busy direction holds one grant on the air and books at most two quanta
- * ahead, and directions sharing a radio take turns. Bytes may be written at their grant's end plus the delay: a chunk
+ * grant, at the rate the link has at that moment. So a busy direction holds one grant on the air
+ * and books at most two quanta ahead, and directions sharing a radio take turns. A rate change
+ * reaches the link at its next step: the grant on the air carries at the new rate from the
+ * change on, the grants booked ahead carry at the new rate, and every later grant is asked at it;
+ * the grants keep their airtime. A grant's bytes may be written once its last byte is on the air
+ * (its end, or sooner when it carries every byte held with time to spare), plus the delay: a chunk
  * read at t over an idle radio is due at t + delay + its bytes x 8 / rate.
  *
  * <p>Nothing is lost, reordered or duplicated: shaping only changes when bytes are written. The
  * memory is bounded by {@link #capacity()}: rate x (delay + queue), the queue
- * ({@code wss.shaping.queueMs}, 100 ms by default) being what a radio's queue would hold; a
+ * ({@code wss.shaping.queueMs}, 20 ms by default) being what a radio's queue would hold; a
  * direction that holds that much reads no more, and TCP's back-pressure reaches the sender.
  *
  * <p>Used by one thread; it never reads a clock nor blocks.
@@ -46,7 +50,7 @@ public final class ShapedFlow {
     private long capacity;
     /** Read and not yet written, in order; each buffer's position is what was written of it. */
     private final ArrayDeque<ByteBuffer> chunks = new ArrayDeque<>();
-    /** Grants whose bytes are not yet due, in order. */
+    /** Grants whose bytes are not yet due or that are not yet over, in order. */
     private final ArrayDeque<Slot> slots = new ArrayDeque<>();
     // Offsets in the stream of bytes this direction carries, received >= granted >= released >= written.
     private long received;
@@ -57,30 +61,56 @@ public final class ShapedFlow {
     private long carried;
     private long lastStartNs;
     private boolean anyGrant;
-    /** The rate or the delay changed since the last step: the grants not yet begun are counted again. */
+    /** The rate or the delay changed since the last step: the grants not yet over are counted again. */
     private boolean changed;
+    /** Bytes were read since the last step while every byte held had its grant: the time booked to spare carries them. */
+    private boolean arrived;
 
     /** One byte in bit x nanoseconds: a grant of d ns at R bit/s carries R x d of them. */
     private static final long BYTE = 8_000_000_000L;
 
     /**
-     * One grant of airtime and what it carries: the stream from {@code fromOffset} (with
-     * {@code fromCarried} of the next byte already on the air before it) to {@code toOffset},
-     * due at {@code dueNs}.
+     * A grant of airtime, or its part from a cut on, and what it carries: the stream from
+     * {@code fromOffset} (with {@code fromCarried} of the next byte already on the air before it)
+     * to {@code toOffset}, at {@code bitsPerSecond}, due at {@code dueNs} ({@code delayNs} after
+     * its last byte is on the air).
      */
     private static final class Slot {
         final long startNs;
-        final long endNs;
-        final long fromOffset;
-        final long fromCarried;
+        long endNs;
+        long fromOffset;
+        long fromCarried;
+        long bitsPerSecond;
+        long delayNs;
         long toOffset;
         long dueNs;
 
-        Slot(Airtime.Grant grant, long fromOffset, long fromCarried) {
-            this.startNs = grant.startNs();
-            this.endNs = grant.endNs();
-            this.fromOffset = fromOffset;
-            this.fromCarried = fromCarried;
+        Slot(long startNs, long endNs) {
+            this.startNs = startNs;
+            this.endNs = endNs;
+        }
+
+        /**
+         * Cuts it at {@code nowNs}, while it is on the air: this part keeps the bytes whole on
+         * the air by then, due {@link #delayNs} after the last of them; the part returned, from
+         * now to the end, carries the rest of the stream from there (filled by the caller).
+         */
+        Slot cutAt(long nowNs) {
+            long bitNanos = fromCarried + bitsPerSecond * (nowNs - startNs);
+            long whole = Math.min(bitNanos / BYTE, toOffset - fromOffset);
+            Slot rest = new Slot(nowNs, endNs);
+            rest.fromOffset = fromOffset + whole;
+            rest.fromCarried = whole == toOffset - fromOffset ? 0 : bitNanos - whole * BYTE;
+            endNs = nowNs;
+            toOffset = fromOffset + whole;
+            dueNs = Math.min(dueNs, lastOnTheAir(whole) + delayNs);
+            return rest;
+        }
+
+        /** When the last of its first {@code bytes} bytes is on the air. */
+        long lastOnTheAir(long bytes) {
+            long needed = Math.max(0, bytes * BYTE - fromCarried);
+            return Math.min(endNs, startNs + (needed + bitsPerSecond - 1) / bitsPerSecond);
         }
     }
 
@@ -164,6 +194,7 @@ public final class ShapedFlow {
             throw new IllegalStateException(count + " bytes read with room for " + room());
         }
         if (count > 0) {
+            arrived |= granted == received;
             byte[] copy = new byte[count];
             bytes.get(copy);
             chunks.addLast(ByteBuffer.wrap(copy));
@@ -212,8 +243,11 @@ public final class ShapedFlow {
     public long nanosUntilNext(long nowNs) {
         pump(nowNs);
         long next = Long.MAX_VALUE;
-        if (!slots.isEmpty()) {
-            next = Math.max(0, slots.peekFirst().dueNs - nowNs);
+        for (Slot slot : slots) {
+            if (slot.dueNs - nowNs > 0) {
+                next = slot.dueNs - nowNs;
+                break;
+            }
         }
         if (granted < received) {
             next = Math.min(next, Math.max(0, lastStartNs - LOOKAHEAD_NS - nowNs));
@@ -227,23 +261,35 @@ public final class ShapedFlow {
     }
 
     /**
-     * Counts again, at the present rate and delay, the grants that have not begun (after a
-     * change), takes grants while it is this direction's turn, then marks what has fallen due.
+     * Counts again, at the present rate and delay, the grants not yet over (after a change), or
+     * fills their time to spare (bytes read while every byte held had its grant), takes grants
+     * while it is this direction's turn, then marks what has fallen due.
      */
     private void pump(long nowNs) {
         if (changed) {
             changed = false;
+            arrived = false;
             recount(nowNs);
+        } else if (arrived) {
+            arrived = false;
+            refill(nowNs);
         }
         while (granted < received && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)) {
-            Slot slot = new Slot(hop.grant(nanosFor(received - granted), nowNs), granted, carried);
+            Airtime.Grant grant = hop.grant(nanosFor(received - granted), nowNs);
+            Slot slot = new Slot(grant.startNs(), grant.endNs());
             fill(slot);
             slots.addLast(slot);
             lastStartNs = slot.startNs;
             anyGrant = true;
         }
-        while (!slots.isEmpty() && slots.peekFirst().dueNs - nowNs <= 0) {
-            released = slots.pollFirst().toOffset;
+        for (Slot slot : slots) { // in order: a byte waits for those before it
+            if (slot.dueNs - nowNs > 0) {
+                break;
+            }
+            released = Math.max(released, slot.toOffset);
+        }
+        while (!slots.isEmpty() && slots.peekFirst().dueNs - nowNs <= 0 && slots.peekFirst().endNs - nowNs <= 0) {
+            slots.pollFirst(); // kept while on the air, for a change to cut
         }
     }
 
@@ -260,40 +306,91 @@ public final class ShapedFlow {
         return Math.max(1, Math.min(Airtime.QUANTUM_NS, (needed + bitsPerSecond - 1) / bitsPerSecond));
     }
 
-    /** What {@code slot} carries at the present rate, from where the stream stands, and when it is due. */
+    /**
+     * What {@code slot} carries at the present rate, from where the stream stands, and when it is
+     * due: when its last byte is on the air (its end, or sooner when it carries every byte held
+     * with time to spare, a grant booked before a rate was raised), plus the delay.
+     */
     private void fill(Slot slot) {
+        slot.fromOffset = granted;
+        slot.fromCarried = carried;
         long bitNanos = carried + bitsPerSecond * (slot.endNs - slot.startNs);
         long bytes = Math.min(bitNanos / BYTE, received - granted);
         granted += bytes;
         carried = granted == received ? 0 : bitNanos - bytes * BYTE;
+        slot.bitsPerSecond = bitsPerSecond;
+        slot.delayNs = delayMs * 1_000_000L;
         slot.toOffset = granted;
-        slot.dueNs = slot.endNs + delayMs * 1_000_000L;
+        slot.dueNs = slot.lastOnTheAir(bytes) + slot.delayNs;
     }
 
     /**
-     * After a change of rate or delay: the grants booked but not yet begun at {@code nowNs} carry
-     * what the new rate puts in them, due after the new delay. The one on the air keeps its own.
+     * After a change of rate or delay: the grant on the air at {@code nowNs} is cut at now (what
+     * it carried until then stays, due as it was), and from now on it and the grants booked but
+     * not yet begun carry what the present rate puts in them, due after the present delay. Those
+     * that have ended keep theirs.
      */
     private void recount(long nowNs) {
-        Slot first = null;
-        for (var it = slots.descendingIterator(); it.hasNext();) {
-            Slot slot = it.next();
-            if (slot.startNs - nowNs <= 0) {
-                break;
-            }
-            first = slot;
-        }
-        if (first == null) {
+        List<Slot> all = new ArrayList<>(slots);
+        int first = firstNotOver(all, nowNs);
+        if (first == all.size()) {
             return;
         }
-        granted = first.fromOffset;
-        carried = first.fromCarried;
-        boolean counting = false;
-        for (Slot slot : slots) {
-            counting |= slot == first;
-            if (counting) {
-                fill(slot);
+        if (all.get(first).startNs - nowNs < 0) {
+            first = cut(all, first, nowNs);
+        }
+        granted = all.get(first).fromOffset;
+        carried = all.get(first).fromCarried;
+        fillFrom(all, first);
+    }
+
+    /**
+     * Bytes read while every byte held had its grant: the time the grants not yet over have to
+     * spare after the last byte held (and after now) carries them, so that grants booked at a
+     * rate since raised carry the raised rate's bytes, and no byte held waits for those read after it.
+     */
+    private void refill(long nowNs) {
+        List<Slot> all = new ArrayList<>(slots);
+        int first = firstNotOver(all, nowNs);
+        int holder = -1; // the last grant not yet over that carries bytes: those held last
+        for (int i = first; i < all.size(); i++) {
+            if (all.get(i).toOffset > all.get(i).fromOffset) {
+                holder = i;
             }
+        }
+        if (holder >= 0) {
+            Slot slot = all.get(holder);
+            long spareFrom = Math.max(nowNs, slot.lastOnTheAir(slot.toOffset - slot.fromOffset));
+            first = spareFrom - slot.endNs < 0 ? cut(all, holder, spareFrom) : holder + 1;
+        } else if (first < all.size() && all.get(first).startNs - nowNs < 0) {
+            first = cut(all, first, nowNs);
+        }
+        if (first < all.size()) {
+            fillFrom(all, first); // from granted == what was held, nothing carried
+        }
+    }
+
+    /** The index of the first of {@code all} not over at {@code nowNs}; its size if none. */
+    private static int firstNotOver(List<Slot> all, long nowNs) {
+        int first = all.size();
+        while (first > 0 && all.get(first - 1).endNs - nowNs > 0) {
+            first--;
+        }
+        return first;
+    }
+
+    /** Cuts {@code all}'s slot at {@code index} at {@code atNs}, the part after it put in the slots next: @return its index */
+    private int cut(List<Slot> all, int index, long atNs) {
+        all.add(index + 1, all.get(index).cutAt(atNs));
+        slots.clear();
+        slots.addAll(all);
+        return index + 1;
+    }
+
+    /** Fills {@code all}'s slots from {@code index} on, from where the stream stands. */
+    private void fillFrom(List<Slot> all, int index) {
+        for (int i = index; i < all.size(); i++) {
+            fill(all.get(i));
         }
     }
 }

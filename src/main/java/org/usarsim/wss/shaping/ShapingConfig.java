@@ -26,8 +26,12 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     public static final String LOSS = "wss.shaping.loss";
     /** The most a direction queues, in milliseconds of its rate (issue 27; docs/shaping.md, "The queue"). */
     public static final String QUEUE_MS = "wss.shaping.queueMs";
-    /** About what an 802.11 radio holds: a few hundred frames, 100 ms at its rate. */
-    public static final int DEFAULT_QUEUE_MS = 100;
+    /**
+     * What an 802.11 radio keeps queued under a saturating stream: Linux's mac80211 runs CoDel
+     * on each station's queues with a 20 ms target, and the WSS, which never drops a TCP byte,
+     * holds its limit as long as a stream saturates it (docs/shaping.md, "The queue").
+     */
+    public static final int DEFAULT_QUEUE_MS = 20;
     /** Below 10 ms a direction could not keep its radio busy (it books its airtime 8 ms ahead). */
     public static final int MIN_QUEUE_MS = 10;
     public static final int MAX_QUEUE_MS = 10_000;

@@ -1,7 +1,6 @@
 package org.usarsim.wss.hub.core;
 
 import java.net.InetSocketAddress;
-import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * Whether a connection accepted on a WSS port may be forwarded ({@link HubCore#admit}): null
@@ -9,5 +8,5 @@ import java.util.concurrent.atomic.AtomicReference;
  * to its target: {@code up}).
  */
 public record Admission(String refusal, InetSocketAddress target, PairStats stats,
-        AtomicReference<PairCondition> up, AtomicReference<PairCondition> down) {
+        LiveCondition up, LiveCondition down) {
 }

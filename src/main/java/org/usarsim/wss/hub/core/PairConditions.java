@@ -5,7 +5,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Function;
 import java.util.function.Predicate;
 import org.usarsim.wss.model.LinkQuality;
@@ -14,7 +13,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * Each seen pair's condition one way ({@link PairCondition}: its state and, with links shaped,
- * its rate and delay), the one value the link threads read as they forward (a live cell each),
+ * its rate and delay), the one value the link threads read as they forward (a {@link LiveCondition} each),
  * the statistics and the snapshot too; with what the model last said of each way, and which
  * ways' rates the event log has been told. Part of the {@link HubCore}, under its lock.
  */
@@ -27,7 +26,7 @@ final class PairConditions {
     private final Function<RobotPair, PairState> stateOf;
     /** What the model last said of each pair one way (with shaping on). */
     private final Map<OrderedPair, Measurement> measured = new HashMap<>();
-    private final Map<OrderedPair, AtomicReference<PairCondition>> conditions = new HashMap<>();
+    private final Map<OrderedPair, LiveCondition> conditions = new HashMap<>();
     /** The ways whose rate the event log has been told (a RATE line): each is said once, then at each change. */
     private final Set<OrderedPair> said = new HashSet<>();
 
@@ -42,7 +41,7 @@ final class PairConditions {
         for (OrderedPair way : ways(pair)) {
             if (!conditions.containsKey(way)) {
                 PairCondition condition = conditionOf(way);
-                conditions.put(way, new AtomicReference<>(condition));
+                conditions.put(way, new LiveCondition(condition));
                 if (condition.shaped() && measured.containsKey(way)) { // otherwise said at the first measurement
                     said.add(way);
                     out.add(new HubEvent.RateChanged(way, condition.bitsPerSecond()));
@@ -52,7 +51,7 @@ final class PairConditions {
     }
 
     /** The live cell of a seen pair's condition one way. */
-    AtomicReference<PairCondition> cell(OrderedPair way) {
+    LiveCondition cell(OrderedPair way) {
         return conditions.get(way);
     }
 
@@ -85,10 +84,10 @@ final class PairConditions {
     /** Recomputes the pair's conditions both ways (those kept); a rate that changed is said. */
     void refresh(RobotPair pair, Changes out) {
         for (OrderedPair way : ways(pair)) {
-            AtomicReference<PairCondition> cell = conditions.get(way);
+            LiveCondition cell = conditions.get(way);
             if (cell != null) {
                 PairCondition now = conditionOf(way);
-                PairCondition before = cell.getAndSet(now);
+                PairCondition before = cell.set(now);
                 boolean firstSaid = measured.containsKey(way) && !said.contains(way);
                 if (now.shaped() && (now.bitsPerSecond() != before.bitsPerSecond() || firstSaid)) {
                     said.add(way);

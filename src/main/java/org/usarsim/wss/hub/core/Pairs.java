@@ -4,7 +4,6 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.Predicate;
 import java.util.logging.Level;
 import org.usarsim.wss.model.RobotPair;
@@ -65,7 +64,7 @@ final class Pairs {
     }
 
     /** The live cell of a seen pair's condition one way. */
-    AtomicReference<PairCondition> condition(OrderedPair way) {
+    LiveCondition condition(OrderedPair way) {
         return conditions.cell(way);
     }
 

@@ -1,8 +1,7 @@
 package org.usarsim.wss.hub.tcp;
 
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.LongSupplier;
-import org.usarsim.wss.hub.core.PairCondition;
+import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -10,6 +9,6 @@ import org.usarsim.wss.shaping.Airtime;
  * core's one value per ordered pair, {@code up} from the port's source to its target), the
  * robots' radios, the clock, and each direction's queue ({@code wss.shaping.queueMs}).
  */
-public record Shaping(Airtime airtime, AtomicReference<PairCondition> up, AtomicReference<PairCondition> down,
+public record Shaping(Airtime airtime, LiveCondition up, LiveCondition down,
         LongSupplier clock, int queueMs) {
 }

@@ -10,11 +10,11 @@ import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.List;
-import java.util.concurrent.atomic.AtomicReference;
 import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.FixedPort;
+import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.UdpCounts;
 import org.usarsim.wss.shaping.Airtime;
@@ -25,7 +25,8 @@ import org.usarsim.wss.shaping.DatagramFlow;
  * relays. A datagram from a sender goes to the target from the sender's session socket
  * ({@link UdpSessions}), the target's answers to that socket go back to the sender from the fixed
  * port. Each way reads the pair's condition live: broken, a datagram is dropped (counted); shaped,
- * it goes through its direction's {@link DatagramFlow} (queue, rate, delay, loss); unshaped, at once.
+ * it goes through its direction's {@link DatagramFlow} (queue, rate, delay, loss), whose datagrams
+ * still queued take a new rate at once (a change wakes the thread: {@link LiveCondition}); unshaped, at once.
  */
 public final class UdpRelay implements AutoCloseable {
 
@@ -44,7 +45,7 @@ public final class UdpRelay implements AutoCloseable {
     }
 
     /** The pair's side of the relay: conditions and counters each way, from the hub's core. */
-    public record Pair(AtomicReference<PairCondition> up, AtomicReference<PairCondition> down, UdpCounts upCounts, UdpCounts downCounts) {
+    public record Pair(LiveCondition up, LiveCondition down, UdpCounts upCounts, UdpCounts downCounts) {
     }
 
     private final FixedPort port;
@@ -131,8 +132,12 @@ public final class UdpRelay implements AutoCloseable {
     }
 
     private void run() {
+        Runnable wake = selector::wakeup;
+        pair.up().watch(wake); // before the first reading of the conditions: no change is missed
+        pair.down().watch(wake);
         try {
             while (!closed) {
+                follow();
                 long now = clock.getAsLong();
                 long waitNs;
                 synchronized (sessions) {
@@ -163,8 +168,22 @@ public final class UdpRelay implements AutoCloseable {
                 LOG.log(Level.WARNING, "fixed UDP port " + port.number() + " (" + port + ") stopped: " + e, e);
             }
         } finally {
+            pair.up().unwatch(wake);
+            pair.down().unwatch(wake);
             reportCounts();
             closeAll();
+        }
+    }
+
+    /** A shaped pair's conditions now, for the datagrams each way still queues. */
+    private void follow() {
+        PairCondition up = pair.up().get();
+        if (up.shaped()) {
+            forward.setConditions(up.bitsPerSecond(), up.delayMs(), up.lossPercent());
+        }
+        PairCondition down = pair.down().get();
+        if (down.shaped()) {
+            back.setConditions(down.bitsPerSecond(), down.delayMs(), down.lossPercent());
         }
     }
 

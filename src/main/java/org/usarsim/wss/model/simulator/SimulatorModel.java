@@ -33,8 +33,8 @@ public abstract class SimulatorModel extends PollingModel {
     private static final long MAX_BACKOFF_MS = 10_000;
 
     /** Where the positions come from: the values of {@code positions}. */
-    static final String USARSIM = "usarsim";
-    static final String ROSBRIDGE = "rosbridge";
+    public static final String USARSIM = "usarsim";
+    public static final String ROSBRIDGE = "rosbridge";
 
     /**
      * The settings of every simulator model: where the positions come from (positions.*, the

@@ -4,21 +4,25 @@ import java.io.IOException;
 import java.io.Writer;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 import java.util.logging.Logger;
 
 /**
  * A file written by one thread of its own from a bounded queue: the one rule of the CSV event log
  * and the recording (docs/architecture.md, Threads). The threads that fire events only offer an
- * item and go on: they never take a lock of the writer's or wait for the disk; when the queue is
- * full the item is counted as dropped. The writer takes what is queued, in order, formats it and
- * writes it, flushing whenever it has caught up (so the file is current while it is open); once
- * caught up it lets the next items gather for 20 ms, so that a busy source costs it one wake-up
- * and one write per batch rather than per item. After a batch in which items were dropped, the
- * format writes how many. {@link #close} queues the end and waits (at most 10 s, for a disk that
+ * item and go on: they never take a lock or wait for the disk, and wake the writer only when it
+ * sleeps for want of items (not while it gathers them); when the queue is full the item is counted
+ * as dropped. A link offers one per chunk it forwards, so an offer is one count, one node added to
+ * a lock-free queue and one read of whether the writer sleeps (docs/performance.md, "The CSV event
+ * log"). The writer takes what is queued, in order, formats it and writes it, flushing whenever
+ * it has caught up (so the file is current while it is open); once caught up it lets the next
+ * items gather for 20 ms, so that a busy source costs it one wake-up and one write per batch
+ * rather than per item. After a batch in which items were dropped, the format writes how many. {@link #close} queues the end and waits (at most 10 s, for a disk that
  * hangs) until everything before it is written and the file closed. A disk that fails is said
  * once; then nothing more is written.
  *
@@ -49,8 +53,14 @@ public final class QueuedWriter<T> implements AutoCloseable {
     private final String what;
     private final Writer out;
     private final Format<T> format;
-    private final BlockingQueue<Object> queue;
+    /** The items in the order they were offered, and {@link #END}; at most {@code capacity} items. */
+    private final Queue<Object> queue = new ConcurrentLinkedQueue<>();
+    private final int capacity;
+    /** How many items are in {@link #queue}: taken by an offer, given back by the writer. */
+    private final AtomicInteger queued = new AtomicInteger();
     private final AtomicLong dropped = new AtomicLong();
+    /** The writer found the queue empty and sleeps (or is about to) until an offer wakes it. */
+    private volatile boolean sleeping;
     private final Thread writer;
     private volatile boolean closed;
     /** Set by the writer when the file cannot be written; items are then ignored. */
@@ -66,7 +76,7 @@ public final class QueuedWriter<T> implements AutoCloseable {
         this.what = what;
         this.out = out;
         this.format = format;
-        this.queue = new ArrayBlockingQueue<>(capacity);
+        this.capacity = capacity;
         this.writer = new Thread(this::writeUntilClosed, threadName);
         writer.setDaemon(true);
         writer.start();
@@ -80,11 +90,54 @@ public final class QueuedWriter<T> implements AutoCloseable {
         if (closed || failed) {
             return false;
         }
-        if (!queue.offer(item)) {
+        if (queued.getAndIncrement() >= capacity) {
+            queued.decrementAndGet();
             dropped.incrementAndGet();
             return false;
         }
+        queue.offer(item);
+        wake();
         return true;
+    }
+
+    /** After an item is queued: wakes the writer if it sleeps for want of one. */
+    private void wake() {
+        if (sleeping) {
+            LockSupport.unpark(writer);
+        }
+    }
+
+    /**
+     * The writer: the next item, sleeping until there is one. It says it sleeps before it looks
+     * a last time, and an offer queues before it looks whether the writer sleeps, so one of the
+     * two sees the other: no item is left waiting while the writer sleeps.
+     */
+    private Object next() throws InterruptedException {
+        Object item = queue.poll();
+        while (item == null) {
+            sleeping = true;
+            item = queue.poll();
+            if (item == null) {
+                LockSupport.park(this);
+                if (Thread.interrupted()) {
+                    throw new InterruptedException();
+                }
+                item = queue.poll();
+            }
+            sleeping = false;
+        }
+        return item;
+    }
+
+    /** The writer: up to {@code max} more items that are queued now, in order. */
+    private void drainTo(List<Object> batch, int max) {
+        for (int i = 0; i < max; i++) {
+            Object item = queue.poll();
+            if (item == null) {
+                return;
+            }
+            batch.add(item);
+        }
     }
 
     /** Counts an item its source would not queue (the recording's cap on queued polls). */
@@ -106,18 +159,21 @@ public final class QueuedWriter<T> implements AutoCloseable {
         boolean caughtUp = true;
         try {
             while (!end) {
-                batch.add(queue.take());
+                batch.add(next());
                 if (caughtUp && batch.get(0) != END) {
                     Thread.sleep(GATHER_MS);
                 }
-                queue.drainTo(batch, BATCH - 1);
+                drainTo(batch, BATCH - 1);
+                int items = 0;
                 for (Object item : batch) {
                     if (item == END) {
                         end = true;
                         break;
                     }
                     format.append(text, (T) item);
+                    items++;
                 }
+                queued.addAndGet(-items);
                 batch.clear();
                 long lost = dropped.getAndSet(0);
                 if (lost > 0) {
@@ -170,11 +226,10 @@ public final class QueuedWriter<T> implements AutoCloseable {
             }
             closed = true;
         }
+        queue.offer(END); // beyond the capacity, which bounds the items alone
+        wake();
         try {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(CLOSE_WAIT_SECONDS);
-            if (queue.offer(END, CLOSE_WAIT_SECONDS, TimeUnit.SECONDS)) {
-                writer.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
-            }
+            writer.join(TimeUnit.SECONDS.toMillis(CLOSE_WAIT_SECONDS));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

@@ -124,6 +124,23 @@ record ProcessStats(int threads, int serverThreads, int descriptors, long reside
         return text.toString();
     }
 
+    /** Time on a CPU (schedstat, ns) of the process's threads alive now whose name starts with {@code name}. */
+    static long threadCpuNanos(long pid, String name) throws IOException {
+        long nanos = 0;
+        try (Stream<Path> tasks = Files.list(Path.of("/proc", Long.toString(pid), "task"))) {
+            for (Path task : tasks.toList()) {
+                if (comm(task).startsWith(name)) {
+                    try {
+                        nanos += Long.parseLong(Files.readString(task.resolve("schedstat")).strip().split(" ")[RUN_NANOS]);
+                    } catch (IOException | RuntimeException e) {
+                        // the thread ended while we looked, or the kernel keeps no schedstat
+                    }
+                }
+            }
+        }
+        return nanos;
+    }
+
     /** The process's CPU time so far (user and system), in seconds. */
     static double cpuSeconds(long pid) throws IOException {
         return cpuNanos(pid) / 1e9;

@@ -31,6 +31,9 @@ import java.util.regex.Pattern;
 public final class RelayBenchmark {
 
     private static final Pattern RECEIVED_BPS = Pattern.compile("\"sum_received\"\\s*:\\s*\\{[^}]*\"bits_per_second\"\\s*:\\s*([0-9.eE+]+)");
+    /** The CPU the iperf3 client and server used, in percent of one CPU over the run. */
+    private static final Pattern CLIENT_CPU = Pattern.compile("\"host_total\"\\s*:\\s*([0-9.eE+]+)");
+    private static final Pattern SERVER_CPU = Pattern.compile("\"remote_total\"\\s*:\\s*([0-9.eE+]+)");
 
     private final int seconds;
     private final int runs;
@@ -190,55 +193,164 @@ public final class RelayBenchmark {
 
     /** MB/s received by all of {@code streams} parallel connections together, from iperf3's JSON. */
     private double iperfClient(int port, int streams) throws Exception {
+        return iperfResult(iperfJson(port, streams), RECEIVED_BPS) / 8 / 1e6;
+    }
+
+    /** iperf3's JSON report of {@code streams} parallel connections to the port for {@code --seconds}. */
+    private String iperfJson(int port, int streams) throws Exception {
         Process client = child("iperf3", "-c", "127.0.0.1", "-p", Integer.toString(port), "-t", Integer.toString(seconds), "-J",
                 "-P", Integer.toString(streams));
         String json = new String(client.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
         client.waitFor(seconds + 30L, TimeUnit.SECONDS);
-        Matcher matcher = RECEIVED_BPS.matcher(json);
+        return json;
+    }
+
+    private static double iperfResult(String json, Pattern field) throws IOException {
+        Matcher matcher = field.matcher(json);
         if (!matcher.find()) {
             throw new IOException("no iperf3 result: " + json);
         }
-        return Double.parseDouble(matcher.group(1)) / 8 / 1e6;
+        return Double.parseDouble(matcher.group(1));
     }
 
     // ---- the event log: the same streams with wss.eventLog off and on ----
 
+    /** How many pairs of runs each pair of servers makes before both are started again. */
+    private static final int PAIRS_PER_SERVERS = 5;
+
     private void eventLog() throws Exception {
         Path logs = Files.createTempDirectory("wss-bench-event-log");
-        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs, alternating which goes first)%n%n",
+        System.out.printf("%n## The CSV event log: throughput with wss.eventLog=false and true (iperf3, %d s, %d pairs of runs, ABBA)%n%n",
                 seconds, runs);
+        System.out.println("load average before: " + loadAverage());
         try {
             eventLogPairs(logs);
         } finally {
+            System.out.println("load average after: " + loadAverage());
             reportAndDelete(logs);
         }
     }
 
+    /**
+     * Pairs of runs, one through each server, alternating which goes first (off-on, on-off, ...),
+     * so that a machine whose load drifts favours neither; both servers are started afresh every
+     * {@link #PAIRS_PER_SERVERS} pairs, so that what one JVM happens to be (how it compiled the
+     * forwarding loop, where its memory lies) favours neither either; the ratio on/off is taken per pair and
+     * its median given with a 95 % interval ({@link PairedRatios}). Beside the throughput, the CPU
+     * each server spent per GB forwarded (all its threads, from /proc), which other processes' load
+     * moves less than the throughput, and the event log's writer thread's. Last, what the log would
+     * cost when the CPU is what limits the streams (2 cores shared by the WSS and iperf3's client and
+     * server, as on the development machine): its writer's CPU per GB as a share of all the CPU the
+     * machine spends per GB without the log (the WSS's and iperf3's, which reports its own).
+     */
     private void eventLogPairs(Path logs) throws Exception {
-        try (WssProcess off = WssProcess.start("wss.eventLog=false");
-                WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
-            iperfThroughWss(off, 8); // unmeasured: both servers warm, as after a while of a real run
-            iperfThroughWss(on, 8);
-            System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off (median of the pairs) |");
-            System.out.println("|---|---|---|---|---|");
-            for (int streams : new int[] {1, 8}) {
-                double[] offRuns = new double[runs];
-                double[] onRuns = new double[runs];
-                double[] ratios = new double[runs];
-                for (int run = 0; run < runs; run++) {
-                    if (run % 2 == 0) {
-                        offRuns[run] = iperfThroughWss(off, streams);
-                        onRuns[run] = iperfThroughWss(on, streams);
-                    } else {
-                        onRuns[run] = iperfThroughWss(on, streams);
-                        offRuns[run] = iperfThroughWss(off, streams);
-                    }
-                    ratios[run] = onRuns[run] / offRuns[run];
+        int[] streamCounts = {1, 8};
+        Measured[][] offRuns = new Measured[streamCounts.length][runs];
+        Measured[][] onRuns = new Measured[streamCounts.length][runs];
+        for (int first = 0; first < runs; first += PAIRS_PER_SERVERS) {
+            try (WssProcess off = WssProcess.start("wss.eventLog=false");
+                    WssProcess on = WssProcess.start("wss.eventLog=true", "wss.eventLogDir=" + logs)) {
+                for (int streams : new int[] {8, 1}) { // unmeasured: both servers warm and compiled, as after a while of a real run
+                    iperfThroughWss(off, streams);
+                    iperfThroughWss(on, streams);
                 }
-                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%.2fx** |%n", streams, median(offRuns), median(onRuns),
-                        ratios(ratios), median(ratios));
+                for (int s = 0; s < streamCounts.length; s++) {
+                    for (int run = first; run < Math.min(runs, first + PAIRS_PER_SERVERS); run++) {
+                        if (run % 2 == 0) {
+                            offRuns[s][run] = measuredThroughWss(off, streamCounts[s]);
+                            onRuns[s][run] = measuredThroughWss(on, streamCounts[s]);
+                        } else {
+                            onRuns[s][run] = measuredThroughWss(on, streamCounts[s]);
+                            offRuns[s][run] = measuredThroughWss(off, streamCounts[s]);
+                        }
+                    }
+                }
             }
         }
+        System.out.println("| links at once | log off MB/s (median) | log on MB/s (median) | on/off per pair | on/off: median of the pairs |");
+        System.out.println("|---|---|---|---|---|");
+        for (int s = 0; s < streamCounts.length; s++) {
+            double[] ratios = new double[runs];
+            for (int run = 0; run < runs; run++) {
+                ratios[run] = onRuns[s][run].mbPerSecond / offRuns[s][run].mbPerSecond;
+            }
+            System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %s | **%s** |%n", streamCounts[s], median(Measured.mbPerSecond(offRuns[s])),
+                    median(Measured.mbPerSecond(onRuns[s])), ratios(ratios), new PairedRatios(ratios).summary());
+        }
+        System.out.println();
+        System.out.println("| links at once | log off: the WSS's CPU s per GB (median) | log on | on/off per pair: median "
+                + "| the log's writer thread, CPU s per GB | log off: the WSS's and iperf3's CPU s per GB "
+                + "| on/off if the CPU is the limit: 1 - writer / all |");
+        System.out.println("|---|---|---|---|---|---|---|");
+        for (int s = 0; s < streamCounts.length; s++) {
+            double[] cpuRatios = new double[runs];
+            for (int run = 0; run < runs; run++) {
+                cpuRatios[run] = onRuns[s][run].cpuPerGb() / offRuns[s][run].cpuPerGb();
+            }
+            double writerPerGb = median(Measured.writerPerGb(onRuns[s]));
+            double allPerGb = median(Measured.allCpuPerGb(offRuns[s]));
+            System.out.printf(Locale.ROOT, "| %d | %.3f | %.3f | %s | %.3f | %.2f | %.3f |%n", streamCounts[s],
+                    median(Measured.cpuPerGb(offRuns[s])), median(Measured.cpuPerGb(onRuns[s])), new PairedRatios(cpuRatios).summary(),
+                    writerPerGb, allPerGb, 1 - writerPerGb / allPerGb);
+        }
+    }
+
+    /**
+     * One run through a server: MB/s, GB forwarded, and the CPU seconds the server, its event log's
+     * writer thread, and iperf3's client and server together spent in it.
+     */
+    private record Measured(double mbPerSecond, double gigabytes, double cpuSeconds, double writerSeconds, double iperfSeconds) {
+
+        double cpuPerGb() {
+            return cpuSeconds / gigabytes;
+        }
+
+        /** The machine's work per GB for this path: the WSS's CPU and iperf3's. */
+        double allCpuPerGb() {
+            return (cpuSeconds + iperfSeconds) / gigabytes;
+        }
+
+        static double[] allCpuPerGb(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(Measured::allCpuPerGb).toArray();
+        }
+
+        static double[] mbPerSecond(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(Measured::mbPerSecond).toArray();
+        }
+
+        static double[] cpuPerGb(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(Measured::cpuPerGb).toArray();
+        }
+
+        static double[] writerPerGb(Measured[] runs) {
+            return Arrays.stream(runs).mapToDouble(run -> run.writerSeconds / run.gigabytes).toArray();
+        }
+    }
+
+    /** As {@link #iperfThroughWss(WssProcess, int)}, with the server's CPU read from /proc just before and after the stream. */
+    private Measured measuredThroughWss(WssProcess wss, int streams) throws Exception {
+        IperfServer iperf = iperfServer();
+        Process server = iperf.process();
+        try (ControlClient sink = new ControlClient(wss.controlPort, "Sink", iperf.port());
+                ControlClient source = new ControlClient(wss.controlPort, "Source", 1)) {
+            int port = source.dns("Sink");
+            long cpu = ProcessStats.cpuNanos(wss.pid());
+            long writer = ProcessStats.threadCpuNanos(wss.pid(), "wss-event-log");
+            String json = iperfJson(port, streams);
+            double wssSeconds = (ProcessStats.cpuNanos(wss.pid()) - cpu) / 1e9;
+            double writerSeconds = (ProcessStats.threadCpuNanos(wss.pid(), "wss-event-log") - writer) / 1e9;
+            double mbPerSecond = iperfResult(json, RECEIVED_BPS) / 8 / 1e6;
+            double iperfSeconds = (iperfResult(json, CLIENT_CPU) + iperfResult(json, SERVER_CPU)) / 100 * seconds;
+            return new Measured(mbPerSecond, mbPerSecond * seconds / 1000, wssSeconds, writerSeconds, iperfSeconds);
+        } finally {
+            stop(server);
+        }
+    }
+
+    /** The machine's load average over 1, 5 and 15 minutes, as /proc/loadavg says. */
+    private static String loadAverage() throws IOException {
+        String[] fields = Files.readString(Path.of("/proc/loadavg")).split(" ");
+        return fields[0] + ", " + fields[1] + ", " + fields[2];
     }
 
     // ---- recording: the same streams with wss.record off and on ----

@@ -5,10 +5,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.IOException;
 import java.io.InputStream;
-import java.io.StringWriter;
-import java.io.Writer;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
@@ -16,9 +13,9 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import org.usarsim.wss.StuckWriter;
 import org.usarsim.wss.model.WssEventListener;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -82,41 +79,6 @@ class EventLogTest {
                     assertTrue(lines.get(i).matches(expected[i]), lines.get(i) + " !~ " + expected[i]);
                 }
             }
-        }
-    }
-
-    /** A writer that blocks in every write until released, as a disk that hangs; what it was given is in {@link #text}. */
-    private static final class StuckWriter extends Writer {
-        final CountDownLatch stuck = new CountDownLatch(1);
-        final CountDownLatch release = new CountDownLatch(1);
-        final StringWriter text = new StringWriter();
-        volatile boolean closed;
-
-        @Override
-        public void write(char[] chars, int offset, int length) throws IOException {
-            stuck.countDown();
-            try {
-                if (!release.await(30, TimeUnit.SECONDS)) {
-                    throw new IOException("never released");
-                }
-            } catch (InterruptedException e) {
-                throw new IOException(e);
-            }
-            text.write(chars, offset, length);
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-            closed = true;
-        }
-
-        List<String> lines() {
-            String all = text.toString();
-            return all.isEmpty() ? List.of() : List.of(all.split(System.lineSeparator()));
         }
     }
 
@@ -235,12 +197,15 @@ class EventLogTest {
         log.robotRegistered("E,1", "127.0.0.1", List.of(5000));
         log.connectionEstablished("say \"hi\"", "line\rend", 5000);
         log.pairForced("A\nB", "plain", true);
+        log.dataSent("a,b", "E\u001B", 65536);
         log.close();
         String text = writer.text.toString();
         List<String> lines = List.of(text.split(System.lineSeparator()));
         assertTrue(lines.get(0).matches("REGISTERED,[\\d:.]+,\"E,1\",127\\.0\\.0\\.1,5000"), lines.get(0));
         assertTrue(lines.get(1).matches("CON_ESTABLISHED,[\\d:.]+,\"say \"\"hi\"\"\",line\\\\u000Dend,5000"), lines.get(1));
         assertTrue(text.contains(",\"A\nB\",plain,UP" + System.lineSeparator()), text);
+        assertTrue(text.matches("(?s).*" + System.lineSeparator() + "DATA_SENT,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},\"a,b\",E\\\\u001B,65536"
+                + System.lineSeparator()), "a DATA_SENT's names as every line's: " + text);
         StringBuilder plain = new StringBuilder();
         CsvEventLog.appendField(plain, "R1");
         assertEquals("R1", plain.toString(), "a name that needs nothing is written as it is");

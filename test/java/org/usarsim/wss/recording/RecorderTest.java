@@ -9,7 +9,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.StringWriter;
 import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -22,7 +21,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Handler;
@@ -34,6 +32,7 @@ import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
+import org.usarsim.wss.StuckWriter;
 import org.usarsim.wss.Version;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.Position;
@@ -255,33 +254,9 @@ class RecorderTest {
         assertEquals(List.of(new Entry.End(0)), RecordingReader.read(file).events());
     }
 
-    /** A file that takes what it is given only once the test opens its gate. */
-    private static final class GatedWriter extends Writer {
-        final CountDownLatch gate = new CountDownLatch(1);
-        final StringWriter written = new StringWriter();
-
-        @Override
-        public void write(char[] text, int offset, int length) throws IOException {
-            try {
-                gate.await();
-            } catch (InterruptedException e) {
-                throw new IOException(e);
-            }
-            written.write(text, offset, length);
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    }
-
     @Test
     void aFullQueueIsCountedAsDroppedAndNeverStallsTheCaller() throws Exception {
-        GatedWriter out = new GatedWriter();
+        StuckWriter out = new StuckWriter();
         Recorder recorder = new Recorder(dir.resolve("slow.rec"), out, now::get, 8);
         long before = System.nanoTime();
         for (int i = 0; i < 1000; i++) {
@@ -290,11 +265,11 @@ class RecorderTest {
         }
         long tookMs = (System.nanoTime() - before) / MS;
         assertTrue(tookMs < 2000, "1,000 events offered to a writer that cannot write in " + tookMs + " ms");
-        out.gate.countDown();
+        out.release.countDown();
         at(5000);
         recorder.close();
         List<Entry> entries = new ArrayList<>();
-        for (String line : out.written.toString().split("\n")) {
+        for (String line : out.text.toString().split("\n")) {
             entries.add(((EntryLines.Whole) EntryLines.read(line)).entry());
         }
         long registered = entries.stream().filter(e -> e instanceof Entry.Registered).count();
@@ -306,15 +281,15 @@ class RecorderTest {
 
     @Test
     void manyPollsQueuedAreDroppedBeforeTheyFillTheMemory() throws Exception {
-        GatedWriter out = new GatedWriter();
+        StuckWriter out = new StuckWriter();
         Recorder recorder = new Recorder(dir.resolve("slow.rec"), out, now::get, Recorder.QUEUE_CAPACITY);
         int polls = Recorder.MAX_QUEUED_POLLS + 100;
         for (int i = 0; i < polls; i++) {
             recorder.polled(poll(i, List.of(), List.of()));
         }
-        out.gate.countDown();
+        out.release.countDown();
         recorder.close();
-        String text = out.written.toString();
+        String text = out.text.toString();
         long written = text.lines().filter(line -> line.contains(" poll ")).count();
         long dropped = text.lines().filter(line -> line.contains(" dropped ")).mapToLong(line -> Long.parseLong(line.split(" ")[2])).sum();
         assertTrue(written <= Recorder.MAX_QUEUED_POLLS + 1, written + " polls written");

@@ -96,6 +96,7 @@ final class WssProcess implements AutoCloseable {
     /** @param descriptors the process's limit of open descriptors; 0 keeps the shell's */
     static WssProcess start(String classpath, int descriptors, String... properties) throws IOException, InterruptedException {
         Path config = Files.createTempFile("wss-bench", ".properties");
+        config.toFile().deleteOnExit(); // the server reads it at its start; the benchmark outlives it
         List<String> lines = new ArrayList<>(List.of("wss.bindAddress=127.0.0.1", "wss.port=0", "wss.logLevel=INFO"));
         lines.addAll(List.of(properties));
         String more = System.getProperty("wss.bench.properties", "").trim();

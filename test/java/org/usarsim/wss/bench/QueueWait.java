@@ -66,6 +66,15 @@ public final class QueueWait {
             }
             return;
         }
+        if (args.length == 3 && args[0].equals("loopback")) {
+            try (Receiver receiver = new Receiver(InetAddress.getLoopbackAddress())) {
+                Mark[] marked = send(new InetSocketAddress(InetAddress.getLoopbackAddress(), receiver.port()), Integer.parseInt(args[2]));
+                for (Wait wait : receiver.waits(marked, Long.parseLong(args[1]))) {
+                    System.out.println("WAIT " + wait.nanos() + " " + wait.sendersOwnNanos());
+                }
+            }
+            return;
+        }
         List<String> rates = args.length == 0 ? List.of("1M", "6M", "24M") : List.of(args);
         boolean veth = vethPossible();
         for (int sendBuffer : new int[] {0, 64 * 1024}) {
@@ -113,15 +122,18 @@ public final class QueueWait {
                 + " (not yet sent, at the rate); WSS: delay 2 ms, "
                 + System.getProperty("wss.bench.properties", "the default queue").strip() + "; tbf: latency 100ms.");
         System.out.println();
-        System.out.println("| rate | WSS, robots on loopback | WSS, sender across a veth | tbf on the veth | WSS across the veth / tbf"
-                + " (medians) | WSS across the veth: the wait less the sender's own part (median), s |");
-        System.out.println("|---|---|---|---|---|---|");
+        System.out.println("| rate | WSS, robots on loopback | tbf on a loopback (a namespace's) | WSS / tbf on loopback (medians)"
+                + " | WSS, sender across a veth | tbf on the veth | WSS across the veth / tbf (medians)"
+                + " | WSS across the veth: the wait less the sender's own part (median), s |");
+        System.out.println("|---|---|---|---|---|---|---|---|");
         for (String rate : rates) {
             long bits = Bitrate.parse(rate);
             Wait[] loopback = throughWss(rate, sendBuffer);
+            Wait[] tbfLoopback = veth ? throughTbfOnLoopback(rate, sendBuffer) : null;
             Wait[] acrossVeth = veth ? throughWssAcrossVeth(rate, sendBuffer) : null;
             Wait[] viaTbf = veth ? throughTbf(rate, sendBuffer) : null;
-            System.out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s |%n", Bitrate.format(bits), seconds(loopback),
+            System.out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s | %s |%n", Bitrate.format(bits), seconds(loopback),
+                    veth ? seconds(tbfLoopback) : "(no tbf here)", veth ? ratio(loopback, tbfLoopback) : "",
                     veth ? seconds(acrossVeth) : "(no veth here)", veth ? seconds(viaTbf) : "(no tbf here)",
                     veth ? ratio(acrossVeth, viaTbf) : "", veth && Arrays.stream(acrossVeth).allMatch(Wait::arrived)
                             ? String.format(Locale.ROOT, "%.3f", median(acrossVeth, Wait::pathNanos) / 1e9) : "");
@@ -189,27 +201,60 @@ public final class QueueWait {
         }
     }
 
+    /**
+     * Through tbf at {@code rate} on the namespace's own loopback: sender and receiver are one JVM
+     * in the namespace, on 127.0.0.1, so the sender's kernel sees loopback (64 KiB segments) as
+     * the WSS's loopback robots do. The burst holds one such segment.
+     */
+    private static Wait[] throughTbfOnLoopback(String rate, int sendBuffer) throws Exception {
+        long bits = Bitrate.parse(rate);
+        try (Veth path = Veth.create()) {
+            long burst = Math.max(70_000, bits / 8 / 100); // 10 ms at the rate, a loopback segment at least
+            run("ip", "netns", "exec", NAMESPACE, "tc", "qdisc", "add", "dev", "lo", "root", "tbf", "rate", bits + "bit",
+                    "burst", String.valueOf(burst), "latency", "100ms");
+            List<Wait> waits = new ArrayList<>();
+            for (String line : inNamespaceLines("loopback", String.valueOf(bits), String.valueOf(sendBuffer))) {
+                if (line.startsWith("WAIT ")) {
+                    String[] fields = line.split(" ");
+                    waits.add(new Wait(Long.parseLong(fields[1]), Long.parseLong(fields[2])));
+                }
+            }
+            return waits.toArray(new Wait[0]);
+        }
+    }
+
     /** Runs this class in the namespace with {@code args}; @return the marks it printed. */
     private static Mark[] inNamespace(String... args) throws IOException, InterruptedException {
+        List<Mark> marked = new ArrayList<>();
+        for (String line : inNamespaceLines(args)) {
+            if (line.startsWith("MARK ")) {
+                String[] fields = line.split(" ");
+                marked.add(new Mark(Long.parseLong(fields[1]), Long.parseLong(fields[2])));
+            }
+        }
+        return marked.toArray(new Mark[MARKERS]);
+    }
+
+    /** Runs this class in the namespace with {@code args}; @return its MARK and WAIT lines (the others are printed). */
+    private static List<String> inNamespaceLines(String... args) throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of("ip", "netns", "exec", NAMESPACE,
                 Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp", System.getProperty("java.class.path"),
                 QueueWait.class.getName()));
         command.addAll(List.of(args));
         Process sender = new ProcessBuilder(command).redirectErrorStream(true).start();
-        List<Mark> marked = new ArrayList<>();
+        List<String> lines = new ArrayList<>();
         try (BufferedReader out = new BufferedReader(new InputStreamReader(sender.getInputStream(), StandardCharsets.UTF_8))) {
             String line;
             while ((line = out.readLine()) != null) {
-                if (line.startsWith("MARK ")) {
-                    String[] fields = line.split(" ");
-                    marked.add(new Mark(Long.parseLong(fields[1]), Long.parseLong(fields[2])));
+                if (line.startsWith("MARK ") || line.startsWith("WAIT ")) {
+                    lines.add(line);
                 } else {
                     System.out.println("sender: " + line);
                 }
             }
         }
-        sender.waitFor(30, TimeUnit.SECONDS);
-        return marked.toArray(new Mark[MARKERS]);
+        sender.waitFor(90, TimeUnit.SECONDS);
+        return lines;
     }
 
     /** A veth pair of the benchmark's own, one end in its namespace; closing removes both. */

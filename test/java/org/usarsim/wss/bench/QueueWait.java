@@ -32,7 +32,8 @@ import org.usarsim.wss.shaping.Bitrate;
  * arrival, on one clock (System.nanoTime is CLOCK_MONOTONIC, the same for every process). The
  * sender's own kernel's part of it (what it held not yet sent, sampled by ss) is shown beside.
  *
- * <p>Three paths: the WSS with both robots on loopback (64 KiB segments); the WSS with the
+ * <p>Four paths: the WSS with both robots on loopback (64 KiB segments); tbf on the namespace's own
+ * loopback (sender and receiver one JVM there); the WSS with the
  * sending robot across a veth pair (a JVM in a network namespace, {@code wssq-bench}, addresses
  * 10.213.27.1 and .2; the WSS listens on .1); tbf on that veth, its sender the same. The veth
  * needs root, {@code ip} and {@code tc}, and is removed after each run. The WSS runs use

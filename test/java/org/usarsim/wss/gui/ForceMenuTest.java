@@ -12,16 +12,11 @@ import static org.usarsim.wss.hub.Sockets.assertClosedByPeer;
 
 import java.awt.Color;
 import java.awt.Window;
-import java.awt.event.WindowEvent;
 import java.net.ConnectException;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.logging.Logger;
-import java.util.prefs.Preferences;
 import javax.swing.JButton;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
@@ -58,11 +53,10 @@ import org.usarsim.wss.shaping.ShapingConfig;
 @Tag("slow")
 class ForceMenuTest {
 
+    private OpenWindow window;
     private HubServers servers;
-    private Preferences preferences;
     private WindowLog windowLog;
     private JFrame frame;
-    private CountDownLatch closed;
     private ForceMenu menu;
 
 
@@ -78,25 +72,17 @@ class ForceMenuTest {
 
     /** The main window, its servers hubs of this configuration, and a menu on them. */
     private void open(HubConfig config) throws Exception {
-        servers = new HubServers(config);
-        preferences = TestPreferences.create();
-        windowLog = new WindowLog();
-        Logger.getLogger("").addHandler(windowLog);
-        CountDownLatch windowClosed = new CountDownLatch(1);
-        closed = windowClosed;
-        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new)),
-                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
-                windowLog, new Launch("0", "NoopPropagationModel", false, null, false), windowClosed::countDown).frame());
+        window = new OpenWindow(config, List.of(ModelProvider.of(NoopPropagationModel::new)), "NoopPropagationModel");
+        servers = window.servers;
+        windowLog = window.windowLog;
+        frame = window.frame;
         menu = onEdt(() -> new ForceMenu(servers::running));
     }
 
     @AfterEach
     void close() throws Exception {
         run(menu::close);
-        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
-        assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
-        Logger.getLogger("").removeHandler(windowLog);
-        TestPreferences.remove(preferences);
+        window.close();
     }
 
     /** Clicks the menu's item whose text starts so, as a user's click does. */

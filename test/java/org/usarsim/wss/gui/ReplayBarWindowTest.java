@@ -12,14 +12,9 @@ import static org.usarsim.wss.gui.Gui.until;
 import java.awt.event.InputEvent;
 import java.awt.event.KeyEvent;
 import java.awt.event.MouseEvent;
-import java.awt.event.WindowEvent;
 import java.net.ServerSocket;
 import java.util.List;
 import java.util.Optional;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.logging.Logger;
-import java.util.prefs.Preferences;
 import javax.swing.JButton;
 import javax.swing.JComboBox;
 import javax.swing.JFrame;
@@ -121,11 +116,10 @@ class ReplayBarWindowTest {
     }
 
     private final ReplayingModel model = new ReplayingModel();
+    private OpenWindow window;
     private HubServers servers;
-    private Preferences preferences;
     private WindowLog windowLog;
     private JFrame frame;
-    private CountDownLatch closed;
 
     @BeforeAll
     static void display() {
@@ -134,23 +128,16 @@ class ReplayBarWindowTest {
 
     @BeforeEach
     void open() throws Exception {
-        servers = new HubServers(TestHub.config(true, 65536, 600, 1000, 30));
-        preferences = TestPreferences.create();
-        windowLog = new WindowLog();
-        Logger.getLogger("").addHandler(windowLog);
-        CountDownLatch windowClosed = new CountDownLatch(1);
-        closed = windowClosed;
-        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new), ModelProvider.of(() -> model)),
-                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
-                windowLog, new Launch("0", "ReplayingModel", false, null, false), windowClosed::countDown).frame());
+        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30),
+                List.of(ModelProvider.of(NoopPropagationModel::new), ModelProvider.of(() -> model)), "ReplayingModel");
+        servers = window.servers;
+        windowLog = window.windowLog;
+        frame = window.frame;
     }
 
     @AfterEach
     void close() throws Exception {
-        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
-        assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
-        Logger.getLogger("").removeHandler(windowLog);
-        TestPreferences.remove(preferences);
+        window.close();
     }
 
     /** The window's component of that type and name; from the test's thread or the event thread. */

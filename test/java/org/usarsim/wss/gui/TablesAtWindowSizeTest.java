@@ -9,14 +9,9 @@ import static org.usarsim.wss.gui.Gui.run;
 import static org.usarsim.wss.gui.Gui.until;
 
 import java.awt.Component;
-import java.awt.event.WindowEvent;
 import java.net.ServerSocket;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.TimeUnit;
-import java.util.logging.Logger;
-import java.util.prefs.Preferences;
 import javax.swing.JButton;
 import javax.swing.JFrame;
 import javax.swing.JTabbedPane;
@@ -46,11 +41,10 @@ class TablesAtWindowSizeTest {
     private static final String ALPHA = "Explorer1234";
     private static final String BRAVO = "Operator5678";
 
+    private OpenWindow window;
     private HubServers servers;
-    private Preferences preferences;
     private WindowLog windowLog;
     private JFrame frame;
-    private CountDownLatch closed;
 
     @BeforeAll
     static void display() {
@@ -59,23 +53,16 @@ class TablesAtWindowSizeTest {
 
     @BeforeEach
     void open() throws Exception {
-        servers = new HubServers(TestHub.config(true, 65536, 600, 1000, 30));
-        preferences = TestPreferences.create();
-        windowLog = new WindowLog();
-        Logger.getLogger("").addHandler(windowLog);
-        CountDownLatch windowClosed = new CountDownLatch(1);
-        closed = windowClosed;
-        frame = onEdt(() -> MainWindow.open(servers, List.of(ModelProvider.of(NoopPropagationModel::new)),
-                new WindowPreferences(preferences.node("window")), new ModelPreferences(preferences.node("models")),
-                windowLog, new Launch("0", "NoopPropagationModel", false, null, false), windowClosed::countDown).frame());
+        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(NoopPropagationModel::new)),
+                "NoopPropagationModel");
+        servers = window.servers;
+        windowLog = window.windowLog;
+        frame = window.frame;
     }
 
     @AfterEach
     void close() throws Exception {
-        run(() -> frame.dispatchEvent(new WindowEvent(frame, WindowEvent.WINDOW_CLOSING)));
-        assertTrue(closed.await(10, TimeUnit.SECONDS), "the window closed");
-        Logger.getLogger("").removeHandler(windowLog);
-        TestPreferences.remove(preferences);
+        window.close();
     }
 
     @Test

@@ -3,15 +3,14 @@ package org.usarsim.wss;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
-import static org.junit.jupiter.api.Assertions.fail;
 
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.function.BooleanSupplier;
 import java.util.logging.Logger;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.hub.Wait;
 
 /** The queue and thread behind the event log and the recording: order, the bound, the writer's sleep and wake-up, the close. */
 class QueuedWriterTest {
@@ -31,16 +30,6 @@ class QueuedWriterTest {
         }
     };
 
-    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
-        while (!condition.getAsBoolean()) {
-            if (System.nanoTime() > deadline) {
-                fail("timed out waiting until " + what);
-            }
-            Thread.sleep(1);
-        }
-    }
-
     @Test
     void anItemOfferedJustAsTheWriterGoesToSleepWakesIt() throws Exception {
         StuckWriter out = new StuckWriter();
@@ -52,7 +41,7 @@ class QueuedWriterTest {
             String item = "item " + i;
             assertTrue(writer.offer(item));
             int written = i + 1;
-            await(item + " is written", () -> out.lines().size() == written);
+            Wait.until(item + " is written", () -> out.lines().size() == written);
             assertEquals(item, out.lines().get(i));
         }
         writer.close();

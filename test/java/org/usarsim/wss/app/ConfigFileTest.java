@@ -75,6 +75,7 @@ class ConfigFileTest {
             Map.entry("rosbridge.frame", "world"),
             Map.entry("rosbridge.names", ""),
             Map.entry("rosbridge.stale", "0"),
+            Map.entry("rosbridge.grace", "10000"),
             Map.entry("rosbridge.maxMessage", "16"),
             Map.entry("distance.cutoff", "-93"),
             Map.entry("distance.pd0", "-49.67"),
@@ -382,6 +383,7 @@ class ConfigFileTest {
                 Map.entry("rosbridge.frame", "world"),
                 Map.entry("rosbridge.names", ""),
                 Map.entry("rosbridge.stale", "0"),
+                Map.entry("rosbridge.grace", "10000"),
                 Map.entry("rosbridge.maxMessage", "16"),
                 Map.entry("obstacle.walls", ""),
                 Map.entry("rosbridge.map", "/map"),
@@ -454,7 +456,7 @@ class ConfigFileTest {
         ConfigFile settings = ConfigFile.of(properties, "t");
         Map<String, String> model = settings.modelValues().asMap();
         assertEquals("2", model.get("distance.n"));
-        assertEquals(18, model.size(), "positions.*, usarsim.*, rosbridge.* and distance.*: " + model);
+        assertEquals(19, model.size(), "positions.*, usarsim.*, rosbridge.* and distance.*: " + model);
         assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
         assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
         assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");

@@ -15,7 +15,12 @@ public final class Wait {
     private static final long DEADLINE_NS = 5_000_000_000L;
 
     public static void until(String what, BooleanSupplier condition) {
-        long deadline = System.nanoTime() + DEADLINE_NS;
+        until(what, DEADLINE_NS, condition);
+    }
+
+    /** As {@link #until(String, BooleanSupplier)}, for a condition that takes longer than 5 s by its nature. */
+    public static void until(String what, long deadlineNs, BooleanSupplier condition) {
+        long deadline = System.nanoTime() + deadlineNs;
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > deadline) {
                 fail("timed out waiting until " + what);

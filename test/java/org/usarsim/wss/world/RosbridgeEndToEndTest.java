@@ -64,7 +64,7 @@ class RosbridgeEndToEndTest {
 
     private ModelRig rig(SimulatorModel model, Map<String, String> settings) throws Exception {
         Map<String, String> all = new java.util.HashMap<>(Map.of("positions", "rosbridge", "rosbridge.url",
-                "ws://127.0.0.1:" + rosbridge.port(), "distance.n", "3"));
+                "ws://127.0.0.1:" + rosbridge.port(), "distance.n", "3", "rosbridge.grace", "5000"));
         all.putAll(settings);
         rig = ModelRig.polling(world.port(), model, all);
         return rig;
@@ -83,9 +83,11 @@ class RosbridgeEndToEndTest {
         Wait.until("A - C broken", () -> rig.events("OUT_OF_RANGE").stream().anyMatch(e -> e.args().subList(0, 2).equals(List.of("A", "C"))));
         Wait.until("D drives out of A's range and back", () -> rig.events("OUT_OF_RANGE").stream().anyMatch(e -> e.args().contains("D"))
                 && rig.events("IN_RANGE").stream().anyMatch(e -> e.args().contains("D")));
-        TestRobot ghost = rig.robot("Ghost");
-        assertClosedByPeer(ghost.control, "Ghost, whom /gazebo/model_states does not list");
-        Wait.until("Ghost is gone", () -> !rig.server.hub.getListOfRegisteredRobots().contains("Ghost"));
+        long registered = System.nanoTime();
+        rig.robot("Ghost");
+        Wait.until("Ghost, whom /gazebo/model_states does not list, is gone after its grace", TimeUnit.SECONDS.toNanos(15),
+                () -> !rig.server.hub.getListOfRegisteredRobots().contains("Ghost"));
+        assertTrue(System.nanoTime() - registered >= TimeUnit.SECONDS.toNanos(5), "not before the grace (rosbridge.grace 5000)");
         assertEquals(List.of("A", "B", "C", "D"), rig.server.hub.getListOfRegisteredRobots());
     }
 

@@ -88,7 +88,7 @@ class RosbridgeModelTest {
     }
 
     @Test
-    void robotsGetTheirStrengthsAndBreaksFromTheMotionAndTheSubscriptionIsThrottled() throws Exception {
+    void robotsGetTheirStrengthsAndBreaksFromTheMotionAndTheSubscriptionIsThrottledTo20ms() throws Exception {
         place("A", 0, 0);
         place("B", 10, 0);
         place("ground_plane", 0, 0);
@@ -101,7 +101,7 @@ class RosbridgeModelTest {
                 sourceLog.toString());
         String subscribe = rosbridge.received().get(0);
         assertTrue(subscribe.contains("\"op\":\"subscribe\"") && subscribe.contains("\"topic\":\"/gazebo/model_states\"")
-                && subscribe.contains("\"type\":\"gazebo_msgs/ModelStates\"") && subscribe.contains("\"throttle_rate\":100")
+                && subscribe.contains("\"type\":\"gazebo_msgs/ModelStates\"") && subscribe.contains("\"throttle_rate\":20")
                 && subscribe.contains("\"queue_length\":1"), subscribe);
 
         place("B", 100, 0);

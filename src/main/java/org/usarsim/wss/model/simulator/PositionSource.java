@@ -5,6 +5,7 @@ import java.io.IOException;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.Wall;
 
@@ -28,6 +29,17 @@ public interface PositionSource extends Closeable {
      *                     the model keeps the last state, says so once and opens the source again
      */
     Map<String, ReportedRobot> positions(List<String> registered) throws IOException;
+
+    /**
+     * The registered robots the last {@link #positions} could not tell about yet, though it lists
+     * others: a robot whose first pose may still come (rosbridge subscribes to a robot's own topic
+     * only as it registers, and a robot's publisher may start after its INIT). The model neither
+     * kicks them nor decides their pairs until the source lists them, or stops waiting for them.
+     * None by default.
+     */
+    default Set<String> waitedFor() {
+        return Set.of();
+    }
 
     /**
      * The walls the source gave, for the map and the recording: null while it is not known yet

@@ -15,10 +15,11 @@ import org.usarsim.wss.ros.MessageType;
  *
  * @param topic      the topic, or its pattern with {@code {robot}} (one subscription per robot)
  * @param mapTopic   the topic of a {@code nav_msgs/OccupancyGrid}, or null for none
+ * @param graceMs    how long a registered robot's first pose is waited for (and a new connection's first pose)
  * @param maxChars   the longest message taken, in characters, reassembled from its fragments
  */
 record RosbridgeConfig(URI url, String topic, MessageType type, String frame, RobotNames names, long staleMs,
-        int intervalMs, String mapTopic, int maxChars) {
+        long graceMs, int intervalMs, String mapTopic, int maxChars) {
 
     static final String DEFAULT_URL = "ws://127.0.0.1:9090";
     static final String DEFAULT_TOPIC = "/gazebo/model_states";
@@ -27,6 +28,9 @@ record RosbridgeConfig(URI url, String topic, MessageType type, String frame, Ro
     static final List<String> TYPES = java.util.Arrays.stream(MessageType.values()).map(MessageType::rosName).toList();
     /** A subscription that receives nothing this long is said once: rosbridge sends no error for a wrong topic or type. */
     static final long QUIET_MS = 5_000;
+    /** The default of {@code rosbridge.grace}, and its least. */
+    static final int DEFAULT_GRACE_MS = 10_000;
+    static final int LEAST_GRACE_MS = 5_000;
     /** The stale limit when {@code rosbridge.stale} is 0: this many poll intervals. */
     static final int STALE_INTERVALS = 3;
 
@@ -72,7 +76,8 @@ record RosbridgeConfig(URI url, String topic, MessageType type, String frame, Ro
         int stale = values.getInt("rosbridge.stale", 0);
         String map = values.getString("rosbridge.map", "").strip();
         return new RosbridgeConfig(url, topic, type, values.getString("rosbridge.frame", DEFAULT_FRAME).strip(), names,
-                stale > 0 ? stale : (long) STALE_INTERVALS * intervalMs, intervalMs, map.isEmpty() ? null : map,
+                stale > 0 ? stale : (long) STALE_INTERVALS * intervalMs, values.getInt("rosbridge.grace", DEFAULT_GRACE_MS),
+                intervalMs, map.isEmpty() ? null : map,
                 values.getInt("rosbridge.maxMessage", 16) * 1024 * 1024);
     }
 

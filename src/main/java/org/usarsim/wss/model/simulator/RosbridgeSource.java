@@ -33,19 +33,14 @@ import org.usarsim.wss.ros.RobotPose;
 import org.usarsim.wss.ros.RosFrame;
 
 /**
- * Positions from a rosbridge v2 server (docs/ros.md): one WebSocket (the JDK's client), one
- * subscription to the poses' topic (or one per robot, for {@code /{robot}/odom}) with
- * {@code throttle_rate} the poll interval and {@code queue_length} 1. The poses arrive on the
- * WebSocket's thread, whole messages reassembled from their fragments up to the size limit, are
- * decoded by {@link PoseDecoder} and kept, the latest per robot with its stamp and arrival time;
- * each poll takes what is fresh.
- *
- * <p>Two cases kept apart: the source is <em>silent</em> ({@link #positions} throws: the WebSocket
- * closed, or nothing at all came for the stale limit), and the model keeps its last state and opens
- * another; a robot is <em>unlisted</em> (absent from the latest {@code ModelStates}, or its pose
- * older than the stale limit: by its stamp against the newest stamp, where it has one, since ROS
- * time may be simulation time; by its arrival where not), and the model kicks it. A frame that
- * cannot be read is one line in the log, limited as warnings are, and changes nothing.
+ * Positions from a rosbridge v2 server (docs/ros.md): one WebSocket (the JDK's client), the
+ * subscriptions of {@link TopicRequests} (the poses' topic, {@code /tf_static} beside {@code /tf},
+ * or one topic per robot as robots register; the map's grid). Messages arrive on the WebSocket's
+ * thread, whole once {@link MessageAssembler} has put their pieces together, are decoded by
+ * {@link PoseDecoder} and kept in the {@link PoseTable}, the latest per robot; each poll takes what
+ * is fresh, and learns which registered robots are still waited for and whether the source is
+ * silent. A grid on the map topic goes to {@link GridCounts}. A message that cannot be read is one
+ * line in the log, limited as warnings are, and changes nothing but the silence.
  */
 final class RosbridgeSource implements PositionSource {
 
@@ -60,40 +55,24 @@ final class RosbridgeSource implements PositionSource {
         private final Set<String> saidQuiet = new HashSet<>();
     }
 
-    /** One kept pose: where, its stamp ({@link RobotPose#NO_STAMP} for none), when it arrived. */
-    private record Entry(ReportedRobot robot, long stamp, long arrival) {
-    }
-
     private final RosbridgeConfig config;
     private final PollClock clock;
     private final RunNotes notes;
     private final LogLimiter limiter;
     private final PoseDecoder decoder;
-    private final long staleNs;
+    private final MessageAssembler assembler;
+    private final GridCounts grid = new GridCounts();
 
     // Shared between the WebSocket's thread and the poller: under this object's lock.
-    private final Map<String, Entry> latest = new HashMap<>();
-    private long newestStamp = Long.MIN_VALUE;
-    /** When the last message came (any message), or the source opened. */
-    private long lastMessage;
+    private final PoseTable table;
+    private final TopicRequests topics = new TopicRequests();
     /** Why the WebSocket is closed; null while it is open. */
     private String closed;
-    /** Each topic subscribed, with when; removed once a message came on it. */
-    private final Map<String, Long> waitingTopics = new LinkedHashMap<>();
-    private final Set<String> subscribed = new LinkedHashSet<>();
-    /** Whether any message came on this WebSocket. */
-    private boolean messageCame;
-    /** Whether a message with poses came on this WebSocket: until then it lists nothing, not "nobody". */
-    private boolean posesCame;
-    /** The last grid on the map topic, its walls for the map; null before one came. */
-    private OccupancyGrid grid;
-    private List<Wall> gridWalls;
+    /** The registered robots the last poll found still waited for. */
+    private Set<String> waitedFor = Set.of();
     /** What the last poll listed, where the obstacles between are counted (the poller's only). */
     private Map<String, ReportedRobot> lastListed = Map.of();
 
-    /** The message being reassembled from fragments (used by the WebSocket's thread only). */
-    private final StringBuilder message = new StringBuilder();
-    private boolean dropping;
     private WebSocket socket;
     private CompletableFuture<WebSocket> sending = CompletableFuture.completedFuture(null);
 
@@ -105,8 +84,9 @@ final class RosbridgeSource implements PositionSource {
         this.decoder = new PoseDecoder(config.type(), config.frame(),
                 config.perRobot() ? config.topic() : PoseDecoder.DEFAULT_ROBOT_TOPIC,
                 JsonLimits.DEFAULT.withMaxChars(config.maxChars()));
-        this.staleNs = TimeUnit.MILLISECONDS.toNanos(config.staleMs());
-        this.lastMessage = clock.nanoTime();
+        this.assembler = new MessageAssembler(config.maxChars(), this::bad, this::received);
+        this.table = new PoseTable(TimeUnit.MILLISECONDS.toNanos(config.staleMs()), TimeUnit.MILLISECONDS.toNanos(config.graceMs()),
+                clock.nanoTime());
     }
 
     /** How a run opens it: a new WebSocket each time, a run's notes and log limit kept across them; silent while unreachable. */
@@ -148,33 +128,25 @@ final class RosbridgeSource implements PositionSource {
         };
     }
 
-    /** Takes the open WebSocket and subscribes: to the poses' topic (a per-robot one at each poll), to the grid's. */
+    /** Takes the open WebSocket and subscribes: to the poses' topics (a per-robot one at each poll), to the grid's. */
     void attach(WebSocket webSocket) {
         synchronized (this) {
             socket = webSocket;
         }
         if (!config.perRobot()) {
-            subscribe(config.topic(), config.type().rosName(), config.intervalMs());
+            TopicRequests.poses(config.topic(), config.type()).forEach(this::subscribe);
         }
         if (config.mapTopic() != null) {
-            subscribe(config.mapTopic(), OccupancyGrid.TYPE, Math.max(config.intervalMs(), 1000));
+            subscribe(TopicRequests.map(config.mapTopic(), config.intervalMs()));
         }
     }
 
-    private void subscribe(String topic, String type, int throttleMs) {
-        Map<String, Object> request = new LinkedHashMap<>();
-        request.put("op", "subscribe");
-        request.put("id", "wss:" + topic);
-        request.put("topic", topic);
-        request.put("type", type);
-        request.put("throttle_rate", throttleMs);
-        request.put("queue_length", 1);
-        String text = Json.write(request);
+    private void subscribe(TopicRequests.Topic topic) {
+        String text = topic.request();
         synchronized (this) {
-            if (!subscribed.add(topic)) {
+            if (!topics.add(topic, clock.nanoTime())) {
                 return;
             }
-            waitingTopics.put(topic, clock.nanoTime());
             WebSocket open = socket;
             if (open != null) {
                 // One send at a time: the next goes once the last is done, or failed (the WebSocket's close says why).
@@ -185,43 +157,37 @@ final class RosbridgeSource implements PositionSource {
 
     @Override
     public Map<String, ReportedRobot> positions(List<String> registered) throws IOException {
+        boolean asking = !config.perRobot() || !registered.isEmpty() || !config.names().listed().isEmpty();
         if (config.perRobot()) {
             Set<String> robots = new LinkedHashSet<>(config.names().listed().keySet());
             robots.addAll(registered);
-            robots.forEach(robot -> subscribe(config.topicOf(robot), config.type().rosName(), config.intervalMs()));
+            robots.forEach(robot -> subscribe(TopicRequests.onePublisher(config.topicOf(robot), config.type())));
         }
-        Map<String, ReportedRobot> fresh = new LinkedHashMap<>();
         Map<String, ReportedRobot> listed;
-        List<String> quiet = new java.util.ArrayList<>();
+        List<TopicRequests.Topic> quiet;
         long now = clock.nanoTime();
         synchronized (this) {
             if (closed != null) {
                 throw new IOException(closed);
             }
-            waitingTopics.forEach((topic, since) -> {
-                if (now - since >= TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS) && notes.saidQuiet.add(topic)) {
-                    quiet.add(topic);
-                }
-            });
-            // A new WebSocket has at least QUIET_MS for its first message: rosbridge and the client may still be warming up.
-            long limit = messageCame ? staleNs : Math.max(staleNs, TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS));
-            if (!subscribed.isEmpty() && now - lastMessage > limit) {
-                throw new IOException("nothing from rosbridge at " + config.url() + " for "
-                        + TimeUnit.NANOSECONDS.toMillis(now - lastMessage) + " ms");
+            quiet = topics.quiet(now, TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS));
+            String silence = asking ? table.silence(now, config.url().toString()) : null;
+            if (silence != null) {
+                throw new IOException(silence);
             }
-            if (!posesCame) {
-                listed = null;
-            } else {
-                latest.values().stream().filter(entry -> fresh(entry, now)).sorted(java.util.Comparator.comparing(e -> e.robot().name()))
-                        .forEach(entry -> fresh.put(entry.robot().name(), entry.robot()));
-                listed = fresh;
-            }
+            listed = table.listed(now);
+            waitedFor = table.waitedFor(registered, now);
         }
-        for (String topic : quiet) {
-            LOG.warning("rosbridge at " + config.url() + " sent nothing on " + topic + " ("
-                    + (topic.equals(config.mapTopic()) ? OccupancyGrid.TYPE : config.type().rosName()) + ") for "
-                    + RosbridgeConfig.QUIET_MS / 1000 + " s since it was subscribed: is the topic or its type wrong?"
-                    + " (rosbridge answers no error for either)");
+        for (TopicRequests.Topic topic : quiet) {
+            boolean first;
+            synchronized (notes) {
+                first = notes.saidQuiet.add(topic.name());
+            }
+            if (first) {
+                LOG.warning("rosbridge at " + config.url() + " sent nothing on " + topic.name() + " (" + topic.type() + ") for "
+                        + RosbridgeConfig.QUIET_MS / 1000 + " s since it was subscribed: is the topic or its type wrong?"
+                        + " (rosbridge answers no error for either)");
+            }
         }
         if (listed == null) {
             return null;
@@ -238,69 +204,56 @@ final class RosbridgeSource implements PositionSource {
         return listed;
     }
 
-    /** Whether a kept pose still lists its robot: by its stamp against the newest, or by its arrival where it has none. */
-    private boolean fresh(Entry entry, long now) {
-        return entry.stamp() != RobotPose.NO_STAMP ? newestStamp - entry.stamp() <= staleNs : now - entry.arrival() <= staleNs;
+    /** The registered robots the last poll found waited for: their first pose may still come within the grace. */
+    @Override
+    public synchronized Set<String> waitedFor() {
+        return waitedFor;
     }
 
-    /** One whole message from rosbridge: poses kept, anything else said or passed over; a bad one is a line in the log. */
+    /** One whole message from rosbridge: poses kept, a fragment put with its others, anything else said or passed over. */
     void received(String text) {
         long now = clock.nanoTime();
-        synchronized (this) {
-            lastMessage = now;
-            messageCame = true;
-        }
         RosFrame frame;
-        List<RobotPose> poses;
+        Map<String, RobotPose> poses = new LinkedHashMap<>();
         try {
-            frame = RosFrame.parse(text, JsonLimits.DEFAULT.withMaxChars(config.maxChars()));
+            frame = RosFrame.parse(text, assembler.limits());
+            if ("fragment".equals(frame.op())) {
+                assembler.fragment(frame.root());
+                return;
+            }
             if (!frame.isPublish()) {
                 said(frame);
                 return;
             }
             synchronized (this) {
-                waitingTopics.remove(frame.topic());
+                topics.came(frame.topic());
             }
             if (frame.topic() != null && frame.topic().equals(config.mapTopic())) {
-                took(OccupancyGrid.of(frame.msg()));
+                tookGrid(OccupancyGrid.of(frame.msg()));
                 return;
             }
-            poses = decoder.decode(frame);
+            for (RobotPose pose : decoder.decode(frame)) {
+                String robot = config.names().wss(pose.name());
+                if (robot != null) {
+                    poses.put(robot, pose);
+                }
+            }
         } catch (JsonException | RuntimeException e) {
             bad("a message that cannot be read (" + e.getMessage() + ")");
             return;
         }
         synchronized (this) {
-            posesCame = true;
-            if (config.type() == MessageType.MODEL_STATES) {
-                latest.clear(); // each message lists every model: one it no longer lists is gone
-            }
-            for (RobotPose pose : poses) {
-                String robot = config.names().wss(pose.name());
-                if (robot == null) {
-                    continue;
-                }
-                latest.put(robot, new Entry(new ReportedRobot(robot, pose.x(), pose.y(), pose.z(), false), pose.stampNanos(), now));
-                if (pose.hasStamp()) {
-                    newestStamp = Math.max(newestStamp, pose.stampNanos());
-                }
-            }
+            table.took(poses, config.type() == MessageType.MODEL_STATES, now);
         }
     }
 
-    /** A grid from the map topic: counted on from now; its walls for the map, the same list while they are the same. */
-    private void took(OccupancyGrid taken) {
-        List<Wall> walls = GridWalls.of(taken);
+    /** A grid from the map topic: counted on from now. */
+    private void tookGrid(OccupancyGrid taken) {
+        grid.took(taken);
         boolean firstGrid;
         synchronized (notes) {
             firstGrid = !notes.saidGrid;
             notes.saidGrid = true;
-        }
-        synchronized (this) {
-            grid = taken;
-            if (!walls.equals(gridWalls)) {
-                gridWalls = walls;
-            }
         }
         if (firstGrid) {
             LOG.info("rosbridge at " + config.url() + ": an occupancy grid on " + config.mapTopic() + ", " + taken.width() + " x "
@@ -322,15 +275,19 @@ final class RosbridgeSource implements PositionSource {
         }
     }
 
+    /** What cannot be read or assembled: a line in the log (limited), and no sign of life. */
     private void bad(String what) {
+        synchronized (this) {
+            table.unreadable();
+        }
         limiter.log(LOG, Level.WARNING, "bad rosbridge messages", null,
                 "rosbridge at " + config.url() + " sent " + what + ": keeping the last good positions", null);
     }
 
     /** The grid's walls once one came on the map topic (null until then); none without a map topic. */
     @Override
-    public synchronized List<Wall> walls() {
-        return config.mapTopic() == null ? List.of() : gridWalls;
+    public List<Wall> walls() {
+        return config.mapTopic() == null ? List.of() : grid.walls();
     }
 
     @Override
@@ -341,22 +298,7 @@ final class RosbridgeSource implements PositionSource {
     /** The walls of the grid between each pair where the last poll listed them; none before a grid came. */
     @Override
     public Map<RobotPair, Double> obstacles(Collection<RobotPair> pairs) {
-        OccupancyGrid counted;
-        synchronized (this) {
-            counted = grid;
-        }
-        Map<RobotPair, Double> counts = new HashMap<>();
-        if (counted == null) {
-            return counts;
-        }
-        for (RobotPair pair : pairs) {
-            ReportedRobot a = lastListed.get(pair.first());
-            ReportedRobot b = lastListed.get(pair.second());
-            if (a != null && b != null) {
-                counts.put(pair, (double) counted.crossings(a.x(), a.y(), b.x(), b.y()));
-            }
-        }
-        return counts;
+        return grid.between(pairs, lastListed);
     }
 
     @Override
@@ -374,14 +316,17 @@ final class RosbridgeSource implements PositionSource {
         }
     }
 
-    // ---- the WebSocket's side ----
+    /** A piece of a WebSocket message, as the WebSocket's thread hands it over. */
+    void fragment(CharSequence data, boolean last) {
+        assembler.piece(data, last);
+    }
 
     /** What the WebSocket calls, on its own thread, one call at a time. */
     WebSocket.Listener listener() {
         return new WebSocket.Listener() {
             @Override
             public CompletionStage<?> onText(WebSocket webSocket, CharSequence data, boolean last) {
-                fragment(data, last);
+                assembler.piece(data, last);
                 webSocket.request(1);
                 return null;
             }
@@ -406,29 +351,6 @@ final class RosbridgeSource implements PositionSource {
                 lost("the WebSocket failed: " + (error.getMessage() == null ? error.toString() : error.getMessage()));
             }
         };
-    }
-
-    /** A fragment of a message: kept up to the size limit, the whole handled at its last; a longer one dropped. */
-    void fragment(CharSequence data, boolean last) {
-        if (!dropping && message.length() + data.length() > config.maxChars()) {
-            dropping = true;
-            message.setLength(0);
-            bad("a message longer than " + config.maxChars() + " characters (rosbridge.maxMessage): dropped");
-        }
-        if (!dropping) {
-            message.append(data);
-        }
-        if (last) {
-            if (!dropping) {
-                String whole = message.toString();
-                message.setLength(0);
-                received(whole);
-            }
-            dropping = false;
-            if (message.capacity() > 1 << 20) {
-                message.trimToSize();
-            }
-        }
     }
 
     private synchronized void lost(String why) {

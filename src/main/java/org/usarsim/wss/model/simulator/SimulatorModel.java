@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import org.usarsim.wss.model.DialogLayout;
@@ -66,6 +67,11 @@ public abstract class SimulatorModel extends PollingModel {
                             + " others by their WSS name, or {robot}/base_link on /tf"),
             Setting.integer("rosbridge.stale", "Stale limit", 0).from(0).to(600000).unit("ms").note("0: 3 poll intervals")
                     .help("A robot whose pose is older is unlisted (kicked); nothing at all for this long: rosbridge is silent"),
+            Setting.integer("rosbridge.grace", "Grace", RosbridgeConfig.DEFAULT_GRACE_MS).from(RosbridgeConfig.LEAST_GRACE_MS)
+                    .to(600000).unit("ms")
+                    .help("How long a registered robot's first pose is waited for before it is kicked as unlisted"
+                            + " (its own topic subscribed as it registers, its publisher started late), and a new connection's"
+                            + " first message before rosbridge counts as silent"),
             Setting.integer("rosbridge.maxMessage", "Largest message", 16).from(1).to(1024).unit("MiB")
                     .help("A longer message from rosbridge (its fragments together) is dropped with a line in the log"),
             Setting.number("distance.cutoff", "Cutoff", "-93").unit("dBm")
@@ -391,11 +397,15 @@ public abstract class SimulatorModel extends PollingModel {
          * poll acts on nothing).
          */
         private boolean poll(PositionSource simulator) throws IOException {
-            List<String> registeredBefore = server.getListOfRegisteredRobots();
-            Map<String, ReportedRobot> listed = simulator.positions(registeredBefore);
+            List<String> registered = server.getListOfRegisteredRobots();
+            Map<String, ReportedRobot> listed = simulator.positions(registered);
             if (stopped || listed == null) {
                 return false;
             }
+            // A robot the source still waits for is neither kicked nor decided: as if it had not registered yet.
+            Set<String> waited = simulator.waitedFor();
+            List<String> registeredBefore = waited.isEmpty() ? registered
+                    : registered.stream().filter(robot -> !waited.contains(robot)).toList();
             if (ownWalls() == null) {
                 learnWalls(simulator);
             }

@@ -77,7 +77,12 @@ class RosbridgeSourceTest {
     }
 
     private static List<String> frames(String name) {
-        try (InputStream in = RosbridgeSourceTest.class.getResourceAsStream("/ros/" + name)) {
+        return frames("ros", name);
+    }
+
+    /** The frames of a fixture: {@code ros} a real rosbridge 0.11's, {@code ros2} written to rosbridge 2.x's rules. */
+    private static List<String> frames(String folder, String name) {
+        try (InputStream in = RosbridgeSourceTest.class.getResourceAsStream("/" + folder + "/" + name)) {
             String text = new String(in.readAllBytes(), StandardCharsets.UTF_8);
             return Arrays.stream(text.split("\n")).filter(line -> !line.isEmpty()).toList();
         } catch (IOException e) {
@@ -316,6 +321,51 @@ class RosbridgeSourceTest {
         }
         assertEquals(0, lines(Level.WARNING, ""), log.toString());
         assertEquals(4, source.positions(List.of()).size());
+    }
+
+    // ---- ROS 2: rosbridge_suite 2.x's frames (test/resources/ros2/README.md) ----
+
+    @Test
+    void ros2TfFromOnePublisherPerRobotComposedWithTfStaticUpToMap() throws Exception {
+        RosbridgeSource source = source(Map.of("rosbridge.topic", "/tf", "rosbridge.frame", "map", "rosbridge.type", "tf2_msgs/msg/TFMessage"));
+        List<String> tf = frames("ros2", "tf.jsonl");
+        source.received(tf.get(0));
+        assertEquals(Map.of(), source.positions(List.of()), "no chain up to map before /tf_static");
+        source.received(frames("ros2", "tf_static.jsonl").get(0));
+        tf.forEach(source::received);
+        Map<String, ReportedRobot> listed = source.positions(List.of("Scout", "Mapper"));
+        assertEquals(List.of("Mapper", "Scout"), List.copyOf(listed.keySet()));
+        assertEquals(0.9, listed.get("Scout").x(), 1e-9);
+        assertEquals(1.0, listed.get("Scout").y(), 1e-9);
+        assertEquals(39.0, listed.get("Mapper").x(), 1e-9, "Mapper/odom at (40, 0) turned 90 degrees: (0.9, 1) there is (39, 0.9)");
+        assertEquals(0.9, listed.get("Mapper").y(), 1e-9);
+    }
+
+    @Test
+    void ros2OdometryOnEachRobotsTopic() throws Exception {
+        RosbridgeSource source = source(Map.of("rosbridge.topic", "/{robot}/odom", "rosbridge.type", "nav_msgs/msg/Odometry"));
+        frames("ros2", "Scout_odom.jsonl").forEach(source::received);
+        assertEquals(0.4, source.positions(List.of("Scout")).get("Scout").x(), 1e-9);
+    }
+
+    @Test
+    void ros2ModelStatesOfGazeboRosState() throws Exception {
+        RosbridgeSource source = source(Map.of());
+        source.received(frames("ros2", "model_states.jsonl").get(0));
+        Map<String, ReportedRobot> listed = source.positions(List.of("Scout", "Mapper"));
+        assertEquals(40.0, listed.get("Mapper").x());
+        assertEquals(0.05, listed.get("Scout").z());
+    }
+
+    @Test
+    void gzSimModelPosesBridgedToTfByTheirModelNames() throws Exception {
+        RosbridgeSource source = source(Map.of("rosbridge.topic", "/tf", "rosbridge.frame", "rescue_world", "rosbridge.names",
+                "{robot}={robot}"));
+        frames("ros2", "gz_model_pose_tf.jsonl").forEach(source::received);
+        Map<String, ReportedRobot> listed = source.positions(List.of("Scout", "Mapper"));
+        assertEquals(List.of("Mapper", "Scout"), List.copyOf(listed.keySet()));
+        assertEquals(40.04, listed.get("Mapper").x(), 1e-9);
+        assertEquals(0.04, listed.get("Scout").x(), 1e-9);
     }
 
     private static String grid() {

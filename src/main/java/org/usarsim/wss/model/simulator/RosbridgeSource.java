@@ -142,16 +142,19 @@ final class RosbridgeSource implements PositionSource {
     }
 
     private void subscribe(TopicRequests.Topic topic) {
-        String text = topic.request();
         synchronized (this) {
-            if (!topics.add(topic, clock.nanoTime())) {
-                return;
+            if (topics.add(topic, clock.nanoTime())) {
+                send(topic.request());
             }
-            WebSocket open = socket;
-            if (open != null) {
-                // One send at a time: the next goes once the last is done, or failed (the WebSocket's close says why).
-                sending = sending.handle((done, failed) -> done).thenCompose(done -> open.sendText(text, true));
-            }
+        }
+    }
+
+    /** Sends a request, after those before it. Under this object's lock. */
+    private void send(String text) {
+        WebSocket open = socket;
+        if (open != null) {
+            // One send at a time: the next goes once the last is done, or failed (the WebSocket's close says why).
+            sending = sending.handle((done, failed) -> done).thenCompose(done -> open.sendText(text, true));
         }
     }
 
@@ -171,6 +174,7 @@ final class RosbridgeSource implements PositionSource {
                 throw new IOException(closed);
             }
             quiet = topics.quiet(now, TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS));
+            topics.askAgain(now, TimeUnit.MILLISECONDS.toNanos(RosbridgeConfig.QUIET_MS)).forEach(topic -> send(topic.request()));
             String silence = asking ? table.silence(now, config.url().toString()) : null;
             if (silence != null) {
                 throw new IOException(silence);

@@ -33,10 +33,10 @@ final class TopicRequests {
     static final int POSE_THROTTLE_MS = 20;
 
     /**
-     * One subscription: its topic, type and options, and whether it is said when nothing comes on
-     * it for 5 s (not {@code /tf_static}, which a graph may not have).
+     * One subscription: its topic, type and options, and whether it is latched (sent once to each
+     * subscriber: {@code /tf_static}, which a graph may also not have: not said when quiet).
      */
-    record Topic(String name, String type, int throttleMs, int queueLength, boolean quietSaid) {
+    record Topic(String name, String type, int throttleMs, int queueLength, boolean latched) {
 
         /** The rosbridge v2 subscribe request. */
         String request() {
@@ -52,16 +52,18 @@ final class TopicRequests {
     }
 
     private final Map<String, Topic> topics = new LinkedHashMap<>();
-    /** The topics no message came on yet, with when they were subscribed. */
+    /** The topics no message came on yet, with when they were subscribed: said once when quiet. */
     private final Map<String, Long> waiting = new LinkedHashMap<>();
+    /** The latched topics no message came on yet, with when they were last asked for. */
+    private final Map<String, Long> unlatched = new LinkedHashMap<>();
 
     /** The topics of a run's poses that are not per robot: the topic, and /tf's /tf_static. */
     static List<Topic> poses(String topic, MessageType type) {
         List<Topic> poses = new ArrayList<>();
         if (type == MessageType.TF) {
-            poses.add(new Topic(topic, type.rosName(), 0, 0, true));
+            poses.add(new Topic(topic, type.rosName(), 0, 0, false));
             if (topic.endsWith("/tf")) {
-                poses.add(new Topic(topic + "_static", type.rosName(), 0, 0, false));
+                poses.add(new Topic(topic + "_static", type.rosName(), 0, 0, true));
             }
         } else {
             poses.add(onePublisher(topic, type));
@@ -71,12 +73,12 @@ final class TopicRequests {
 
     /** A topic one publisher publishes: a robot's own, or the simulator's list of models. */
     static Topic onePublisher(String topic, MessageType type) {
-        return new Topic(topic, type.rosName(), POSE_THROTTLE_MS, 1, true);
+        return new Topic(topic, type.rosName(), POSE_THROTTLE_MS, 1, false);
     }
 
     /** The occupancy grid's topic. */
     static Topic map(String topic, int intervalMs) {
-        return new Topic(topic, OccupancyGrid.TYPE, Math.max(intervalMs, 1000), 1, true);
+        return new Topic(topic, OccupancyGrid.TYPE, Math.max(intervalMs, 1000), 1, false);
     }
 
     /** Adds a subscription made at {@code now}; false when its topic is subscribed already. */
@@ -84,15 +86,33 @@ final class TopicRequests {
         if (topics.putIfAbsent(topic.name(), topic) != null) {
             return false;
         }
-        if (topic.quietSaid()) {
-            waiting.put(topic.name(), now);
-        }
+        (topic.latched() ? unlatched : waiting).put(topic.name(), now);
         return true;
     }
 
     /** A message came on a topic. */
     void came(String topic) {
         waiting.remove(topic);
+        unlatched.remove(topic);
+    }
+
+    /**
+     * The latched topics nothing came on for {@code everyNs} since they were last asked for, to ask
+     * for again now. rosbridge 2.x takes a latched topic's durability from the publishers there are
+     * when it subscribes: subscribed before the static broadcaster existed, it never gets what that
+     * sent; a subscribe again (the same id) makes it look again. rosbridge 1 sends the latched
+     * messages again, if any.
+     */
+    List<Topic> askAgain(long now, long everyNs) {
+        List<Topic> again = new ArrayList<>();
+        unlatched.replaceAll((name, asked) -> {
+            if (now - asked < everyNs) {
+                return asked;
+            }
+            again.add(topics.get(name));
+            return now;
+        });
+        return again;
     }
 
     /** The subscribed topics that have sent nothing for {@code quietNs} at {@code now}, each given once. */

@@ -388,7 +388,12 @@ class RosbridgeSourceTest {
         for (int i = 0; i < 100; i++) {
             source.received("not json " + i);
         }
-        assertEquals(LogLimiter.ALL_FIRST, lines(Level.WARNING, "sent a message that cannot be read"), "limited as warnings are");
+        assertEquals(4, lines(Level.WARNING, "sent a message that cannot be read"), "the same problem 100 times: said once");
+        for (int i = 0; i < 100; i++) { // "1 poses for N names": a problem of its own each time
+            source.received("{\"op\":\"publish\",\"topic\":\"/gazebo/model_states\",\"msg\":{\"name\":["
+                    + "\"A\",".repeat(i + 1) + "\"A\"],\"pose\":[{\"position\":{\"x\":0,\"y\":0,\"z\":0}}]}}");
+        }
+        assertEquals(LogLimiter.ALL_FIRST, lines(Level.WARNING, "sent a message that cannot be read"), "each problem once, limited as warnings are");
     }
 
     @Test

@@ -53,6 +53,14 @@ final class RosbridgeSource implements PositionSource {
         private boolean saidPositions;
         private boolean saidGrid;
         private final Set<String> saidQuiet = new HashSet<>();
+        /** The problems of messages that cannot be read said so far: each said once (at most {@link #PROBLEMS} kept). */
+        private final Set<String> saidProblems = new HashSet<>();
+        static final int PROBLEMS = 64;
+
+        /** Whether a problem is said now: the first time it is seen in the run. */
+        synchronized boolean sayProblem(String problem) {
+            return saidProblems.size() < PROBLEMS ? saidProblems.add(problem) : !saidProblems.contains(problem);
+        }
     }
 
     private final RosbridgeConfig config;
@@ -279,13 +287,20 @@ final class RosbridgeSource implements PositionSource {
         }
     }
 
-    /** What cannot be read or assembled: a line in the log (limited), and no sign of life. */
+    /**
+     * What cannot be read or assembled: no sign of life; said once in the run for each problem
+     * (the same problem again is a FINE line), within the limit on warnings.
+     */
     private void bad(String what) {
         synchronized (this) {
             table.unreadable();
         }
-        limiter.log(LOG, Level.WARNING, "bad rosbridge messages", null,
-                "rosbridge at " + config.url() + " sent " + what + ": keeping the last good positions", null);
+        String line = "rosbridge at " + config.url() + " sent " + what + ": keeping the last good positions";
+        if (notes.sayProblem(what)) {
+            limiter.log(LOG, Level.WARNING, "bad rosbridge messages", null, line + " (said once; the same again is logged at FINE)", null);
+        } else {
+            LOG.fine(line);
+        }
     }
 
     /** The grid's walls once one came on the map topic (null until then); none without a map topic. */

@@ -1,6 +1,5 @@
 package org.usarsim.wss.model;
 
-import java.math.BigDecimal;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.file.Files;
@@ -14,6 +13,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.Set;
+import org.usarsim.wss.Decimals;
 
 /**
  * One setting a model (or the server) declares: its key, a label for dialogs, its type, default,
@@ -321,7 +321,7 @@ public final class Setting {
     }
 
     private static String format(double value) {
-        return BigDecimal.valueOf(value).stripTrailingZeros().toPlainString();
+        return Decimals.plain(value);
     }
 
     private boolean accepts(String value) {

@@ -14,6 +14,7 @@ import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
 import java.util.logging.Level;
+import org.usarsim.wss.Decimals;
 import org.usarsim.wss.model.ModelInputException;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelSettings;
@@ -152,7 +153,7 @@ public final class ReplayPropagationModel extends PollingModel {
                 + minutesSeconds(recording.durationMillis()) + " long, " + recording.polls().size()
                 + (recording.polls().size() == 1 ? " poll, " : " polls, ")
                 + robots.size() + (robots.size() == 1 ? " robot " : " robots ") + robots + "; from "
-                + minutesSeconds(startMillis) + " at " + java.math.BigDecimal.valueOf(speed).stripTrailingZeros().toPlainString() + "x" + (loop ? ", looping" : ""));
+                + minutesSeconds(startMillis) + " at " + Decimals.plain(speed) + "x" + (loop ? ", looping" : ""));
         if (recording.cutShort()) {
             log.warning(file + " was cut short (a run that did not stop): replaying up to its last whole line at "
                     + minutesSeconds(recording.durationMillis()));

@@ -46,7 +46,7 @@ public final class Main {
 
     /** What --help prints (and the package's manual page wss.1 is made of), naming the command and the docs as given. */
     static String help(String command, String docs) {
-        String text = OptionsParser.help(command) + "\n" + ConfigFile.help(ConfigFile.defaults().catalog());
+        String text = OptionsParser.help(command) + "\n" + ConfigKeys.help(ConfigFile.defaults().catalog());
         return text.replace("docs/", docs);
     }
 

@@ -1,11 +1,9 @@
 package org.usarsim.wss.gui;
 
-import java.awt.Color;
 import java.awt.Window;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.prefs.BackingStoreException;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
@@ -32,10 +30,9 @@ final class GeneratedModelDialog extends JDialog {
     private final boolean editable;
     private final ModelPreferences preferences;
 
-    private final Map<String, JTextField> fields = new LinkedHashMap<>();
+    private final Map<String, CheckedField> fields = new LinkedHashMap<>();
     private final Map<String, JCheckBox> boxes = new LinkedHashMap<>();
     private final JLabel message = new JLabel(" ");
-    private Color normalBackground;
     private boolean saved;
 
     /**
@@ -54,15 +51,9 @@ final class GeneratedModelDialog extends JDialog {
         int row = 0;
         for (Setting setting : declared) {
             JComponent field = field(setting, values.get(setting.key()));
-            rows.add(DialogParts.label(setting.label(), setting.help(), field), DialogParts.cell(0, row, 0, false));
-            rows.add(field, DialogParts.cell(1, row, 8, false));
-            if (setting.key().endsWith(".file") && field instanceof JTextField path) {
-                rows.add(browse(setting, path), DialogParts.cell(2, row, 6, true));
-            } else {
-                JLabel unit = new JLabel(setting.unit() == null ? "" : setting.unit());
-                unit.setToolTipText(setting.help());
-                rows.add(unit, DialogParts.cell(2, row, 6, true));
-            }
+            JComponent beside = setting.key().endsWith(".file") && field instanceof JTextField path ? browse(setting, path)
+                    : DialogParts.unit(setting.unit() == null ? "" : setting.unit(), setting.help());
+            DialogParts.row(rows, row, DialogParts.label(setting.label(), setting.help(), field), field, beside);
             row++;
         }
 
@@ -76,29 +67,17 @@ final class GeneratedModelDialog extends JDialog {
 
     private JComponent field(Setting setting, String value) {
         if (setting.type() == Setting.Type.BOOLEAN) {
-            JCheckBox box = new JCheckBox();
-            box.setName(setting.key());
-            box.setToolTipText(setting.help());
-            box.setSelected(Boolean.parseBoolean(value));
-            box.setEnabled(editable);
+            JCheckBox box = DialogParts.checkBox(new JCheckBox(), setting.key(), setting.help(), Boolean.parseBoolean(value), editable);
             boxes.put(setting.key(), box);
             return box;
         }
-        JTextField field = new JTextField(value, 14);
-        field.setName(setting.key());
-        field.setToolTipText(setting.help());
-        field.setMinimumSize(field.getPreferredSize());
-        normalBackground = field.getBackground();
-        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
-            mark(field, setting.problem(field.getText()) != null);
-            message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
-        }));
-        mark(field, setting.problem(value) != null);
+        CheckedField field = new CheckedField(new JTextField(value, 14), setting.key(), setting.help(), setting::problem, message, () -> { });
+        field.mark();
         if (!editable) {
-            DialogParts.readOnly(field);
+            DialogParts.readOnly(field.field());
         }
         fields.put(setting.key(), field);
-        return field;
+        return field.field();
     }
 
     /**
@@ -132,43 +111,23 @@ final class GeneratedModelDialog extends JDialog {
         return browse;
     }
 
-    private void mark(JTextField field, boolean invalid) {
-        field.setBackground(invalid ? DialogParts.INVALID : normalBackground);
-    }
-
     private void ok() {
         Map<String, String> values = new LinkedHashMap<>();
-        JTextField first = null;
-        String refusal = null;
-        int refused = 0;
+        Refusals refused = new Refusals();
         for (Setting setting : declared) {
             JCheckBox box = boxes.get(setting.key());
             if (box != null) {
                 values.put(setting.key(), String.valueOf(box.isSelected()));
                 continue;
             }
-            JTextField field = fields.get(setting.key());
-            String text = field.getText().strip();
-            String problem = setting.problem(text);
-            mark(field, problem != null);
+            CheckedField field = fields.get(setting.key());
+            String problem = field.mark();
             if (problem != null) {
-                refused++;
-                if (first == null) {
-                    first = field;
-                    refusal = DialogParts.refusal(setting.labelWithUnit(), text, problem);
-                }
+                refused.add(field.field(), DialogParts.refusal(setting.labelWithUnit(), field.text(), problem));
             }
-            values.put(setting.key(), text);
+            values.put(setting.key(), field.text());
         }
-        if (first != null) {
-            DialogParts.showMessage(message, refusal + (refused > 1 ? " (and " + (refused - 1) + " more marked)" : ""));
-            first.requestFocusInWindow();
-            return;
-        }
-        try {
-            preferences.store(model, values);
-        } catch (BackingStoreException | RuntimeException e) {
-            DialogParts.showMessage(message, "Cannot save the settings: " + e.getMessage());
+        if (refused.show(message) || !DialogParts.stored(message, () -> preferences.store(model, values))) {
             return;
         }
         saved = true;

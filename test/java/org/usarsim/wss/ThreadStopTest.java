@@ -8,17 +8,24 @@ import org.junit.jupiter.api.Test;
 
 class ThreadStopTest {
 
-    @Test
-    void theSignalComesFirstThenTheThreadIsWaitedFor() {
-        CountDownLatch told = new CountDownLatch(1);
+    /** A started daemon thread that ends once the latch is counted down. */
+    private static Thread waitingFor(CountDownLatch latch) {
         Thread thread = new Thread(() -> {
             try {
-                told.await();
+                latch.await();
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
         });
+        thread.setDaemon(true);
         thread.start();
+        return thread;
+    }
+
+    @Test
+    void theSignalComesFirstThenTheThreadIsWaitedFor() {
+        CountDownLatch told = new CountDownLatch(1);
+        Thread thread = waitingFor(told);
         assertTrue(ThreadStop.stop(thread, told::countDown));
         assertFalse(thread.isAlive());
     }
@@ -26,15 +33,7 @@ class ThreadStopTest {
     @Test
     void anInterruptedCallerStopsWaitingAndStaysInterrupted() throws InterruptedException {
         CountDownLatch never = new CountDownLatch(1);
-        Thread thread = new Thread(() -> {
-            try {
-                never.await();
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        });
-        thread.setDaemon(true);
-        thread.start();
+        Thread thread = waitingFor(never);
         Thread.currentThread().interrupt();
         try {
             assertFalse(ThreadStop.stop(thread, () -> { }));

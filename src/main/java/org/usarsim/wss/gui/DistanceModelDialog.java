@@ -6,7 +6,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
@@ -28,7 +27,7 @@ import org.usarsim.wss.model.simulator.SimulatorModel;
  * {@link ModelPreferences}; in read-only mode (the server runs) every field is disabled and the
  * only button is Close. Modal; build and show it on the Swing event thread.
  */
-final class DistanceModelDialog extends JDialog {
+final class DistanceModelDialog extends ModelSettingsDialog {
 
     /** Component names, for tests and accessibility tools; each value field is named by its key. */
     static final String CUTOFF_DISTANCE = "cutoffDistance";
@@ -71,35 +70,24 @@ final class DistanceModelDialog extends JDialog {
     private static final List<String> USARSIM_KEYS = List.of(HOST, PORT, TIMEOUT);
     private static final List<String> ROSBRIDGE_KEYS = List.of(URL, TOPIC, TYPE, FRAME, NAMES, STALE, MAX_MESSAGE, MAP);
 
-    private final PropagationModel model;
-    private final List<Setting> declared;
-    private final boolean editable;
-    private final ModelPreferences preferences;
 
     private final Map<String, CheckedField> fields = new LinkedHashMap<>();
     private final Map<String, Setting> rules = new LinkedHashMap<>();
     private final Map<String, JLabel> labels = new LinkedHashMap<>();
-    private final JLabel message = new JLabel(" ");
     private final FieldGrid grid = new FieldGrid();
     private final CutoffDistance distance;
 
     /** True while the dialog itself sets a field's text, so that its listener does not recompute. */
     private boolean updating;
-    private boolean saved;
 
     /**
      * Shows {@code values} (a value for each key the model declares); OK stores the values in
      * {@code model.name()}'s preferences. It does not touch the model itself.
      */
     DistanceModelDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
-        super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
-        this.model = model;
-        this.declared = model.settings();
-        this.editable = editable;
-        this.preferences = preferences;
+        super(owner, model, editable, preferences);
         this.distance = new CutoffDistance(this::parameter, n -> set(N, n), message);
         boolean obstacles = model.dialogLayout() == DialogLayout.DISTANCE_AND_OBSTACLES;
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
 
         List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL),
                 group("USARSim Connection", HOST, PORT, TIMEOUT),
@@ -119,11 +107,6 @@ final class DistanceModelDialog extends JDialog {
             distance.readOnly();
         }
         DialogParts.layOut(this, owner, groups, message, DialogParts.buttons(this, editable, this::ok));
-    }
-
-    /** Whether OK stored the values. */
-    boolean saved() {
-        return saved;
     }
 
     /** A titled group of the fields of these keys, two to a row ({@link FieldGrid}). */
@@ -246,10 +229,6 @@ final class DistanceModelDialog extends JDialog {
         if (distance.refusal() != null) {
             refused.add(distance.field(), distance.refusal());
         }
-        if (refused.show(message) || !DialogParts.stored(message, () -> preferences.store(model, values))) {
-            return;
-        }
-        saved = true;
-        dispose();
+        finish(refused, values);
     }
 }

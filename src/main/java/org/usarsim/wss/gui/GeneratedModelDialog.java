@@ -7,8 +7,6 @@ import java.util.Map;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
-import javax.swing.JDialog;
-import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
 import org.usarsim.wss.model.PropagationModel;
@@ -23,30 +21,18 @@ import org.usarsim.wss.model.Setting;
  * {@link ModelPreferences}. Read-only (the server runs): every field disabled, Close only.
  * Modal; build and show it on the Swing event thread.
  */
-final class GeneratedModelDialog extends JDialog {
+final class GeneratedModelDialog extends ModelSettingsDialog {
 
-    private final PropagationModel model;
-    private final List<Setting> declared;
-    private final boolean editable;
-    private final ModelPreferences preferences;
 
     private final Map<String, CheckedField> fields = new LinkedHashMap<>();
     private final Map<String, JCheckBox> boxes = new LinkedHashMap<>();
-    private final JLabel message = new JLabel(" ");
-    private boolean saved;
 
     /**
      * Shows {@code values} (a value for each key the model declares); OK stores the values in
      * {@code model.name()}'s preferences. It does not touch the model itself.
      */
     GeneratedModelDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
-        super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
-        this.model = model;
-        this.declared = model.settings();
-        this.editable = editable;
-        this.preferences = preferences;
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
-
+        super(owner, model, editable, preferences);
         JPanel rows = DialogParts.titled("Settings");
         int row = 0;
         for (Setting setting : declared) {
@@ -58,11 +44,6 @@ final class GeneratedModelDialog extends JDialog {
         }
 
         DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
-    }
-
-    /** Whether OK stored the values. */
-    boolean saved() {
-        return saved;
     }
 
     private JComponent field(Setting setting, String value) {
@@ -127,10 +108,6 @@ final class GeneratedModelDialog extends JDialog {
             }
             values.put(setting.key(), field.text());
         }
-        if (refused.show(message) || !DialogParts.stored(message, () -> preferences.store(model, values))) {
-            return;
-        }
-        saved = true;
-        dispose();
+        finish(refused, values);
     }
 }

@@ -142,29 +142,27 @@ public final class Setting {
 
     /** The smallest value allowed, itself allowed. */
     public Setting from(double minimum) {
-        Setting copy = copy();
-        copy.bounds = bounds.low(minimum, false);
-        return copy;
+        return bounded(bounds.low(minimum, false));
     }
 
     /** Values must be above this one (NUMBER). */
     public Setting above(double minimum) {
-        Setting copy = copy();
-        copy.bounds = bounds.low(minimum, true);
-        return copy;
+        return bounded(bounds.low(minimum, true));
     }
 
     /** The largest value allowed, itself allowed. */
     public Setting to(double maximum) {
-        Setting copy = copy();
-        copy.bounds = bounds.high(maximum, false);
-        return copy;
+        return bounded(bounds.high(maximum, false));
     }
 
     /** Values must be below this one (NUMBER). */
     public Setting below(double maximum) {
+        return bounded(bounds.high(maximum, true));
+    }
+
+    private Setting bounded(Bounds range) {
         Setting copy = copy();
-        copy.bounds = bounds.high(maximum, true);
+        copy.bounds = range;
         return copy;
     }
 

@@ -145,7 +145,7 @@ class ConfigFileTest {
         ConfigFileException bad = rejected("usarsim.interval", "99");
         assertTrue(bad.getMessage().endsWith("usarsim.interval = '99' is not a whole number of milliseconds from 100 to 60000"
                 + " (usarsim.interval is the old name of positions.interval)"), bad.getMessage());
-        assertTrue(ConfigFile.help(ConfigFile.defaults().catalog()).contains("(formerly usarsim.interval)"));
+        assertTrue(ConfigKeys.help(ConfigFile.defaults().catalog()).contains("(formerly usarsim.interval)"));
     }
 
     @Test
@@ -341,7 +341,7 @@ class ConfigFileTest {
 
     /** The rule of a key: the server's, or the built-in models' (the obstacle model declares every one). */
     private static Setting rule(String key) {
-        Setting server = Setting.find(ConfigFile.SERVER, key);
+        Setting server = Setting.find(ConfigKeys.SERVER, key);
         return server != null ? server : Setting.find(allDeclared(), key);
     }
 
@@ -487,7 +487,7 @@ class ConfigFileTest {
 
     @Test
     void helpListsEveryKeyWithItsDefaultAndRule() {
-        String help = ConfigFile.help(ConfigFile.defaults().catalog());
+        String help = ConfigKeys.help(ConfigFile.defaults().catalog());
         for (Setting setting : allDeclared()) {
             assertTrue(help.contains("  " + setting.key() + " = " + setting.defaultValue() + "\n      " + setting.expected()),
                     setting.key() + " in:\n" + help);
@@ -509,7 +509,7 @@ class ConfigFileTest {
 
     /** The server's settings and every built-in model's. */
     private static List<Setting> allDeclared() {
-        List<Setting> all = new java.util.ArrayList<>(ConfigFile.SERVER);
+        List<Setting> all = new java.util.ArrayList<>(ConfigKeys.SERVER);
         all.addAll(new ObstaclePropagationModel().settings());
         all.addAll(new ReplayPropagationModel().settings());
         return all;

@@ -41,11 +41,9 @@ import org.usarsim.wss.gui.WindowLog;
 import org.usarsim.wss.gui.WindowPreferences;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelProvider;
-import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StubModel;
 
 /**
  * Each Start of the window runs a new instance of the selected model, configured from what is
@@ -63,7 +61,7 @@ class FreshModelPerStartTest {
      * A plugin-like model with one setting, whose configure keeps what it was given before (as
      * the simulator models do): the strength of every pair is minus its level.
      */
-    static final class Levelled implements PropagationModel {
+    static final class Levelled extends StubModel {
         static final List<Setting> SETTINGS = List.of(Setting.integer("levelled.level", "Level", 1).from(1).to(100));
 
         final Map<String, String> given = new HashMap<>();
@@ -92,14 +90,6 @@ class FreshModelPerStartTest {
         }
 
         @Override
-        public void setRobotLinkModel(RobotLinkModel linkModel) {
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-        }
-
-        @Override
         public void start() {
             starts.incrementAndGet();
         }
@@ -117,11 +107,6 @@ class FreshModelPerStartTest {
         @Override
         public double getSignalStrengthForPair(String from, String to) {
             return -Double.parseDouble(level());
-        }
-
-        @Override
-        public boolean connectionIsPossibleForPair(String from, String to) {
-            return true;
         }
     }
 

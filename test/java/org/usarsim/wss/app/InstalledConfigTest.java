@@ -28,7 +28,7 @@ class InstalledConfigTest {
         Properties set = ConfigFile.read(FILE);
         assertEquals(Set.of(), set.stringPropertyNames(), "the file sets nothing");
         Set<String> lines = Files.readAllLines(FILE).stream().map(String::strip).collect(Collectors.toSet());
-        List<Setting> declared = new ArrayList<>(ConfigFile.SERVER);
+        List<Setting> declared = new ArrayList<>(ConfigKeys.SERVER);
         for (PropagationModel model : ConfigFile.defaults().catalog().models()) {
             declared.addAll(model.settings());
         }

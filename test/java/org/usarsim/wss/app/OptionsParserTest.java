@@ -6,34 +6,29 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import org.junit.jupiter.api.Test;
-import org.usarsim.wss.app.Options.Action;
 
 /** The command line read into {@link Options}, before anything runs; its mistakes through Main: CommandLineTest. */
 class OptionsParserTest {
 
     @Test
     void noOptionServesFromTheDefaults() throws Exception {
-        assertEquals(new Options(Action.SERVE, false, false, null, null, 0, null, null, null, -1), OptionsParser.parse());
+        assertEquals(new Options.Serve(false, false, null), OptionsParser.parse());
     }
 
     @Test
     void theWindowWithAConfigAndStart() throws Exception {
-        assertEquals(new Options(Action.SERVE, false, true, Path.of("a.properties"), null, 0, null, null, null, -1),
+        assertEquals(new Options.Serve(false, true, Path.of("a.properties")),
                 OptionsParser.parse("--config", "a.properties", "--start"));
     }
 
     @Test
     void theWorldServerGetsItsDefaultPortAndAddress() throws Exception {
-        Options options = OptionsParser.parse("--world", "a.world");
-        assertEquals(Action.WORLD, options.action());
-        assertEquals(Path.of("a.world"), options.world());
-        assertEquals(Defaults.WORLD_PORT, options.port());
-        assertEquals(Defaults.ALL_INTERFACES, options.bind());
-        Options given = OptionsParser.parse("--bind", "127.0.0.1", "--port", "0", "--world", "a.world");
-        assertEquals(0, given.port());
-        assertEquals("127.0.0.1", given.bind());
-        assertEquals(-1, given.rosbridge(), "no rosbridge unless asked");
-        assertEquals(9090, OptionsParser.parse("--world", "a.world", "--rosbridge", "9090").rosbridge());
+        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, -1),
+                OptionsParser.parse("--world", "a.world"), "no rosbridge unless asked");
+        assertEquals(new Options.World(Path.of("a.world"), 0, "127.0.0.1", -1),
+                OptionsParser.parse("--bind", "127.0.0.1", "--port", "0", "--world", "a.world"));
+        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, 9090),
+                OptionsParser.parse("--world", "a.world", "--rosbridge", "9090"));
     }
 
     @Test
@@ -46,21 +41,22 @@ class OptionsParserTest {
 
     @Test
     void exportWorldWithItsOut() throws Exception {
-        assertEquals(new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, Path.of("run.rec"), Path.of("run.world"), -1),
+        assertEquals(new Options.ExportWorld(Path.of("run.rec"), Path.of("run.world")),
                 OptionsParser.parse("--export-world", "run.rec", "--out", "run.world"));
     }
 
     /** As before the parser: --version and --help end the reading; what follows them is not looked at. */
     @Test
     void versionAndHelpStopTheReading() throws Exception {
-        assertEquals(Action.VERSION, OptionsParser.parse("--headless", "--version", "--no-such").action());
-        assertEquals(Action.HELP, OptionsParser.parse("-h", "--start", "--headless").action());
+        assertEquals(new Options.Version(), OptionsParser.parse("--headless", "--version", "--no-such"));
+        assertEquals(new Options.Help(), OptionsParser.parse("-h", "--start", "--headless"));
         assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--no-such", "--version"));
     }
 
     @Test
     void theLastOfARepeatedOptionCounts() throws Exception {
-        assertEquals(Path.of("b.properties"), OptionsParser.parse("--config", "a.properties", "--config", "b.properties").config());
+        assertEquals(new Options.Serve(false, false, Path.of("b.properties")),
+                OptionsParser.parse("--config", "a.properties", "--config", "b.properties"));
     }
 
     @Test

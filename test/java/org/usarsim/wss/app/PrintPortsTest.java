@@ -101,8 +101,8 @@ class PrintPortsTest {
 
     @Test
     void onlyConfigGoesWithIt() throws Exception {
-        assertEquals(Options.Action.PRINT_PORTS, OptionsParser.parse("--config", "a.properties", "--print-ports").action());
-        assertEquals(Path.of("a.properties"), OptionsParser.parse("--print-ports", "--config", "a.properties").config());
+        assertEquals(new Options.PrintPorts(Path.of("a.properties")), OptionsParser.parse("--config", "a.properties", "--print-ports"));
+        assertEquals(new Options.PrintPorts(Path.of("a.properties")), OptionsParser.parse("--print-ports", "--config", "a.properties"));
         for (List<String> args : List.of(List.of("--print-ports", "--headless"), List.of("--print-ports", "--start"),
                 List.of("--world", "w.world", "--print-ports"))) {
             OptionsParser.Mistake mistake = assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse(args.toArray(String[]::new)));

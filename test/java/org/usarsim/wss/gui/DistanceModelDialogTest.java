@@ -498,15 +498,15 @@ class DistanceModelDialogTest {
         Locale before = Locale.getDefault();
         try {
             Locale.setDefault(Locale.GERMANY);
-            assertEquals("43055.6347", DistanceModelDialog.format(43055.634744));
-            assertEquals("3.0007", DistanceModelDialog.format(3.000712));
-            assertEquals("2", DistanceModelDialog.format(2.0000001));
-            assertEquals("0", DistanceModelDialog.format(-0.00001 * 0));
-            assertEquals("-93.5", DistanceModelDialog.format(-93.5));
+            assertEquals("43055.6347", CutoffDistance.format(43055.634744));
+            assertEquals("3.0007", CutoffDistance.format(3.000712));
+            assertEquals("2", CutoffDistance.format(2.0000001));
+            assertEquals("0", CutoffDistance.format(-0.00001 * 0));
+            assertEquals("-93.5", CutoffDistance.format(-93.5));
             // what four decimals would show as 0, and the very large: exponent notation, still a number
-            assertEquals(1.23457e-5, Double.parseDouble(DistanceModelDialog.format(0.0000123456789)), 1e-10);
-            assertTrue(Double.parseDouble(DistanceModelDialog.format(0.0000123456789)) > 0);
-            assertEquals(1.23457e43, Double.parseDouble(DistanceModelDialog.format(1.234567e43)), 1e38);
+            assertEquals(1.23457e-5, Double.parseDouble(CutoffDistance.format(0.0000123456789)), 1e-10);
+            assertTrue(Double.parseDouble(CutoffDistance.format(0.0000123456789)) > 0);
+            assertEquals(1.23457e43, Double.parseDouble(CutoffDistance.format(1.234567e43)), 1e38);
         } finally {
             Locale.setDefault(before);
         }

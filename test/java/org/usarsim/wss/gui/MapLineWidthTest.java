@@ -53,11 +53,11 @@ class MapLineWidthTest {
 
     @Test
     void theLabelSaysTheStrengthAndTheRateOfAPairThatIsUp() {
-        assertEquals("-71.3 dBm, 54 Mbit/s", MapPanel.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 54_000_000)));
-        assertEquals("-71.3 dBm", MapPanel.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 0)), "not shaped");
-        assertEquals("-95.0 dBm", MapPanel.lineLabel(new MapData.Line("A", "B", PairState.BROKEN, -95, 6_000_000)));
-        assertEquals("1.5 Mbit/s", MapPanel.lineLabel(new MapData.Line("A", "B", PairState.FORCED_UP, Double.NaN, 1_500_000)));
-        assertEquals("", MapPanel.lineLabel(new MapData.Line("A", "B", PairState.UP, Double.POSITIVE_INFINITY, 0)));
+        assertEquals("-71.3 dBm, 54 Mbit/s", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 54_000_000)));
+        assertEquals("-71.3 dBm", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 0)), "not shaped");
+        assertEquals("-95.0 dBm", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.BROKEN, -95, 6_000_000)));
+        assertEquals("1.5 Mbit/s", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.FORCED_UP, Double.NaN, 1_500_000)));
+        assertEquals("", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, Double.POSITIVE_INFINITY, 0)));
     }
 
     private static MapData.Line line(PairState state, long rate) {

@@ -49,9 +49,9 @@ class MapTransformTest {
 
     @Test
     void theGridStepIsARoundNumberOfMetres() {
-        assertEquals(10, MapPanel.gridStep(10), 1e-9); // 60 px / 10 px a metre = 6 m: 10 m
-        assertEquals(2, MapPanel.gridStep(40), 1e-9); // 1.5 m: 2 m
-        assertEquals(0.5, MapPanel.gridStep(200), 1e-9); // 0.3 m: 0.5 m
+        assertEquals(10, MapPainter.gridStep(10), 1e-9); // 60 px / 10 px a metre = 6 m: 10 m
+        assertEquals(2, MapPainter.gridStep(40), 1e-9); // 1.5 m: 2 m
+        assertEquals(0.5, MapPainter.gridStep(200), 1e-9); // 0.3 m: 0.5 m
     }
 
     @Test

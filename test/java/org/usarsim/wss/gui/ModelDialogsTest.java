@@ -39,8 +39,8 @@ import org.usarsim.wss.model.PluginJars;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.StubModel;
 import org.usarsim.wss.model.ModelSettings;
-import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.distance.DistanceOnlyPropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
@@ -55,7 +55,7 @@ import org.usarsim.wss.model.obstacle.ObstaclePropagationModel;
 class ModelDialogsTest {
 
     /** A model of a plugin, not a simulator model: records what the dialogs do to it. */
-    private static final class Recorder implements PropagationModel {
+    private static final class Recorder extends StubModel {
         private final String name;
         private final boolean configurable;
         private final List<Setting> settings;
@@ -81,7 +81,7 @@ class ModelDialogsTest {
 
         @Override
         public DialogLayout dialogLayout() {
-            return layout == null ? PropagationModel.super.dialogLayout() : layout;
+            return layout == null ? super.dialogLayout() : layout;
         }
 
         @Override
@@ -109,36 +109,6 @@ class ModelDialogsTest {
             dialogEditable = editable;
         }
 
-        @Override
-        public void setRobotLinkModel(RobotLinkModel linkModel) {
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-        }
-
-        @Override
-        public void start() {
-        }
-
-        @Override
-        public void shutdown() {
-        }
-
-        @Override
-        public boolean isActive() {
-            return false;
-        }
-
-        @Override
-        public double getSignalStrengthForPair(String from, String to) {
-            return 0;
-        }
-
-        @Override
-        public boolean connectionIsPossibleForPair(String from, String to) {
-            return true;
-        }
     }
 
     /** The server, for a model's start(); it is never reached here. */

@@ -31,12 +31,9 @@ import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.FakeReplay;
 import org.usarsim.wss.model.ModelProvider;
-import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Replay;
-import org.usarsim.wss.model.RobotLinkModel;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StubModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 
 /**
@@ -53,16 +50,15 @@ class ReplayBarWindowTest {
      * A model that replays a 12-minute recording: r2 stands (the replay's time) metres east of r1,
      * and from 5 minutes on the pair is broken, as the recording had it; a jump applies that.
      */
-    static final class ReplayingModel implements PropagationModel {
+    static final class ReplayingModel extends StubModel {
         final FakeReplay replay = new FakeReplay(720);
-        volatile RobotLinkModel links;
 
         ReplayingModel() {
             replay.onJump(seconds -> {
                 if (seconds >= 300) {
-                    links.breakConnectionsForPair("r1", "r2");
+                    links().breakConnectionsForPair("r1", "r2");
                 } else {
-                    links.resumeConnectionsForPair("r1", "r2");
+                    links().resumeConnectionsForPair("r1", "r2");
                 }
             });
         }
@@ -83,23 +79,6 @@ class ReplayBarWindowTest {
         }
 
         @Override
-        public void setRobotLinkModel(RobotLinkModel linkModel) {
-            links = linkModel;
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-        }
-
-        @Override
-        public void start() throws ModelStartException {
-        }
-
-        @Override
-        public void shutdown() {
-        }
-
-        @Override
         public boolean isActive() {
             return true;
         }
@@ -107,11 +86,6 @@ class ReplayBarWindowTest {
         @Override
         public double getSignalStrengthForPair(String from, String to) {
             return -50;
-        }
-
-        @Override
-        public boolean connectionIsPossibleForPair(String from, String to) {
-            return true;
         }
     }
 

@@ -51,40 +51,9 @@ class ModelProviderTest {
     }
 
     /** A model that brings a dialog of its own, which keeps what the user entered in the instance. */
-    private static final class OwnDialog implements PropagationModel {
+    private static final class OwnDialog extends StubModel {
         @Override
         public boolean isConfigurable() {
-            return true;
-        }
-
-        @Override
-        public void setRobotLinkModel(RobotLinkModel linkModel) {
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-        }
-
-        @Override
-        public void start() {
-        }
-
-        @Override
-        public void shutdown() {
-        }
-
-        @Override
-        public boolean isActive() {
-            return false;
-        }
-
-        @Override
-        public double getSignalStrengthForPair(String from, String to) {
-            return 0;
-        }
-
-        @Override
-        public boolean connectionIsPossibleForPair(String from, String to) {
             return true;
         }
     }

@@ -3,28 +3,36 @@ package org.usarsim.wss.app;
 import java.nio.file.Path;
 
 /**
- * What the command line asks for, read and checked by {@link OptionsParser} before anything
- * runs; {@link Main} only dispatches on {@link #action}. What an action does not use is null
- * (or false): {@code port} and {@code bind} are the world server's, with their defaults filled
- * in; {@code export} and {@code out} are --export-world's; {@code rosbridge} is the world
- * server's rosbridge port, -1 when it serves none.
+ * What the command line asks for, read and checked by {@link OptionsParser} before anything runs:
+ * one record per action, holding what that action uses and nothing else; {@link Main} dispatches
+ * on its type.
  */
-record Options(Action action, boolean headless, boolean start, Path config, Path world, int port, String bind,
-        Path export, Path out, int rosbridge) {
+sealed interface Options {
 
-    /** What Main does. */
-    enum Action {
-        /** The WSS: its window, or headless ({@code --headless}, or no display). */
-        SERVE,
-        /** {@code --world FILE}: the world server. */
-        WORLD,
-        /** {@code --export-world RUN.rec}: a recording written as a world file. */
-        EXPORT_WORLD,
-        /** {@code --print-ports [--config FILE]}: print the fixed ports of the configuration. */
-        PRINT_PORTS,
-        /** {@code --version}: print the version. */
-        VERSION,
-        /** {@code --help}: print the help and every property of --config FILE. */
-        HELP
+    /** The WSS: its window ({@code --start} presses Start at once), or headless ({@code --headless}, or no display); {@code config} null without {@code --config}. */
+    record Serve(boolean headless, boolean start, Path config) implements Options {
+    }
+
+    /**
+     * {@code --world FILE}: the world server, on {@code port} at {@code bind} (their defaults
+     * filled in); {@code rosbridge} its rosbridge port, -1 when it serves none.
+     */
+    record World(Path file, int port, String bind, int rosbridge) implements Options {
+    }
+
+    /** {@code --export-world RUN.rec}: a recording written as a world file, to {@code out} ({@code --out}), or to standard output when it is null. */
+    record ExportWorld(Path recording, Path out) implements Options {
+    }
+
+    /** {@code --print-ports [--config FILE]}: print the fixed ports of the configuration; {@code config} null without one. */
+    record PrintPorts(Path config) implements Options {
+    }
+
+    /** {@code --version}: print the version. */
+    record Version() implements Options {
+    }
+
+    /** {@code --help}: print the help and every property of --config FILE. */
+    record Help() implements Options {
     }
 }

@@ -6,12 +6,12 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
-import org.usarsim.wss.app.Options.Action;
 
 /**
  * Reads Main's command line into an {@link Options}: each option once in {@link #FLAGS} (its
  * names, its value, its --help text), then the rules on how they combine. A new option is a row
- * in {@link #FLAGS}, a component of {@link Options} and its place in {@link #options}. Every
+ * in {@link #FLAGS}, a component of the {@link Options} record of its action and its place in
+ * {@link #options}. Every
  * mistake is a {@link Mistake} whose message is the one line (with the usage) Main prints.
  */
 final class OptionsParser {
@@ -124,10 +124,10 @@ final class OptionsParser {
                 throw new Mistake("unknown argument " + args[i] + "\n" + USAGE);
             }
             if (flag.key().equals("--version")) {
-                return only(Action.VERSION);
+                return new Options.Version();
             }
             if (flag.key().equals("--help")) {
-                return only(Action.HELP);
+                return new Options.Help();
             }
             if (flag.value() == null) {
                 given.put(flag.key(), "");
@@ -142,10 +142,6 @@ final class OptionsParser {
 
     private static Flag flag(String arg) {
         return FLAGS.stream().filter(flag -> flag.names().contains(arg)).findFirst().orElse(null);
-    }
-
-    private static Options only(Action action) {
-        return new Options(action, false, false, null, null, 0, null, null, null, -1);
     }
 
     /** The options given, checked against each other in this order. */
@@ -164,7 +160,7 @@ final class OptionsParser {
             throw new Mistake("--print-ports only prints the fixed ports of --config FILE: no other option\n" + USAGE);
         }
         if (printPorts) {
-            return new Options(Action.PRINT_PORTS, false, false, config, null, 0, null, null, null, -1);
+            return new Options.PrintPorts(config);
         }
         if (export != null && (headless || config != null || start || world != null || port != null || bind != null
                 || rosbridge != null)) {
@@ -176,7 +172,7 @@ final class OptionsParser {
             throw new Mistake("--out is where --export-world writes: it needs --export-world RUN.rec\n" + USAGE);
         }
         if (export != null) {
-            return new Options(Action.EXPORT_WORLD, false, false, null, null, 0, null, export, out, -1);
+            return new Options.ExportWorld(export, out);
         }
         if (world != null && (headless || config != null)) {
             throw new Mistake("--world runs the world server alone, without --headless or --config\n" + USAGE);
@@ -191,11 +187,10 @@ final class OptionsParser {
             throw new Mistake("--port, --bind and --rosbridge are for the world server: they need --world FILE\n" + USAGE);
         }
         if (world != null) {
-            return new Options(Action.WORLD, false, false, null, world,
-                    port("--port", port == null ? String.valueOf(Defaults.WORLD_PORT) : port),
-                    bind == null ? Defaults.ALL_INTERFACES : bind, null, null, rosbridge == null ? -1 : port("--rosbridge", rosbridge));
+            return new Options.World(world, port("--port", port == null ? String.valueOf(Defaults.WORLD_PORT) : port),
+                    bind == null ? Defaults.ALL_INTERFACES : bind, rosbridge == null ? -1 : port("--rosbridge", rosbridge));
         }
-        return new Options(Action.SERVE, headless, start, config, null, 0, null, null, null, -1);
+        return new Options.Serve(headless, start, config);
     }
 
     private static Path path(Map<String, String> given, String key) {

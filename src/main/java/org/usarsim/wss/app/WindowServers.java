@@ -33,7 +33,7 @@ final class WindowServers implements Servers {
     @Override
     public Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, boolean record, ShapingConfig shaping,
             WssEventListener listener) throws Server.StartFailure {
-        String problem = Setting.find(ConfigFile.SERVER, "wss.port").problem(port);
+        String problem = Setting.find(ConfigKeys.SERVER, "wss.port").problem(port);
         if (problem != null) {
             throw new Server.StartFailure("the port '" + port + "' is not " + problem);
         }

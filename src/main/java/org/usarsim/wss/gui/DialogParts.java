@@ -9,8 +9,10 @@ import java.awt.Insets;
 import java.awt.Window;
 import java.awt.event.KeyEvent;
 import java.util.List;
+import java.util.prefs.BackingStoreException;
 import javax.swing.BorderFactory;
 import javax.swing.JButton;
+import javax.swing.JCheckBox;
 import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
@@ -22,8 +24,10 @@ import javax.swing.event.DocumentListener;
 import javax.swing.text.JTextComponent;
 
 /**
- * What the settings dialogs share ({@link DistanceModelDialog}, {@link GeneratedModelDialog}): the
- * component names tests find, the colours of a refusal, the buttons, the words of a refusal.
+ * What the settings dialogs share ({@link DistanceModelDialog}, {@link GeneratedModelDialog},
+ * {@link LinkShapingDialog}, {@link RateLimitDialog}): the component names tests find, the colours
+ * of a refusal, the buttons, a row of label, field and unit, the words of a refusal, storing the
+ * values; their checked fields are {@link CheckedField}s, what OK refused {@link Refusals}.
  */
 final class DialogParts {
 
@@ -85,6 +89,46 @@ final class DialogParts {
         c.insets = new Insets(3, leftInset, 3, 0);
         c.weightx = last ? 1 : 0;
         return c;
+    }
+
+    /** A row of a group: the label, the field after it, then what goes beside (a unit, a button), which takes the spare width. */
+    static void row(JPanel panel, int y, JLabel label, JComponent field, JComponent beside) {
+        panel.add(label, cell(0, y, 0, false));
+        panel.add(field, cell(1, y, 8, false));
+        panel.add(beside, cell(2, y, 6, true));
+    }
+
+    /** The unit after a field, its help as tooltip. */
+    static JLabel unit(String text, String help) {
+        JLabel unit = new JLabel(text);
+        unit.setToolTipText(help);
+        return unit;
+    }
+
+    /** A check box named for tests, its help as tooltip, ticked or not, greyed unless {@code editable}. */
+    static JCheckBox checkBox(JCheckBox box, String name, String help, boolean selected, boolean editable) {
+        box.setName(name);
+        box.setToolTipText(help);
+        box.setSelected(selected);
+        box.setEnabled(editable);
+        return box;
+    }
+
+    /** Storing a dialog's values, which may fail. */
+    @FunctionalInterface
+    interface Store {
+        void store() throws BackingStoreException;
+    }
+
+    /** Stores the values; when that fails, says so in {@code message} and returns false (the dialog stays open). */
+    static boolean stored(JLabel message, Store store) {
+        try {
+            store.store();
+            return true;
+        } catch (BackingStoreException | RuntimeException e) {
+            showMessage(message, "Cannot save the settings: " + e.getMessage());
+            return false;
+        }
     }
 
     /** A panel with a titled border, for a group of fields. */

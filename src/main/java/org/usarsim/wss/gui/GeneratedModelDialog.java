@@ -1,16 +1,12 @@
 package org.usarsim.wss.gui;
 
-import java.awt.Color;
 import java.awt.Window;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.prefs.BackingStoreException;
 import javax.swing.JButton;
 import javax.swing.JCheckBox;
 import javax.swing.JComponent;
-import javax.swing.JDialog;
-import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
 import org.usarsim.wss.model.PropagationModel;
@@ -25,80 +21,44 @@ import org.usarsim.wss.model.Setting;
  * {@link ModelPreferences}. Read-only (the server runs): every field disabled, Close only.
  * Modal; build and show it on the Swing event thread.
  */
-final class GeneratedModelDialog extends JDialog {
+final class GeneratedModelDialog extends ModelSettingsDialog {
 
-    private final PropagationModel model;
-    private final List<Setting> declared;
-    private final boolean editable;
-    private final ModelPreferences preferences;
 
-    private final Map<String, JTextField> fields = new LinkedHashMap<>();
+    private final Map<String, CheckedField> fields = new LinkedHashMap<>();
     private final Map<String, JCheckBox> boxes = new LinkedHashMap<>();
-    private final JLabel message = new JLabel(" ");
-    private Color normalBackground;
-    private boolean saved;
 
     /**
      * Shows {@code values} (a value for each key the model declares); OK stores the values in
      * {@code model.name()}'s preferences. It does not touch the model itself.
      */
     GeneratedModelDialog(Window owner, PropagationModel model, boolean editable, ModelPreferences preferences, Map<String, String> values) {
-        super(owner, model.name() + " Configuration", ModalityType.APPLICATION_MODAL);
-        this.model = model;
-        this.declared = model.settings();
-        this.editable = editable;
-        this.preferences = preferences;
-        setDefaultCloseOperation(DISPOSE_ON_CLOSE);
-
+        super(owner, model, editable, preferences);
         JPanel rows = DialogParts.titled("Settings");
         int row = 0;
         for (Setting setting : declared) {
             JComponent field = field(setting, values.get(setting.key()));
-            rows.add(DialogParts.label(setting.label(), setting.help(), field), DialogParts.cell(0, row, 0, false));
-            rows.add(field, DialogParts.cell(1, row, 8, false));
-            if (setting.key().endsWith(".file") && field instanceof JTextField path) {
-                rows.add(browse(setting, path), DialogParts.cell(2, row, 6, true));
-            } else {
-                JLabel unit = new JLabel(setting.unit() == null ? "" : setting.unit());
-                unit.setToolTipText(setting.help());
-                rows.add(unit, DialogParts.cell(2, row, 6, true));
-            }
+            JComponent beside = setting.key().endsWith(".file") && field instanceof JTextField path ? browse(setting, path)
+                    : DialogParts.unit(setting.unit() == null ? "" : setting.unit(), setting.help());
+            DialogParts.row(rows, row, DialogParts.label(setting.label(), setting.help(), field), field, beside);
             row++;
         }
 
         DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
     }
 
-    /** Whether OK stored the values. */
-    boolean saved() {
-        return saved;
-    }
-
     private JComponent field(Setting setting, String value) {
         if (setting.type() == Setting.Type.BOOLEAN) {
-            JCheckBox box = new JCheckBox();
-            box.setName(setting.key());
-            box.setToolTipText(setting.help());
-            box.setSelected(Boolean.parseBoolean(value));
-            box.setEnabled(editable);
+            JCheckBox box = DialogParts.checkBox(new JCheckBox(), setting.key(), setting.help(), Boolean.parseBoolean(value), editable);
             boxes.put(setting.key(), box);
             return box;
         }
-        JTextField field = new JTextField(value, 14);
-        field.setName(setting.key());
-        field.setToolTipText(setting.help());
-        field.setMinimumSize(field.getPreferredSize());
-        normalBackground = field.getBackground();
-        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
-            mark(field, setting.problem(field.getText()) != null);
-            message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
-        }));
-        mark(field, setting.problem(value) != null);
+        CheckedField field = new CheckedField(new JTextField(value, 14), setting.key(), setting.help(), setting::problem, message, () -> { });
+        field.mark();
         if (!editable) {
-            DialogParts.readOnly(field);
+            DialogParts.readOnly(field.field());
         }
         fields.put(setting.key(), field);
-        return field;
+        return field.field();
     }
 
     /**
@@ -132,46 +92,22 @@ final class GeneratedModelDialog extends JDialog {
         return browse;
     }
 
-    private void mark(JTextField field, boolean invalid) {
-        field.setBackground(invalid ? DialogParts.INVALID : normalBackground);
-    }
-
     private void ok() {
         Map<String, String> values = new LinkedHashMap<>();
-        JTextField first = null;
-        String refusal = null;
-        int refused = 0;
+        Refusals refused = new Refusals();
         for (Setting setting : declared) {
             JCheckBox box = boxes.get(setting.key());
             if (box != null) {
                 values.put(setting.key(), String.valueOf(box.isSelected()));
                 continue;
             }
-            JTextField field = fields.get(setting.key());
-            String text = field.getText().strip();
-            String problem = setting.problem(text);
-            mark(field, problem != null);
+            CheckedField field = fields.get(setting.key());
+            String problem = field.mark();
             if (problem != null) {
-                refused++;
-                if (first == null) {
-                    first = field;
-                    refusal = DialogParts.refusal(setting.labelWithUnit(), text, problem);
-                }
+                refused.add(field.field(), DialogParts.refusal(setting.labelWithUnit(), field.text(), problem));
             }
-            values.put(setting.key(), text);
+            values.put(setting.key(), field.text());
         }
-        if (first != null) {
-            DialogParts.showMessage(message, refusal + (refused > 1 ? " (and " + (refused - 1) + " more marked)" : ""));
-            first.requestFocusInWindow();
-            return;
-        }
-        try {
-            preferences.store(model, values);
-        } catch (BackingStoreException | RuntimeException e) {
-            DialogParts.showMessage(message, "Cannot save the settings: " + e.getMessage());
-            return;
-        }
-        saved = true;
-        dispose();
+        finish(refused, values);
     }
 }

@@ -1,17 +1,13 @@
 package org.usarsim.wss.gui;
 
-import java.awt.Color;
 import java.awt.Dimension;
 import java.awt.FlowLayout;
 import java.awt.Window;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.prefs.BackingStoreException;
 import javax.swing.BorderFactory;
 import javax.swing.JCheckBox;
-import javax.swing.JComponent;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -51,12 +47,11 @@ final class LinkShapingDialog extends JDialog {
     private final boolean editable;
     private final WindowPreferences preferences;
     private final JCheckBox shaping = new JCheckBox("Shape every link like radio");
-    private final JTextField rates = new JTextField(40);
-    private final JTextField delay = new JTextField(6);
-    private final JTextField queue = new JTextField(6);
     private final JCheckBox airtime = new JCheckBox("A robot's links share its radio's airtime");
     private final JLabel message = new JLabel(" ");
-    private final Color normalBackground = rates.getBackground();
+    private final CheckedField rates;
+    private final CheckedField delay;
+    private final CheckedField queue;
     private boolean saved;
 
     /** Shows {@code values} (a value for each of the five keys); OK stores them in {@code preferences}. */
@@ -69,13 +64,13 @@ final class LinkShapingDialog extends JDialog {
         JPanel rows = DialogParts.titled(editable ? "For the next Start" : "Of the server that runs (Stop it to change them)");
         box(rows, 0, "Link shaping", shaping, ShapingConfig.SHAPING, "on".equalsIgnoreCase(values.get(ShapingConfig.SHAPING)),
                 "Shape every link: rate and delay from the signal strength, a robot's airtime shared (wss.shaping, docs/shaping.md)");
-        field(rows, 1, RATES_LABEL, rates, ShapingConfig.RATES, values.get(ShapingConfig.RATES), "dBm:rate, strongest first",
+        rates = field(rows, 1, RATES_LABEL, new JTextField(40), ShapingConfig.RATES, values.get(ShapingConfig.RATES), "dBm:rate, strongest first",
                 RATES_HELP);
-        field(rows, 2, DELAY_LABEL, delay, ShapingConfig.DELAY_MS, values.get(ShapingConfig.DELAY_MS), "ms, besides each byte's airtime",
+        delay = field(rows, 2, DELAY_LABEL, new JTextField(6), ShapingConfig.DELAY_MS, values.get(ShapingConfig.DELAY_MS), "ms, besides each byte's airtime",
                 DELAY_HELP);
         box(rows, 3, "Shared airtime", airtime, ShapingConfig.AIRTIME, Boolean.parseBoolean(values.get(ShapingConfig.AIRTIME)),
                 "Links sharing a robot share its radio's airtime, by time (wss.shaping.airtime)");
-        field(rows, 4, QUEUE_LABEL, queue, ShapingConfig.QUEUE_MS, values.get(ShapingConfig.QUEUE_MS), "ms at the link's rate, beyond its delay",
+        queue = field(rows, 4, QUEUE_LABEL, new JTextField(6), ShapingConfig.QUEUE_MS, values.get(ShapingConfig.QUEUE_MS), "ms at the link's rate, beyond its delay",
                 QUEUE_HELP);
 
         DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
@@ -100,68 +95,44 @@ final class LinkShapingDialog extends JDialog {
     }
 
     private void box(JPanel panel, int y, String label, JCheckBox box, String key, boolean selected, String help) {
-        box.setName(key);
-        box.setToolTipText(help);
-        box.setSelected(selected);
-        box.setEnabled(editable);
+        DialogParts.checkBox(box, key, help, selected, editable);
         panel.add(DialogParts.label(label, help, box), DialogParts.cell(0, y, 0, false));
         panel.add(box, DialogParts.cell(1, y, 4, true));
     }
 
-    private void field(JPanel panel, int y, String label, JTextField field, String key, String value, String unit, String help) {
-        field.setName(key);
-        field.setText(value);
-        field.setMinimumSize(field.getPreferredSize());
-        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
-            mark(field, help);
-            message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
-        }));
-        mark(field, help);
+    /** A text field checked by {@link ShapingValues#problem}, the reason in its tooltip while refused, its unit right after it. */
+    private CheckedField field(JPanel panel, int y, String label, JTextField text, String key, String value, String unit, String help) {
+        CheckedField field = new CheckedField(text, key, help, typed -> ShapingValues.problem(key, typed), message, () -> { });
+        text.setText(value);
+        field.problemInTip();
         if (!editable) {
-            DialogParts.readOnly(field);
+            DialogParts.readOnly(text);
         }
-        JLabel units = new JLabel(unit);
-        units.setToolTipText(help);
+        JLabel units = DialogParts.unit(unit, help);
         units.setBorder(BorderFactory.createEmptyBorder(0, 6, 0, 0));
         JPanel beside = new JPanel(new FlowLayout(FlowLayout.LEADING, 0, 0)); // the unit right after a short field too
-        beside.add(field);
+        beside.add(text);
         beside.add(units);
-        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
+        panel.add(DialogParts.label(label, help, text), DialogParts.cell(0, y, 0, false));
         panel.add(beside, DialogParts.cell(1, y, 8, true));
-    }
-
-    /** Red with the reason as its tooltip while its value is refused; else its help. */
-    private void mark(JTextField field, String help) {
-        String problem = ShapingValues.problem(field.getName(), field.getText());
-        field.setBackground(problem != null ? DialogParts.INVALID : normalBackground);
-        field.setToolTipText(problem != null ? problem : help);
+        return field;
     }
 
     private void ok() {
         Map<String, String> values = new LinkedHashMap<>();
         values.put(ShapingConfig.SHAPING, shaping.isSelected() ? "on" : "off");
-        values.put(ShapingConfig.RATES, rates.getText().strip());
-        values.put(ShapingConfig.DELAY_MS, delay.getText().strip());
+        values.put(ShapingConfig.RATES, rates.text());
+        values.put(ShapingConfig.DELAY_MS, delay.text());
         values.put(ShapingConfig.AIRTIME, String.valueOf(airtime.isSelected()));
-        values.put(ShapingConfig.QUEUE_MS, queue.getText().strip());
-        List<JTextField> refused = new ArrayList<>();
-        String first = null;
-        for (JTextField field : List.of(rates, delay, queue)) {
-            String problem = ShapingValues.problem(field.getName(), field.getText());
+        values.put(ShapingConfig.QUEUE_MS, queue.text());
+        Refusals refused = new Refusals();
+        for (CheckedField field : List.of(rates, delay, queue)) {
+            String problem = field.problem();
             if (problem != null) {
-                first = first != null ? first : LABELS.get(field.getName()) + ": " + problem;
-                refused.add(field);
+                refused.add(field.field(), LABELS.get(field.field().getName()) + ": " + problem);
             }
         }
-        if (first != null) {
-            DialogParts.showMessage(message, first + (refused.size() > 1 ? " (and " + (refused.size() - 1) + " more marked)" : ""));
-            refused.get(0).requestFocusInWindow();
-            return;
-        }
-        try {
-            preferences.storeShaping(values);
-        } catch (BackingStoreException | RuntimeException e) {
-            DialogParts.showMessage(message, "Cannot save the settings: " + e.getMessage());
+        if (refused.show(message) || !DialogParts.stored(message, () -> preferences.storeShaping(values))) {
             return;
         }
         saved = true;

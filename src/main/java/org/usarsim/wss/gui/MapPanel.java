@@ -1,24 +1,17 @@
 package org.usarsim.wss.gui;
 
-import java.awt.BasicStroke;
 import java.awt.BorderLayout;
 import java.awt.Color;
 import java.awt.Dimension;
-import java.awt.Font;
-import java.awt.FontMetrics;
 import java.awt.Graphics;
 import java.awt.Graphics2D;
-import java.awt.RenderingHints;
-import java.awt.Stroke;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseWheelEvent;
-import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.util.List;
-import java.util.Locale;
 import java.util.Objects;
 import javax.swing.DefaultListModel;
 import javax.swing.JComponent;
@@ -28,9 +21,7 @@ import javax.swing.JPanel;
 import javax.swing.JPopupMenu;
 import javax.swing.JScrollPane;
 import javax.swing.SwingUtilities;
-import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * The "Map" tab: the robots at their positions (names beside the dots), a line per pair coloured
@@ -38,19 +29,15 @@ import org.usarsim.wss.shaping.Bitrate;
  * when forced, the selected robot's range as a circle, the walls, and
  * beside it the robots without a position. Fits the world until the user zooms (wheel) or pans
  * (drag); a double click fits it again. A click on a dot selects the robot; a right click on a line
- * opens the {@link ForceMenu}. Event thread only; painting reads the {@link MapData} it was given.
+ * opens the {@link ForceMenu}. Event thread only; painting ({@link MapPainter}) reads the {@link MapData} it was given.
  */
 final class MapPanel extends JPanel {
 
     static final int MARGIN = 40;
     /** How near, in pixels, a click must be to a dot or a line to hit it. */
     static final int HIT = 8;
-    private static final int DOT = 10;
-    private static final Color WALL = new Color(0x40, 0x40, 0x48);
-    private static final Color ROBOT = new Color(0x1F, 0x4E, 0x9A);
-    private static final Color SELECTED = new Color(0xD0, 0x40, 0x20);
-    private static final Color RANGE = new Color(0x1F, 0x4E, 0x9A);
-    private static final Color GRID = new Color(0xEE, 0xEE, 0xF2);
+    /** A robot's dot, in pixels. */
+    static final int DOT = 10;
 
     private final Canvas canvas = new Canvas();
     private final DefaultListModel<String> unplaced = new DefaultListModel<>();
@@ -120,9 +107,7 @@ final class MapPanel extends JPanel {
 
     /** Where the robot's dot is on the canvas; null when it has no position or is not shown. */
     Point2D screenOf(String robot) {
-        MapData.Robot known = data.robot(robot);
-        return known == null || known.position() == null ? null
-                : transform().toScreen(known.position().x(), known.position().y());
+        return MapPainter.screenOf(transform(), data, robot);
     }
 
     /** The rectangle of the world that fitting shows: the positions and the walls. */
@@ -253,224 +238,10 @@ final class MapPanel extends JPanel {
         protected void paintComponent(Graphics graphics) {
             Graphics2D g = (Graphics2D) graphics.create();
             try {
-                g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
-                g.setRenderingHint(RenderingHints.KEY_TEXT_ANTIALIASING, RenderingHints.VALUE_TEXT_ANTIALIAS_ON);
-                g.setColor(getBackground());
-                g.fillRect(0, 0, getWidth(), getHeight());
-                MapData shown = data;
-                MapTransform t = transform();
-                double step = gridStep(t.scale());
-                paintGrid(g, t, step);
-                paintWalls(g, t, shown);
-                LabelPlacer labels = new LabelPlacer(new Rectangle2D.Double(0, 0, getWidth(), getHeight()));
-                nameBoxes(g, t, shown, labels);
-                paintRange(g, t, shown, labels);
-                paintLines(g, t, shown, labels);
-                paintRobots(g, t, shown);
-                paintLegend(g, step, shown);
-                lastLabels = labels;
-                if (shown.robots().stream().noneMatch(robot -> robot.position() != null)) {
-                    g.setColor(Color.GRAY);
-                    String text = shown.robots().isEmpty() ? "No robots" : "No robot has a position (the model gives none)";
-                    g.drawString(text, (getWidth() - g.getFontMetrics().stringWidth(text)) / 2, getHeight() / 2);
-                }
+                lastLabels = new MapPainter(getWidth(), getHeight(), getFont(), getBackground(), selected).paint(g, transform(), data);
             } finally {
                 g.dispose();
             }
         }
-
-        private void paintGrid(Graphics2D g, MapTransform t, double step) {
-            Point2D from = t.toWorld(0, getHeight());
-            Point2D to = t.toWorld(getWidth(), 0);
-            g.setColor(GRID);
-            g.setStroke(new BasicStroke(1));
-            for (double x = Math.floor(from.getX() / step) * step; x <= to.getX(); x += step) {
-                int sx = (int) Math.round(t.toScreen(x, 0).getX());
-                g.drawLine(sx, 0, sx, getHeight());
-            }
-            for (double y = Math.floor(from.getY() / step) * step; y <= to.getY(); y += step) {
-                int sy = (int) Math.round(t.toScreen(0, y).getY());
-                g.drawLine(0, sy, getWidth(), sy);
-            }
-        }
-
-        private void paintWalls(Graphics2D g, MapTransform t, MapData shown) {
-            g.setColor(WALL);
-            g.setStroke(new BasicStroke(3, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
-            for (Wall wall : shown.walls()) {
-                g.draw(new Line2D.Double(t.toScreen(wall.x1(), wall.y1()), t.toScreen(wall.x2(), wall.y2())));
-            }
-        }
-
-        private void paintRange(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
-            MapData.Robot robot = selected != null ? shown.robot(selected) : null;
-            if (robot == null || robot.position() == null || !(robot.range() > 0) || Double.isInfinite(robot.range())) {
-                return;
-            }
-            Point2D at = t.toScreen(robot.position().x(), robot.position().y());
-            double r = robot.range() * t.scale();
-            Ellipse2D circle = new Ellipse2D.Double(at.getX() - r, at.getY() - r, 2 * r, 2 * r);
-            g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 24));
-            g.fill(circle);
-            g.setColor(new Color(RANGE.getRed(), RANGE.getGreen(), RANGE.getBlue(), 160));
-            g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {6, 4}, 0));
-            g.draw(circle);
-            // Beside the robot's dot: the circle itself may lie beyond the canvas.
-            String label = String.format(Locale.ROOT, "range %.1f m", robot.range());
-            g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
-            FontMetrics metrics = g.getFontMetrics();
-            // Under the name first; else left of the dot, below or above it: never over another robot's name.
-            double width = metrics.stringWidth(label) + 4;
-            double top = at.getY() + 2 * DOT - metrics.getAscent();
-            double above = at.getY() - DOT / 2.0 - metrics.getAscent() - metrics.getHeight() - 2;
-            java.awt.geom.Rectangle2D box = labels.place(List.of(new Point2D.Double(at.getX() + DOT - 2, top),
-                    new Point2D.Double(at.getX() - DOT - width, top), new Point2D.Double(at.getX() + DOT - 2, above),
-                    new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight());
-            if (box != null) {
-                label(g, label, box.getX() + 2, box.getY() + metrics.getAscent());
-            }
-        }
-
-        /** The robots' names' boxes, taken first: a pair's label never lies over a name. */
-        private void nameBoxes(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
-            FontMetrics metrics = g.getFontMetrics(getFont().deriveFont(Font.BOLD, 12f));
-            for (MapData.Robot robot : shown.robots()) {
-                if (robot.position() != null) {
-                    labels.take(nameBox(t.toScreen(robot.position().x(), robot.position().y()), robot.name(), metrics));
-                }
-            }
-        }
-
-        private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
-            for (MapData.Line line : shown.lines()) {
-                Point2D a = screenOf(line.first());
-                Point2D b = screenOf(line.second());
-                if (a == null || b == null) {
-                    continue;
-                }
-                g.setColor(MapColours.of(line, shown.cutoff()));
-                g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
-                g.draw(new Line2D.Double(a, b));
-                String text = lineLabel(line);
-                if (!text.isEmpty()) {
-                    g.setFont(getFont().deriveFont(Font.PLAIN, 10f));
-                    FontMetrics metrics = g.getFontMetrics();
-                    java.awt.geom.Rectangle2D box = labels.place(LabelPlacer.alongLine(a, b, metrics.stringWidth(text) + 4,
-                            metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight());
-                    if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
-                        label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
-                    }
-                }
-            }
-        }
-
-        /** Text in the current colour and font on a light patch, legible over lines and walls. */
-        private void label(Graphics2D g, String text, double x, double y) {
-            FontMetrics metrics = g.getFontMetrics();
-            Color ink = g.getColor();
-            g.setColor(new Color(255, 255, 255, 210));
-            g.fillRect((int) x - 2, (int) y - metrics.getAscent(), metrics.stringWidth(text) + 4, metrics.getHeight());
-            g.setColor(ink);
-            g.drawString(text, (float) x, (float) y);
-        }
-
-        private Stroke lineStroke(float width, boolean dashed) {
-            return dashed ? new BasicStroke(width, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10, new float[] {8, 6}, 0)
-                    : new BasicStroke(width);
-        }
-
-        private void paintRobots(Graphics2D g, MapTransform t, MapData shown) {
-            g.setFont(getFont().deriveFont(Font.BOLD, 12f));
-            for (MapData.Robot robot : shown.robots()) {
-                Position p = robot.position();
-                if (p == null) {
-                    continue;
-                }
-                Point2D at = t.toScreen(p.x(), p.y());
-                boolean isSelected = robot.name().equals(selected);
-                g.setColor(isSelected ? SELECTED : ROBOT);
-                g.fill(new Ellipse2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT));
-                g.drawString(robot.name(), (float) at.getX() + DOT, (float) at.getY() - DOT / 2f);
-            }
-        }
-
-        /** Where a robot's name is drawn: right of its dot, its baseline half a dot above. */
-        private java.awt.geom.Rectangle2D nameBox(Point2D at, String name, FontMetrics metrics) {
-            return new java.awt.geom.Rectangle2D.Double(at.getX() + DOT, at.getY() - DOT / 2.0 - metrics.getAscent(),
-                    metrics.stringWidth(name), metrics.getHeight());
-        }
-
-        private void paintLegend(Graphics2D g, double step, MapData shown) {
-            g.setFont(getFont().deriveFont(Font.PLAIN, 11f));
-            FontMetrics metrics = g.getFontMetrics();
-            int x = 10;
-            int y = getHeight() - 12;
-            List<LegendEntry> entries = new java.util.ArrayList<>(List.of(
-                    new LegendEntry(MapColours.STRONG, false, MapLineWidth.UNSHAPED, "up"),
-                    new LegendEntry(MapColours.NEAR, false, MapLineWidth.UNSHAPED,
-                            "within " + (int) MapColours.NEAR_DB + " dB of the cutoff"),
-                    new LegendEntry(MapColours.BROKEN, false, MapLineWidth.UNSHAPED, "broken / forced down"),
-                    new LegendEntry(Color.DARK_GRAY, true, MapLineWidth.UNSHAPED, "forced")));
-            if (shown.lines().stream().anyMatch(line -> line.rate() > 0)) { // links shaped: what the widths mean
-                entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THINNEST, Bitrate.format(MapLineWidth.LOWEST)));
-                entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THICKEST, Bitrate.format(MapLineWidth.TOP)));
-            }
-            // The scale's room at the right: the legend wraps onto a row above rather than run into it.
-            int scaleLeft = getWidth() - 12 - (int) Math.round(step * transform().scale()) - 12;
-            for (LegendEntry entry : entries) {
-                int entryWidth = 30 + metrics.stringWidth(entry.text());
-                if (x > 10 && x + entryWidth > scaleLeft) {
-                    x = 10;
-                    y -= metrics.getHeight() + 4;
-                }
-                g.setColor(entry.colour());
-                g.setStroke(lineStroke(entry.width(), entry.dashed()));
-                g.drawLine(x, y - 4, x + 24, y - 4);
-                g.setColor(Color.DARK_GRAY);
-                g.drawString(entry.text(), x + 30, y);
-                x += 40 + metrics.stringWidth(entry.text());
-            }
-            // The scale: one grid step, on the bottom row.
-            y = getHeight() - 12;
-            int pixels = (int) Math.round(step * transform().scale());
-            int right = getWidth() - 12;
-            g.setStroke(new BasicStroke(2));
-            g.drawLine(right - pixels, y - 4, right, y - 4);
-            g.drawLine(right - pixels, y - 8, right - pixels, y);
-            g.drawLine(right, y - 8, right, y);
-            String label = (step >= 1 ? String.valueOf((long) step) : String.valueOf(step)) + " m";
-            g.drawString(label, right - pixels / 2 - metrics.stringWidth(label) / 2, y - 10);
-        }
-    }
-
-    /** A line of the legend: a sample of a line drawn so, and what it means. */
-    private record LegendEntry(Color colour, boolean dashed, float width, String text) {
-    }
-
-    /**
-     * The text at the middle of a pair's line: the model's strength ("-71.3 dBm", none when it
-     * has none) and with links shaped the rate of a pair that is up ("54 Mbit/s").
-     */
-    static String lineLabel(MapData.Line line) {
-        List<String> parts = new java.util.ArrayList<>();
-        if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
-            parts.add(String.format(Locale.ROOT, "%.1f dBm", line.strength()));
-        }
-        if (line.state().isUp() && line.rate() > 0) {
-            parts.add(Bitrate.format(line.rate()));
-        }
-        return String.join(", ", parts);
-    }
-
-    /** A round number of metres (1, 2 or 5 times a power of ten) that is 50 to 125 pixels at this scale. */
-    static double gridStep(double scale) {
-        double metres = 60 / scale;
-        double power = Math.pow(10, Math.floor(Math.log10(metres)));
-        for (double m : new double[] {1, 2, 5, 10}) {
-            if (m * power >= metres) {
-                return m * power;
-            }
-        }
-        return 10 * power;
     }
 }

@@ -1,8 +1,9 @@
 package org.usarsim.wss.gui;
 
-import java.awt.Color;
 import java.awt.Window;
+import java.util.List;
 import java.util.function.Function;
+import java.util.function.UnaryOperator;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
@@ -28,22 +29,23 @@ final class RateLimitDialog extends JDialog {
     static final String DELAY_LABEL = "Delay";
     private static final int MIN_WIDTH = 480;
 
-    private final JTextField rate = new JTextField(10);
-    private final JTextField delay = new JTextField(10);
     private final JLabel message = new JLabel(" ");
-    private final Color normalBackground = rate.getBackground();
+    private final CheckedField rate;
+    private final CheckedField delay;
     private RatePin pin;
 
     RateLimitDialog(Window owner, String robotA, String robotB) {
         super(owner, "Limit rate " + robotA + " - " + robotB, ModalityType.APPLICATION_MODAL);
         setDefaultCloseOperation(DISPOSE_ON_CLOSE);
         JPanel fields = DialogParts.titled("Force " + robotA + " - " + robotB + " up, both ways, until released");
-        row(fields, 0, RATE_LABEL, rate, RATE, "bit/s",
-                "The link's rate each way: a number of bit/s, with k for 1000 or M for 1000000 (800, 512k, 1.5M, 54M)");
-        row(fields, 1, DELAY_LABEL, delay, DELAY, "ms (empty: the setting's)",
+        rate = row(fields, 0, RATE_LABEL, RATE, "bit/s",
+                "The link's rate each way: a number of bit/s, with k for 1000 or M for 1000000 (800, 512k, 1.5M, 54M)",
+                text -> refusal(RATE_LABEL, text, Bitrate::parse));
+        delay = row(fields, 1, DELAY_LABEL, DELAY, "ms (empty: the setting's)",
                 "The delay of every byte besides its airtime, whole milliseconds from " + ShapingConfig.MIN_DELAY_MS + " to "
-                        + ShapingConfig.MAX_DELAY_MS + "; empty keeps wss.shaping.delayMs");
-        DialogParts.layOut(this, owner, java.util.List.of(fields), message, DialogParts.buttons(this, true, this::ok));
+                        + ShapingConfig.MAX_DELAY_MS + "; empty keeps wss.shaping.delayMs",
+                text -> text.isBlank() ? null : refusal(DELAY_LABEL, text, ShapingConfig::parseDelayMs));
+        DialogParts.layOut(this, owner, List.of(fields), message, DialogParts.buttons(this, true, this::ok));
         // Wide enough for the longest refusal (a rate's, with its examples) in the message's two lines.
         setMinimumSize(new java.awt.Dimension(Math.max(getWidth(), MIN_WIDTH), getHeight()));
         setSize(getMinimumSize());
@@ -62,27 +64,11 @@ final class RateLimitDialog extends JDialog {
         return pin;
     }
 
-    private void row(JPanel panel, int y, String label, JTextField field, String name, String unit, String help) {
-        field.setName(name);
-        field.setToolTipText(help);
-        field.setMinimumSize(field.getPreferredSize());
-        field.getDocument().addDocumentListener(DialogParts.onChange(() -> {
-            mark(field, problem(field) != null);
-            message.setText(" "); // a refusal speaks of the values OK saw; the marks stay current
-        }));
-        panel.add(DialogParts.label(label, help, field), DialogParts.cell(0, y, 0, false));
-        panel.add(field, DialogParts.cell(1, y, 8, false));
-        JLabel units = new JLabel(unit);
-        units.setToolTipText(help);
-        panel.add(units, DialogParts.cell(2, y, 6, true));
-    }
-
-    /** Why the field's value is refused ("Rate: ..."), or null when it is accepted. */
-    private String problem(JTextField field) {
-        if (field == rate) {
-            return refusal(RATE_LABEL, rate.getText(), Bitrate::parse);
-        }
-        return delay.getText().isBlank() ? null : refusal(DELAY_LABEL, delay.getText(), ShapingConfig::parseDelayMs);
+    /** A row of the dialog: the label, the field checked by {@code rule} (its words: "Rate: ..."), the unit. */
+    private CheckedField row(JPanel panel, int y, String label, String name, String unit, String help, UnaryOperator<String> rule) {
+        CheckedField field = new CheckedField(new JTextField(10), name, help, rule, message, () -> { });
+        DialogParts.row(panel, y, DialogParts.label(label, help, field.field()), field.field(), DialogParts.unit(unit, help));
+        return field;
     }
 
     /** The parser's own words for a refused value, after the field's label; null when it reads it. */
@@ -95,22 +81,19 @@ final class RateLimitDialog extends JDialog {
         }
     }
 
-    private void mark(JTextField field, boolean invalid) {
-        field.setBackground(invalid ? DialogParts.INVALID : normalBackground);
-    }
-
     private void ok() {
-        String rateProblem = problem(rate);
-        String delayProblem = problem(delay);
-        mark(rate, rateProblem != null);
-        mark(delay, delayProblem != null);
-        if (rateProblem != null || delayProblem != null) {
-            boolean both = rateProblem != null && delayProblem != null;
-            DialogParts.showMessage(message, (rateProblem != null ? rateProblem : delayProblem) + (both ? " (and 1 more marked)" : ""));
-            (rateProblem != null ? rate : delay).requestFocusInWindow();
+        Refusals refused = new Refusals();
+        for (CheckedField field : List.of(rate, delay)) {
+            String problem = field.mark();
+            if (problem != null) {
+                refused.add(field.field(), problem);
+            }
+        }
+        if (refused.show(message)) {
             return;
         }
-        pin = new RatePin(Bitrate.parse(rate.getText()), delay.getText().isBlank() ? -1 : ShapingConfig.parseDelayMs(delay.getText()));
+        String delayText = delay.field().getText();
+        pin = new RatePin(Bitrate.parse(rate.field().getText()), delayText.isBlank() ? -1 : ShapingConfig.parseDelayMs(delayText));
         dispose();
     }
 }

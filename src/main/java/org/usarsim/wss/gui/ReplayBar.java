@@ -22,6 +22,7 @@ import java.awt.event.ActionEvent;
 import java.awt.event.MouseAdapter;
 import java.awt.event.MouseEvent;
 import java.awt.event.MouseListener;
+import org.usarsim.wss.Decimals;
 import org.usarsim.wss.model.Replay;
 
 /**
@@ -206,7 +207,7 @@ final class ReplayBar extends JPanel {
 
     /** {@code 4x}, {@code 0.25x}: as the list writes a speed. */
     static String speedText(double times) {
-        return java.math.BigDecimal.valueOf(times).stripTrailingZeros().toPlainString() + "x";
+        return Decimals.plain(times) + "x";
     }
 
     /** {@code 01:05 / 12:00}: the time and the duration in whole minutes and seconds (minutes past 99 as they are). */

@@ -1,15 +1,11 @@
 package org.usarsim.wss.model;
 
-import java.math.BigDecimal;
 import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.Collection;
-import java.util.HashSet;
-import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
@@ -59,10 +55,7 @@ public final class Setting {
     private final String defaultValue;
     private final List<String> choices;
     // Set by the refinements, each on a fresh copy: a setting never changes once returned.
-    private Double min;
-    private boolean minExclusive;
-    private Double max;
-    private boolean maxExclusive;
+    private Bounds bounds = Bounds.NONE;
     private String unit;
     private String help = "";
     private String noun;
@@ -85,10 +78,7 @@ public final class Setting {
     /** A copy to refine. */
     private Setting copy() {
         Setting copy = new Setting(key, label, type, defaultValue, choices);
-        copy.min = min;
-        copy.minExclusive = minExclusive;
-        copy.max = max;
-        copy.maxExclusive = maxExclusive;
+        copy.bounds = bounds;
         copy.unit = unit;
         copy.help = help;
         copy.noun = noun;
@@ -152,31 +142,27 @@ public final class Setting {
 
     /** The smallest value allowed, itself allowed. */
     public Setting from(double minimum) {
-        Setting copy = copy();
-        copy.min = minimum;
-        copy.minExclusive = false;
-        return copy;
+        return bounded(bounds.low(minimum, false));
     }
 
     /** Values must be above this one (NUMBER). */
     public Setting above(double minimum) {
-        Setting copy = from(minimum);
-        copy.minExclusive = true;
-        return copy;
+        return bounded(bounds.low(minimum, true));
     }
 
     /** The largest value allowed, itself allowed. */
     public Setting to(double maximum) {
-        Setting copy = copy();
-        copy.max = maximum;
-        copy.maxExclusive = false;
-        return copy;
+        return bounded(bounds.high(maximum, false));
     }
 
     /** Values must be below this one (NUMBER). */
     public Setting below(double maximum) {
-        Setting copy = to(maximum);
-        copy.maxExclusive = true;
+        return bounded(bounds.high(maximum, true));
+    }
+
+    private Setting bounded(Bounds range) {
+        Setting copy = copy();
+        copy.bounds = range;
         return copy;
     }
 
@@ -287,7 +273,7 @@ public final class Setting {
             case PAIRS -> RobotPair.LIST_WORDS;
         });
         boolean numeric = type == Type.INTEGER || type == Type.NUMBER;
-        String range = numeric ? range() : "";
+        String range = numeric ? bounds.words() : "";
         if (numeric && unit != null) {
             words.append(range.isEmpty() ? " (" + unit + ")" : " of " + unitWords(unit));
         }
@@ -296,19 +282,6 @@ public final class Setting {
             words.append(" (").append(note).append(')');
         }
         return words.toString();
-    }
-
-    /** The range in words, with a leading space or comma; empty when there is none. */
-    private String range() {
-        if (min != null && max != null && !minExclusive && !maxExclusive) {
-            return " from " + format(min) + " to " + format(max);
-        }
-        String low = min == null ? null : minExclusive ? " above " + format(min) : ", " + format(min) + " or more";
-        String high = max == null ? null : maxExclusive ? " below " + format(max) : ", " + format(max) + " or less";
-        if (low != null && high != null) {
-            return low + " and" + high.replaceFirst("^,", "");
-        }
-        return low != null ? low : high != null ? high : "";
     }
 
     private static String unitWords(String unit) {
@@ -320,10 +293,6 @@ public final class Setting {
         };
     }
 
-    private static String format(double value) {
-        return BigDecimal.valueOf(value).stripTrailingZeros().toPlainString();
-    }
-
     private boolean accepts(String value) {
         if (value.isEmpty()) {
             return emptyAllowed;
@@ -331,7 +300,7 @@ public final class Setting {
         return switch (type) {
             case INTEGER -> {
                 try {
-                    yield inRange(Integer.parseInt(value));
+                    yield bounds.contains(Integer.parseInt(value));
                 } catch (NumberFormatException e) {
                     yield false;
                 }
@@ -339,7 +308,7 @@ public final class Setting {
             case NUMBER -> {
                 try {
                     double number = Double.parseDouble(value);
-                    yield Double.isFinite(number) && inRange(number);
+                    yield Double.isFinite(number) && bounds.contains(number);
                 } catch (NumberFormatException e) {
                     yield false;
                 }
@@ -353,12 +322,6 @@ public final class Setting {
             case ADDRESSES -> addressList(value) != null;
             case PAIRS -> RobotPair.listOf(value) != null;
         };
-    }
-
-    private boolean inRange(double number) {
-        boolean low = min == null || (minExclusive ? number > min : number >= min);
-        boolean high = max == null || (maxExclusive ? number < max : number <= max);
-        return low && high;
     }
 
     private static boolean isAddress(String value) {
@@ -385,28 +348,7 @@ public final class Setting {
      * ({@code 0.0.0.0}, {@code ::}) is refused: no connection comes from it, so it would match nobody.
      */
     public static List<InetAddress> addressList(String text) {
-        Set<InetAddress> addresses = new LinkedHashSet<>();
-        for (String item : text.split(",", -1)) {
-            InetAddress address = numericAddress(item.strip());
-            if (address == null || address.isAnyLocalAddress()) {
-                return null; // the wildcard address is a server's to listen on: no client comes from it
-            }
-            addresses.add(address);
-        }
-        return List.copyOf(addresses);
-    }
-
-    private static InetAddress numericAddress(String text) {
-        boolean v4 = text.matches("(25[0-5]|2[0-4][0-9]|1[0-9][0-9]|[1-9]?[0-9])(\\.(25[0-5]|2[0-4][0-9]|1[0-9][0-9]|[1-9]?[0-9])){3}");
-        boolean v6 = text.contains(":") && text.matches("[0-9A-Fa-f:.]+");
-        if (!v4 && !v6) {
-            return null;
-        }
-        try {
-            return InetAddress.getByName(text); // a literal: parsed, not looked up
-        } catch (UnknownHostException e) {
-            return null;
-        }
+        return AddressList.parse(text);
     }
 
     // ---- lists of settings ----
@@ -420,36 +362,22 @@ public final class Setting {
      *                                  {@code key: 'value' is not ...}
      */
     public static Map<String, String> checked(Collection<Setting> declared, Map<String, String> given) {
-        Map<String, String> values = new LinkedHashMap<>(given);
-        for (Setting setting : declared) {
-            if (setting.alias() != null && values.containsKey(setting.alias())) {
-                String old = values.remove(setting.alias());
-                values.putIfAbsent(setting.key(), old);
-            }
-            String value = values.computeIfAbsent(setting.key(), key -> setting.defaultValue());
-            String problem = setting.problem(value);
-            if (problem != null) {
-                throw new IllegalArgumentException(setting.key() + ": '" + value + "' is not " + problem);
-            }
-        }
-        return values;
+        return SettingLists.checked(declared, given);
     }
 
     /** Every setting's default, by key, in declaration order. */
     public static Map<String, String> defaults(List<Setting> settings) {
-        Map<String, String> values = new LinkedHashMap<>();
-        settings.forEach(setting -> values.put(setting.key(), setting.defaultValue()));
-        return values;
+        return SettingLists.defaults(settings);
     }
 
     /** The setting of this key in the list, or null. */
     public static Setting find(List<Setting> settings, String key) {
-        return settings.stream().filter(setting -> setting.key().equals(key)).findFirst().orElse(null);
+        return SettingLists.find(settings, key);
     }
 
     /** The setting of the list whose {@linkplain #alias() old key} this is, or null. */
     public static Setting findAlias(Collection<Setting> settings, String oldKey) {
-        return settings.stream().filter(setting -> oldKey.equals(setting.alias())).findFirst().orElse(null);
+        return SettingLists.findAlias(settings, oldKey);
     }
 
     /**
@@ -457,29 +385,7 @@ public final class Setting {
      * blank, a {@code wss.*} key (the server's), a key declared twice, a default its own rule refuses.
      */
     public static String declarationProblem(List<Setting> settings) {
-        if (settings == null) {
-            return "settings() returned null";
-        }
-        Set<String> keys = new HashSet<>();
-        for (Setting setting : settings) {
-            if (setting == null) {
-                return "settings() holds null";
-            }
-            if (setting.key().isBlank() || setting.key().chars().anyMatch(Character::isWhitespace)) {
-                return "setting key '" + setting.key() + "' is blank or holds whitespace";
-            }
-            if (setting.key().startsWith("wss.")) {
-                return "setting " + setting.key() + ": the wss.* keys are the server's";
-            }
-            if (!keys.add(setting.key())) {
-                return "setting " + setting.key() + " is declared twice";
-            }
-            String problem = setting.problem(setting.defaultValue());
-            if (problem != null) {
-                return "setting " + setting.key() + ": the default '" + setting.defaultValue() + "' is not " + problem;
-            }
-        }
-        return null;
+        return SettingLists.declarationProblem(settings);
     }
 
     @Override

@@ -1,6 +1,7 @@
 package org.usarsim.wss.protocol;
 
 import java.nio.charset.StandardCharsets;
+import org.usarsim.wss.Decimals;
 
 /**
  * Every reply the server sends on a control connection, spelled exactly as the original
@@ -140,6 +141,6 @@ public final class Replies {
         if (!Double.isFinite(value)) {
             return "NaN";
         }
-        return java.math.BigDecimal.valueOf(Math.round(value * 1000), 3).stripTrailingZeros().toPlainString();
+        return Decimals.plain(java.math.BigDecimal.valueOf(Math.round(value * 1000), 3));
     }
 }

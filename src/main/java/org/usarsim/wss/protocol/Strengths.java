@@ -3,6 +3,7 @@ package org.usarsim.wss.protocol;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.math.RoundingMode;
+import org.usarsim.wss.Decimals;
 
 /** Prints a signal strength the way the original did: C's {@code %g}, 6 significant digits. */
 public final class Strengths {
@@ -31,10 +32,10 @@ public final class Strengths {
         BigDecimal rounded = new BigDecimal(value).round(new MathContext(SIGNIFICANT_DIGITS, RoundingMode.HALF_EVEN));
         int exponent = rounded.precision() - rounded.scale() - 1;
         if (exponent < -4 || exponent >= SIGNIFICANT_DIGITS) {
-            String mantissa = rounded.movePointLeft(exponent).stripTrailingZeros().toPlainString();
+            String mantissa = Decimals.plain(rounded.movePointLeft(exponent));
             int magnitude = Math.abs(exponent);
             return mantissa + "e" + (exponent < 0 ? "-" : "+") + (magnitude < 10 ? "0" : "") + magnitude;
         }
-        return rounded.stripTrailingZeros().toPlainString();
+        return Decimals.plain(rounded);
     }
 }

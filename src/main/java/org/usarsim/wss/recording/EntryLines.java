@@ -7,6 +7,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import org.usarsim.wss.Decimals;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
@@ -114,7 +115,7 @@ public final class EntryLines {
         if (thousandths % 1000 == 0) {
             return Long.toString(thousandths / 1000);
         }
-        return BigDecimal.valueOf(thousandths, 3).stripTrailingZeros().toPlainString();
+        return Decimals.plain(BigDecimal.valueOf(thousandths, 3));
     }
 
     /** An obstacle count: a whole number as one, NaN (not counted) as {@code -}. */
@@ -123,7 +124,7 @@ public final class EntryLines {
             return "-";
         }
         return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value)
-                : new BigDecimal(value).setScale(3, RoundingMode.HALF_EVEN).stripTrailingZeros().toPlainString();
+                : Decimals.plain(new BigDecimal(value).setScale(3, RoundingMode.HALF_EVEN));
     }
 
     private static final char[] HEX = "0123456789ABCDEF".toCharArray();

@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.OptionalLong;
+import org.usarsim.wss.Decimals;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
@@ -170,7 +171,7 @@ public final class WorldExport {
 
     /** Milliseconds as seconds, exactly: {@code 12.4}, {@code 0}, {@code 60}. */
     static String seconds(long millis) {
-        return BigDecimal.valueOf(millis, 3).stripTrailingZeros().toPlainString();
+        return Decimals.plain(BigDecimal.valueOf(millis, 3));
     }
 
     /** A header field on one comment line: its escaped form (no line break, no control character). */

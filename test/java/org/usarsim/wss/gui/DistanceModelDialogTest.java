@@ -42,7 +42,7 @@ class DistanceModelDialogTest {
     /** The keys the DistanceOnly dialog shows; the Obstacle dialog adds the obstacle.* keys. */
     private static final List<String> DISTANCE_KEYS = List.of("positions", "positions.interval", "usarsim.host", "usarsim.port",
             "usarsim.timeout", "rosbridge.url", "rosbridge.topic", "rosbridge.type", "rosbridge.frame", "rosbridge.names",
-            "rosbridge.stale", "rosbridge.maxMessage", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0",
+            "rosbridge.stale", "rosbridge.grace", "rosbridge.maxMessage", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0",
             "distance.margin", "distance.holdTime");
 
     /** Four decimals, as the fields show computed values. */
@@ -424,7 +424,7 @@ class DistanceModelDialogTest {
 
     private static final List<String> USARSIM_FIELDS = List.of("usarsim.host", "usarsim.port", "usarsim.timeout");
     private static final List<String> ROSBRIDGE_FIELDS = List.of("rosbridge.url", "rosbridge.topic", "rosbridge.type",
-            "rosbridge.frame", "rosbridge.names", "rosbridge.stale", "rosbridge.maxMessage");
+            "rosbridge.frame", "rosbridge.names", "rosbridge.stale", "rosbridge.grace", "rosbridge.maxMessage");
 
     /** Whether each field, and the label naming it, is enabled; a greyed field on the grey of one that cannot be edited. */
     private void assertEnabled(List<String> keys, boolean enabled, String when) {

@@ -52,6 +52,7 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private static final String FRAME = "rosbridge.frame";
     private static final String NAMES = "rosbridge.names";
     private static final String STALE = "rosbridge.stale";
+    private static final String GRACE = "rosbridge.grace";
     private static final String MAX_MESSAGE = "rosbridge.maxMessage";
     private static final String CUTOFF = CutoffDistance.CUTOFF;
     private static final String N = CutoffDistance.N;
@@ -61,14 +62,14 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private static final String HOLD_TIME = "distance.holdTime";
     /** The keys of the groups every layout shows: the positions, their two sources, the signal, the link stability. */
     private static final List<String> DISTANCE_KEYS = List.of(POSITIONS, INTERVAL, HOST, PORT, TIMEOUT, URL, TOPIC, TYPE, FRAME,
-            NAMES, STALE, MAX_MESSAGE, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME);
+            NAMES, STALE, GRACE, MAX_MESSAGE, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME);
     private static final String ATTENUATION = "obstacle.attenuation";
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
     private static final String WALLS = "obstacle.walls";
     private static final String MAP = "rosbridge.map";
     /** The fields of one source of positions: greyed while {@code positions} names the other. */
     private static final List<String> USARSIM_KEYS = List.of(HOST, PORT, TIMEOUT);
-    private static final List<String> ROSBRIDGE_KEYS = List.of(URL, TOPIC, TYPE, FRAME, NAMES, STALE, MAX_MESSAGE, MAP);
+    private static final List<String> ROSBRIDGE_KEYS = List.of(URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE, MAP);
 
 
     private final Map<String, CheckedField> fields = new LinkedHashMap<>();
@@ -91,7 +92,7 @@ final class DistanceModelDialog extends ModelSettingsDialog {
 
         List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL),
                 group("USARSim Connection", HOST, PORT, TIMEOUT),
-                group("rosbridge", URL, TOPIC, TYPE, FRAME, NAMES, STALE, MAX_MESSAGE),
+                group("rosbridge", URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE),
                 group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), distance.panel(grid, obstacles),
                 group("Link Stability", MARGIN, HOLD_TIME)));
         if (obstacles) {

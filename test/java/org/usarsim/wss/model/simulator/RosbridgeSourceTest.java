@@ -207,7 +207,7 @@ class RosbridgeSourceTest {
         assertNull(source.positions(List.of()), "10 s: not silent yet");
         clock.advance(1 * MS);
         assertThrows(IOException.class, () -> source.positions(List.of()));
-        assertTrue(SimulatorModel.SETTINGS.stream().filter(s -> s.key().equals("rosbridge.grace")).findFirst().orElseThrow()
+        assertTrue(SimulatorSettings.ALL.stream().filter(s -> s.key().equals("rosbridge.grace")).findFirst().orElseThrow()
                 .problem("4999") != null, "below 5 s refused");
     }
 

@@ -131,15 +131,15 @@ class SimulatorModelTest {
 
     @Test
     void theConfigurationIsCheckedByTheDeclaredRulesAndFrozenAtStart() throws Exception {
-        SimulatorConfig defaults = SimulatorConfig.read(SimulatorModel.SETTINGS, Map.of());
+        SimulatorConfig defaults = SimulatorConfig.read(SimulatorSettings.ALL, Map.of());
         assertEquals(new PathLoss(-49.67, 1, 2, -93), defaults.pathLoss(), "the declared defaults");
         assertEquals("127.0.0.1:7435", defaults.where());
         assertEquals(1000, defaults.intervalMs());
         ModelStartException refused = assertThrows(ModelStartException.class,
-                () -> SimulatorConfig.read(SimulatorModel.SETTINGS, Map.of("usarsim.port", "0")));
+                () -> SimulatorConfig.read(SimulatorSettings.ALL, Map.of("usarsim.port", "0")));
         assertEquals("usarsim.port: '0' is not a port number from 1 to 65535", refused.getMessage());
         refused = assertThrows(ModelStartException.class,
-                () -> SimulatorConfig.read(SimulatorModel.SETTINGS, Map.of("distance.n", "0")));
+                () -> SimulatorConfig.read(SimulatorSettings.ALL, Map.of("distance.n", "0")));
         assertEquals("distance.n: '0' is not a number above 0", refused.getMessage());
 
         rig = new ModelRig(new DistanceOnlyPropagationModel(), Map.of("distance.n", "3"));

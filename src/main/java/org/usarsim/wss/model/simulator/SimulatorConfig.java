@@ -19,7 +19,7 @@ record SimulatorConfig(String host, int port, int intervalMs, int timeoutMs, Pat
     /** The values given over the declared defaults, each checked; the first refused one stops the start. */
     static SimulatorConfig read(List<Setting> declared, Map<String, String> given) throws ModelStartException {
         Map<String, Setting> rules = new LinkedHashMap<>();
-        SimulatorModel.SETTINGS.forEach(setting -> rules.put(setting.key(), setting));
+        SimulatorSettings.ALL.forEach(setting -> rules.put(setting.key(), setting));
         declared.forEach(setting -> rules.put(setting.key(), setting));
         Map<String, String> values;
         try {

@@ -16,6 +16,7 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.usarsim.wss.StuckWriter;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.model.WssEventListener;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -127,7 +128,7 @@ class EventLogTest {
     @Test
     void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
         StuckWriter writer = new StuckWriter();
-        CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8);
+        CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8, HubClock.SYSTEM);
         EventCount events = new EventCount();
         try (TestHub server = new TestHub(new ScriptedModel(), true, 1024)) {
             server.hub.addListener(log);
@@ -168,7 +169,7 @@ class EventLogTest {
     @Test
     void closeWritesEverythingQueuedAndNothingAfter() throws Exception {
         StuckWriter writer = new StuckWriter();
-        CsvEventLog log = new CsvEventLog(dir.resolve("queued.txt"), writer, 1000);
+        CsvEventLog log = new CsvEventLog(dir.resolve("queued.txt"), writer, 1000, HubClock.SYSTEM);
         log.robotRegistered("R1", "127.0.0.1", List.of(5000, 5001));
         assertTrue(writer.stuck.await(5, TimeUnit.SECONDS), "the writer is writing the first line");
         for (int i = 1; i <= 500; i++) {
@@ -193,7 +194,7 @@ class EventLogTest {
     void aFieldWithACommaAQuoteOrALineEndIsQuotedAsRfc4180Says() throws Exception {
         StuckWriter writer = new StuckWriter();
         writer.release.countDown();
-        CsvEventLog log = new CsvEventLog(dir.resolve("quoted.txt"), writer, 100);
+        CsvEventLog log = new CsvEventLog(dir.resolve("quoted.txt"), writer, 100, HubClock.SYSTEM);
         log.robotRegistered("E,1", "127.0.0.1", List.of(5000));
         log.connectionEstablished("say \"hi\"", "line\rend", 5000);
         log.pairForced("A\nB", "plain", true);

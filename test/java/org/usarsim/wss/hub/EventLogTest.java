@@ -11,6 +11,11 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.ZoneId;
+import java.time.ZonedDateTime;
+import java.time.format.DateTimeFormatter;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -81,6 +86,23 @@ class EventLogTest {
                 }
             }
         }
+    }
+
+    /** The file's name and every line's time of day are the hub's clock's (moved by hand here), not the machine's. */
+    @Test
+    void theFilesNameAndEveryLinesTimeComeFromTheHubsClock() throws Exception {
+        ManualHubClock clock = new ManualHubClock();
+        ZonedDateTime start = Instant.ofEpochMilli(clock.currentTimeMillis()).atZone(ZoneId.systemDefault());
+        CsvEventLog log = CsvEventLog.create(dir, clock);
+        assertEquals("log-" + DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss.SSS").format(start) + ".txt",
+                log.file().getFileName().toString());
+        log.robotRegistered("R1", "127.0.0.1", List.of(5000));
+        clock.advance(Duration.ofMillis(1_500));
+        log.dataSent("R1", "R2", 10);
+        log.close();
+        DateTimeFormatter time = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
+        assertEquals(List.of("REGISTERED," + time.format(start) + ",R1,127.0.0.1,5000",
+                "DATA_SENT," + time.format(start.plus(Duration.ofMillis(1_500))) + ",R1,R2,10"), Files.readAllLines(log.file()));
     }
 
     /** Counts the events the CSV log writes a line for. */

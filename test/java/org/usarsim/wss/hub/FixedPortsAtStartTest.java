@@ -2,6 +2,7 @@ package org.usarsim.wss.hub;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.io.IOException;
 import java.net.DatagramPacket;
@@ -74,6 +75,23 @@ class FixedPortsAtStartTest {
                 return true;
             } catch (IOException refused) {
                 return false;
+            }
+        }
+    }
+
+    /** The control port is bound last, yet one in use is found before the model starts (a simulator's connection may take a while). */
+    @Test
+    void aControlPortInUseIsFoundBeforeTheModelStarts() throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 1, LOCAL)) {
+            ScriptedModel model = new ScriptedModel();
+            AtomicInteger starts = new AtomicInteger();
+            model.whileStarting(starts::incrementAndGet);
+            Hub hub = new Hub(TestHub.config(true, 65536, 600, 1000, 30).withControlPort(taken.getLocalPort()), model);
+            try {
+                assertThrows(IOException.class, hub::start);
+                assertEquals(0, starts.get(), "the model was not started");
+            } finally {
+                hub.close();
             }
         }
     }

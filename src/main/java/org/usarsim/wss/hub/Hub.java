@@ -115,15 +115,17 @@ public final class Hub implements AutoCloseable {
     }
 
     /**
-     * Starts the model, declares the robots and opens the fixed ports (docs/fixed-ports.md), then
-     * binds the control port: once it accepts, every fixed port listens, so a program started
-     * with the server may connect to both at once.
+     * Checks that the control port is free, starts the model, declares the robots and opens the
+     * fixed ports (docs/fixed-ports.md), then binds the control port: once it accepts, every fixed
+     * port listens, so a program started with the server may connect to both at once.
      *
      * @throws IOException         when the control port or a fixed port cannot be bound (in use,
      *                             bad address), or {@link #close} was called before the start finished
      * @throws ModelStartException when the model will not start; nothing is left listening
      */
     public void start() throws IOException, ModelStartException {
+        InetSocketAddress controlAddress = new InetSocketAddress(config.bindAddress(), config.controlPort());
+        ControlListener.checkFree(controlAddress);
         model.setRobotLinkModel(modelSide);
         model.setEventListener(modelSide.events());
         model.start();
@@ -137,7 +139,7 @@ public final class Hub implements AutoCloseable {
             config.forced().forEach((pair, force) -> controlSide.force(pair.first(), pair.second(), force,
                     config.pins().getOrDefault(pair, RatePin.NONE)));
             relays = FixedPortsStart.open(config, executor, opener, answers, airtime, clock, events);
-            listener = new ControlListener(controlSide, new InetSocketAddress(config.bindAddress(), config.controlPort()));
+            listener = new ControlListener(controlSide, controlAddress);
         } catch (IOException | RuntimeException e) {
             stopParts();
             throw e;

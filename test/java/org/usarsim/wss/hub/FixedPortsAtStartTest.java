@@ -96,26 +96,14 @@ class FixedPortsAtStartTest {
         }
     }
 
-    private static int freeTcp() throws IOException {
-        try (ServerSocket socket = new ServerSocket(0, 1, LOCAL)) {
-            return socket.getLocalPort();
-        }
-    }
-
-    private static int freeUdp() throws IOException {
-        try (DatagramSocket socket = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            return socket.getLocalPort();
-        }
-    }
-
     @Test
     void everyFixedPortListensOnceTheControlPortAccepts() throws Exception {
         try (ServerSocket base = new ServerSocket(0, 50, LOCAL);
                 DatagramSocket baseUdp = new DatagramSocket(new InetSocketAddress(LOCAL, 0));
                 DatagramSocket scoutUdp = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            int control = freeTcp();
-            int tcp = freeTcp();
-            int udp = freeUdp();
+            int control = Sockets.freeTcp();
+            int tcp = Sockets.freeTcp();
+            int udp = Sockets.freeUdp();
             HubConfig config = TestHub.config(true, 65536, 600, 1000, 30).withControlPort(control).withFixed(new FixedSetup(
                     List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
                     List.of(new FixedPort(FixedPort.Transport.TCP, new PortKey("Scout", "Base", base.getLocalPort()), tcp),

@@ -45,12 +45,8 @@ class WarningFloodTest {
             ServerSocket r1Accepts = r1.initAccepting("R1");
             r2.init("R2", 6000);
             int port = r2.dns("R1", 0);
-            for (int i = 0; i < FLOOD; i++) {
-                // R2 registered from 127.0.0.1: a connection to its port from 127.0.0.3 is refused.
-                try (Socket socket = intruder.connect(port)) {
-                    Sockets.assertClosedByPeer(socket, "refused connection " + i);
-                }
-            }
+            // R2 registered from 127.0.0.1: a connection to its port from 127.0.0.3 is refused.
+            refusedConnects(intruder, port, FLOOD);
             assertEquals(WarningLimiter.FIRST, log.count(Level.WARNING, "refused a connection"), log.toString());
             try (Socket fromR2 = r2.connect(port); Socket atR1 = r1Accepts.accept()) {
                 fromR2.getOutputStream().write('x');
@@ -118,11 +114,7 @@ class WarningFloodTest {
             r1.initAccepting("R1");
             r2.init("R2", 6000);
             int port = r2.dns("R1", 0);
-            for (int i = 0; i < FLOOD; i++) {
-                try (Socket socket = intruder.connect(port)) {
-                    Sockets.assertClosedByPeer(socket, "refused connection " + i);
-                }
-            }
+            refusedConnects(intruder, port, FLOOD);
             assertEquals(WarningLimiter.FIRST, log.count(Level.WARNING, "refused a connection"), log.toString());
             assertEquals(List.of(), summaries(), "the interval has not ended");
 
@@ -130,10 +122,17 @@ class WarningFloodTest {
             Wait.until("the summary, said by the warnings' timer", () -> summaries().size() == 1);
             assertEquals("refused connections: " + (FLOOD - WarningLimiter.FIRST) + " more like this from 127.0.0.3 in the last 60 s",
                     log.messages(Level.WARNING).stream().filter(m -> m.contains(" more like this from ")).findFirst().orElseThrow());
-            try (Socket socket = intruder.connect(port)) {
-                Sockets.assertClosedByPeer(socket, "refused in the new interval");
-            }
+            refusedConnects(intruder, port, 1);
             Wait.until("the new interval's first refusal written", () -> log.count(Level.WARNING, "refused a connection") == WarningLimiter.FIRST + 1);
+        }
+    }
+
+    /** {@code count} connections of {@code from} to the WSS port, each refused (closed at once). */
+    private static void refusedConnects(TestRobot from, int port, int count) throws Exception {
+        for (int i = 0; i < count; i++) {
+            try (Socket socket = from.connect(port)) {
+                Sockets.assertClosedByPeer(socket, "refused connection " + i);
+            }
         }
     }
 

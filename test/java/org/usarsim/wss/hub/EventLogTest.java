@@ -11,11 +11,17 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.ZoneId;
+import java.time.ZonedDateTime;
+import java.time.format.DateTimeFormatter;
 import java.util.Arrays;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.usarsim.wss.StuckWriter;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.model.WssEventListener;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -82,6 +88,23 @@ class EventLogTest {
         }
     }
 
+    /** The file's name and every line's time of day are the hub's clock's (moved by hand here), not the machine's. */
+    @Test
+    void theFilesNameAndEveryLinesTimeComeFromTheHubsClock() throws Exception {
+        ManualHubClock clock = new ManualHubClock();
+        ZonedDateTime start = Instant.ofEpochMilli(clock.currentTimeMillis()).atZone(ZoneId.systemDefault());
+        CsvEventLog log = CsvEventLog.create(dir, clock);
+        assertEquals("log-" + DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss.SSS").format(start) + ".txt",
+                log.file().getFileName().toString());
+        log.robotRegistered("R1", "127.0.0.1", List.of(5000));
+        clock.advance(Duration.ofMillis(1_500));
+        log.dataSent("R1", "R2", 10);
+        log.close();
+        DateTimeFormatter time = DateTimeFormatter.ofPattern("HH:mm:ss.SSS");
+        assertEquals(List.of("REGISTERED," + time.format(start) + ",R1,127.0.0.1,5000",
+                "DATA_SENT," + time.format(start.plus(Duration.ofMillis(1_500))) + ",R1,R2,10"), Files.readAllLines(log.file()));
+    }
+
     /** Counts the events the CSV log writes a line for. */
     private static final class EventCount implements WssEventListener {
         final AtomicLong count = new AtomicLong();
@@ -127,7 +150,7 @@ class EventLogTest {
     @Test
     void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
         StuckWriter writer = new StuckWriter();
-        CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8);
+        CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8, HubClock.SYSTEM);
         EventCount events = new EventCount();
         try (TestHub server = new TestHub(new ScriptedModel(), true, 1024)) {
             server.hub.addListener(log);
@@ -168,7 +191,7 @@ class EventLogTest {
     @Test
     void closeWritesEverythingQueuedAndNothingAfter() throws Exception {
         StuckWriter writer = new StuckWriter();
-        CsvEventLog log = new CsvEventLog(dir.resolve("queued.txt"), writer, 1000);
+        CsvEventLog log = new CsvEventLog(dir.resolve("queued.txt"), writer, 1000, HubClock.SYSTEM);
         log.robotRegistered("R1", "127.0.0.1", List.of(5000, 5001));
         assertTrue(writer.stuck.await(5, TimeUnit.SECONDS), "the writer is writing the first line");
         for (int i = 1; i <= 500; i++) {
@@ -193,7 +216,7 @@ class EventLogTest {
     void aFieldWithACommaAQuoteOrALineEndIsQuotedAsRfc4180Says() throws Exception {
         StuckWriter writer = new StuckWriter();
         writer.release.countDown();
-        CsvEventLog log = new CsvEventLog(dir.resolve("quoted.txt"), writer, 100);
+        CsvEventLog log = new CsvEventLog(dir.resolve("quoted.txt"), writer, 100, HubClock.SYSTEM);
         log.robotRegistered("E,1", "127.0.0.1", List.of(5000));
         log.connectionEstablished("say \"hi\"", "line\rend", 5000);
         log.pairForced("A\nB", "plain", true);

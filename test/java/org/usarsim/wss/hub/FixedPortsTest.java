@@ -33,18 +33,6 @@ class FixedPortsTest {
 
     private static final InetAddress LOCAL = InetAddress.getLoopbackAddress();
 
-    private static int free() throws IOException {
-        try (ServerSocket socket = new ServerSocket(0, 1, LOCAL)) {
-            return socket.getLocalPort();
-        }
-    }
-
-    private static int freeUdp() throws IOException {
-        try (DatagramSocket socket = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            return socket.getLocalPort();
-        }
-    }
-
     private static TestHub hub(FixedPort... ports) throws Exception {
         HubConfig config = TestHub.config(true, 65536, 600, 1000, 30).withFixed(new FixedSetup(
                 List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)), List.of(ports), 60));
@@ -54,7 +42,7 @@ class FixedPortsTest {
     @Test
     void aFixedTcpPortForwardsIsBrokenByAForceAndAcceptsAgainOnTheSameNumber() throws Exception {
         try (ServerSocket base = new ServerSocket(0, 50, LOCAL)) {
-            int number = free();
+            int number = Sockets.freeTcp();
             try (TestHub test = hub(new FixedPort(FixedPort.Transport.TCP, new PortKey("Scout", "Base", base.getLocalPort()), number))) {
                 assertEquals(List.of("Base", "Scout"), test.hub.getListOfRegisteredRobots());
                 byte[] sent = new byte[1 << 20];
@@ -108,7 +96,7 @@ class FixedPortsTest {
     @Test
     void aFixedUdpPortRelaysBothWaysPerSenderAndDropsWhileBroken() throws Exception {
         try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            int number = freeUdp();
+            int number = Sockets.freeUdp();
             try (TestHub test = hub(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number));
                     DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0));
                     DatagramSocket second = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
@@ -163,7 +151,7 @@ class FixedPortsTest {
     @Test
     void aShapedFixedUdpPortLosesWhatTheLossTableSaysAndCountsIt() throws Exception {
         try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            int number = freeUdp();
+            int number = Sockets.freeUdp();
             HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
                     .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true, org.usarsim.wss.shaping.ShapingConfig.DEFAULT_QUEUE_MS,
                             org.usarsim.wss.shaping.LossTable.parse("0:100")), Map.of())
@@ -193,7 +181,7 @@ class FixedPortsTest {
     @Test
     void datagramsQueuedAtALowRateTakeARaisedRate() throws Exception {
         try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
-            int number = freeUdp();
+            int number = Sockets.freeUdp();
             HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
                     .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 0, true), Map.of())
                     .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),

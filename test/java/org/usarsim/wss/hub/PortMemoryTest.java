@@ -12,6 +12,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.logging.Level;
@@ -85,6 +86,34 @@ class PortMemoryTest {
         Sockets.assertClosedByPeer(target, "the target once the source closed");
         target.close();
         Wait.until("the port of the closed connection is forgotten", () -> log.count(Level.INFO, "forgot 1 WSS port of R1") == 2);
+        assertFree(r2ToR1);
+    }
+
+    /**
+     * A robot that left has its ports forgotten once the hub's clock has passed wss.portMemory
+     * (600 s here), moved by hand, without waiting for the machine's time (the rule's own
+     * moments: RobotGoneTest).
+     */
+    @Test
+    void aLeftRobotsPortsAreForgottenWhenTheHubsClockPassesThePortMemory() throws Exception {
+        ManualHubClock clock = new ManualHubClock();
+        TestHub server = new TestHub(new NoopPropagationModel(), TestHub.config(true, 65536, 600, 1000, 30), clock);
+        toClose.add(server);
+        TestRobot r1 = connected(server);
+        r1.initAccepting("R1");
+        TestRobot r2 = robot(server, "R2", 6000);
+        int r2ToR1 = r2.dns("R1", 0);
+
+        r1.control.close();
+        Wait.until("R1 is deregistered", () -> !server.hub.getListOfRegisteredRobots().contains("R1"));
+        clock.advance(Duration.ofSeconds(599));
+        assertTrue(server.hub.snapshot().ports().stream().anyMatch(port -> port.wssPort() == r2ToR1), "remembered after 599 s");
+        assertTaken(r2ToR1);
+        assertEquals(0, log.count(Level.INFO, "forgot"), log.toString());
+
+        clock.advance(Duration.ofSeconds(1));
+        Wait.until("the port forgotten once the hub's clock says R1 is gone for 600 s",
+                () -> log.count(Level.INFO, "forgot 1 WSS port of R1, gone for 600 s") == 1);
         assertFree(r2ToR1);
     }
 

@@ -20,6 +20,8 @@ public final class ScriptedModel implements PropagationModel {
     private volatile WssEventListener events;
     private volatile boolean active;
     private volatile String startFailure;
+    /** What start() does first (a slow start: a simulator that takes its time); null: nothing. */
+    private volatile Runnable whileStarting;
     /** The replay controls {@link #replay()} gives; null: none, as a model that replays nothing. */
     private volatile org.usarsim.wss.model.Replay replay;
     /** How many times a strength was asked (GETSS, the snapshot, the shaping's sampler). */
@@ -83,8 +85,17 @@ public final class ScriptedModel implements PropagationModel {
         startFailure = reason;
     }
 
+    /** From now on start() runs this first, as a model whose start takes its time (a simulator's connection). */
+    void whileStarting(Runnable during) {
+        whileStarting = during;
+    }
+
     @Override
     public void start() throws ModelStartException {
+        Runnable during = whileStarting;
+        if (during != null) {
+            during.run();
+        }
         if (startFailure != null) {
             throw new ModelStartException(startFailure);
         }

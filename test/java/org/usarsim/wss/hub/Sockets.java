@@ -7,6 +7,10 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
+import java.net.DatagramSocket;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
 import java.net.SocketTimeoutException;
@@ -21,6 +25,20 @@ import java.util.stream.Stream;
 public final class Sockets {
 
     private Sockets() {
+    }
+
+    /** A TCP port number free on 127.0.0.1 now, for a port a test configures (a fixed port, a control port). */
+    public static int freeTcp() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return socket.getLocalPort();
+        }
+    }
+
+    /** A UDP port number free on 127.0.0.1 now, for a fixed UDP port. */
+    public static int freeUdp() throws IOException {
+        try (DatagramSocket socket = new DatagramSocket(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0))) {
+            return socket.getLocalPort();
+        }
     }
 
     public static byte[] randomBytes(int size, long seed) {

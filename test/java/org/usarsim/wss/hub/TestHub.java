@@ -4,6 +4,7 @@ import java.net.InetAddress;
 import java.net.UnknownHostException;
 import java.util.Map;
 import java.util.Set;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.noop.NoopPropagationModel;
 import org.usarsim.wss.shaping.ShapingConfig;
@@ -22,7 +23,12 @@ public final class TestHub implements AutoCloseable {
     }
 
     public TestHub(PropagationModel model, HubConfig config) throws Exception {
-        hub = new Hub(config, model);
+        this(model, config, HubClock.SYSTEM);
+    }
+
+    /** A hub on {@code clock} (a {@link ManualHubClock}: the test moves the hub's time). */
+    public TestHub(PropagationModel model, HubConfig config, HubClock clock) throws Exception {
+        hub = new Hub(config, model, clock);
         hub.start();
     }
 

@@ -3,6 +3,7 @@ package org.usarsim.wss.hub;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.net.InetAddress;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
@@ -15,6 +16,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.LogCapture;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.net.LogLimiter;
 
 /** The limit on warnings one client can cause, with a clock and a timer moved by hand. */
@@ -26,15 +28,15 @@ class WarningLimiterTest {
 
     private final Logger log = Logger.getLogger(LOGGER);
     private final LogCapture capture = LogCapture.of(LOGGER, Level.ALL);
-    private long now = 1_000_000_000L;
+    private final ManualHubClock clock = new ManualHubClock(1_000_000_000L, 0);
     /** What the limiter asked the timer to run, and when (on the test's clock). */
     private final List<Long> dueAt = new ArrayList<>();
     private final List<Runnable> due = new ArrayList<>();
     private boolean timerStopped;
-    private final WarningLimiter limiter = new WarningLimiter(5, LogLimiter.ALL_FIRST, MINUTE, () -> now, new WarningLimiter.Timer() {
+    private final WarningLimiter limiter = new WarningLimiter(5, LogLimiter.ALL_FIRST, MINUTE, clock, new LogLimiter.Timer() {
         @Override
         public void after(long delayNs, Runnable task) {
-            dueAt.add(now + delayNs);
+            dueAt.add(clock.nanoTime() + delayNs);
             due.add(task);
         }
 
@@ -57,9 +59,12 @@ class WarningLimiterTest {
         limiter.warn(log, kind, address(source), message);
     }
 
-    /** Moves the clock to the first task's time and runs it. */
+    /** Moves the clock to the first task's time (unless it is past it: a late timer) and runs it. */
     private void runTimer() {
-        now = dueAt.remove(0);
+        long at = dueAt.remove(0);
+        if (at - clock.nanoTime() > 0) {
+            clock.advanceTo(at);
+        }
         due.remove(0).run();
     }
 
@@ -67,7 +72,7 @@ class WarningLimiterTest {
     void theFirstFiveAreWrittenTheRestCountedAndSaidInOneLineAtTheIntervalsEnd() throws Exception {
         for (int i = 0; i < 12; i++) {
             warn("refused connections", "127.0.0.2", "refused #" + i);
-            now += TimeUnit.SECONDS.toNanos(1);
+            clock.advance(Duration.ofNanos(TimeUnit.SECONDS.toNanos(1)));
         }
         assertEquals(List.of("refused #0", "refused #1", "refused #2", "refused #3", "refused #4"), capture.messages(Level.WARNING));
         assertEquals(List.of(1_000_000_000L + MINUTE), dueAt, "one summary, due when the interval that began with the first ends");
@@ -93,7 +98,7 @@ class WarningLimiterTest {
         for (String prefix : List.of("A", "B", "C")) {
             assertEquals(5, written.stream().filter(m -> m.startsWith(prefix)).count(), written.toString());
         }
-        now += MINUTE;
+        clock.advance(Duration.ofNanos(MINUTE));
         for (int i = 0; i < 3; i++) {
             runTimer();
         }
@@ -109,7 +114,7 @@ class WarningLimiterTest {
             warn("over-long lines", "127.0.0.2", "line " + i);
         }
         assertEquals(List.of(), dueAt);
-        now += 2 * MINUTE;
+        clock.advance(Duration.ofNanos(2 * MINUTE));
         limiter.flush();
         limiter.close();
         assertEquals(5, capture.records.size(), capture.toString());
@@ -120,7 +125,7 @@ class WarningLimiterTest {
         for (int i = 0; i < 6; i++) {
             warn("refused connections", "127.0.0.2", "first interval " + i);
         }
-        now += MINUTE + 1;
+        clock.advance(Duration.ofNanos(MINUTE + 1));
         warn("refused connections", "127.0.0.2", "second interval");
         List<String> written = capture.messages(Level.WARNING);
         assertEquals(List.of("refused connections: 1 more like this from 127.0.0.2 in the last 60 s", "second interval"),
@@ -134,7 +139,7 @@ class WarningLimiterTest {
         for (int i = 0; i < 9; i++) {
             warn("over-long lines", "127.0.0.4", "line " + i);
         }
-        now += TimeUnit.MILLISECONDS.toNanos(12_300);
+        clock.advance(Duration.ofNanos(TimeUnit.MILLISECONDS.toNanos(12_300)));
         limiter.close();
         assertEquals("over-long lines: 4 more like this from 127.0.0.4 in the last 13 s",
                 capture.messages(Level.WARNING).get(5));
@@ -146,7 +151,8 @@ class WarningLimiterTest {
         // Another limiter's timer in this JVM (a hub an earlier test closed) may start or end its own
         // wss-warnings thread meanwhile: this one's thread is the one that was not there before.
         Set<Thread> before = warningsThreads();
-        WarningLimiter real = new WarningLimiter(2, LogLimiter.ALL_FIRST, TimeUnit.MILLISECONDS.toNanos(200), System::nanoTime, WarningLimiter.daemonTimer());
+        WarningLimiter real = new WarningLimiter(2, LogLimiter.ALL_FIRST, TimeUnit.MILLISECONDS.toNanos(200), HubClock.SYSTEM,
+                WarningLimiter.timer(HubClock.SYSTEM));
         for (int i = 0; i < 5; i++) {
             real.warn(log, "refused connections", address("127.0.0.5"), "refused " + i);
         }
@@ -177,10 +183,10 @@ class WarningLimiterTest {
 
     @Test
     void fiveThousandAddressesWriteTwentyLinesOfAKindThenOneSummaryForThemAll() throws Exception {
-        WarningLimiter limited = new WarningLimiter(5, 20, MINUTE, () -> now, new WarningLimiter.Timer() {
+        WarningLimiter limited = new WarningLimiter(5, 20, MINUTE, clock, new LogLimiter.Timer() {
             @Override
             public void after(long delayNs, Runnable task) {
-                dueAt.add(now + delayNs);
+                dueAt.add(clock.nanoTime() + delayNs);
                 due.add(task);
             }
 
@@ -206,7 +212,7 @@ class WarningLimiterTest {
 
     @Test
     void anAddressOverItsOwnLimitHasItsOwnSummaryBeforeTheTotal() throws Exception {
-        WarningLimiter limited = new WarningLimiter(5, 8, MINUTE, () -> now, new WarningLimiter.Timer() {
+        WarningLimiter limited = new WarningLimiter(5, 8, MINUTE, clock, new LogLimiter.Timer() {
             @Override
             public void after(long delayNs, Runnable task) {
             }
@@ -222,7 +228,7 @@ class WarningLimiterTest {
             limited.warn(log, "refused connections", address("127.0.0." + (10 + i)), "crowd " + i);
         }
         assertEquals(8, capture.messages(Level.WARNING).size(), "5 of the flood, 3 of the crowd");
-        now += MINUTE;
+        clock.advance(Duration.ofNanos(MINUTE));
         limited.flush();
         assertEquals(List.of("refused connections: 2 more like this from 127.0.0.2 in the last 60 s",
                 "refused connections: 7 more like this from any address in the last 60 s"),

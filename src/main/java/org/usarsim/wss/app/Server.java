@@ -7,6 +7,7 @@ import java.util.Map;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.Hub;
 import org.usarsim.wss.hub.HubConfig;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.model.ModelInputException;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.ModelStartException;
@@ -43,6 +44,9 @@ final class Server implements AutoCloseable {
         }
     }
 
+    /** A run's one clock: the hub's and its event log's. */
+    private static final HubClock CLOCK = HubClock.SYSTEM;
+
     private final HubConfig config;
     private final PropagationModel model;
     private final Hub hub;
@@ -52,7 +56,7 @@ final class Server implements AutoCloseable {
     private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog, Recorder recorder) {
         this.config = config;
         this.model = model;
-        this.hub = new Hub(config, model);
+        this.hub = new Hub(config, model, CLOCK);
         this.eventLog = eventLog;
         this.recorder = recorder;
         if (eventLog != null) {
@@ -79,7 +83,7 @@ final class Server implements AutoCloseable {
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
             try {
-                eventLog = CsvEventLog.create(eventLogDir);
+                eventLog = CsvEventLog.create(eventLogDir, CLOCK);
             } catch (IOException e) {
                 throw new StartFailure("cannot write the event log in " + eventLogDir + ": " + e);
             }

@@ -8,8 +8,10 @@ import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import org.usarsim.wss.hub.core.Changes;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.RobotSession;
@@ -25,17 +27,30 @@ import org.usarsim.wss.hub.tcp.PortSockets;
  * ({@link #taken}); after the lock the socket work is done in the order of the turns, the port
  * memory's timers set, and the events delivered ({@link #apply}). The listening sockets a step
  * stops are handed to the {@link PortSelector}'s thread together and waited for once
- * ({@link Closes}). Holds the sockets of each port the core holds (guarded by the hub's lock).
+ * ({@link Closes}). Holds the sockets of each port the core holds (guarded by the hub's lock):
+ * the sockets' side of the hub, apart from the lock and the step ({@link StepExecutor}), which
+ * hands it each step's {@link FollowUps}.
  */
 final class ChangeApplier {
 
-    /** A port that could not listen again: the hub tells the core, as a step of its own. */
-    interface ListenFailure {
-        void failed(Changes.PortAction action, IOException e);
+    /**
+     * What follows a step's changes and is a step of its own: the hub's {@link StepExecutor} takes
+     * them, and hands itself over with each step it has applied (it is built with this applier,
+     * this applier without it).
+     */
+    interface FollowUps {
+        /** A port could not listen again: the core is told. */
+        void couldNotListen(Changes.PortAction action, IOException e);
+
+        /** wss.portMemory after a robot left (the timer's call): its ports are forgotten unless it came back. */
+        void forgetIfGone(String robot);
+
+        /** Descriptors ran short: remembered ports are given back, out of turn ({@link #takenOutOfTurn}). @return true when some were */
+        boolean giveBackRemembered();
     }
 
-    /** A step's changes as they are applied: its port work resolved to sockets, and its turn (0: no socket work). */
-    record Applying(Changes changes, List<PortTask> portTasks, long turn) {
+    /** A step's changes as they are applied: its port work resolved to sockets, its turn (0: no socket work), what follows. */
+    record Applying(Changes changes, List<PortTask> portTasks, long turn, FollowUps followUps) {
     }
 
     /** A port's socket work with the sockets it is for, resolved under the lock (a port forgotten later keeps its own). */
@@ -43,10 +58,9 @@ final class ChangeApplier {
     }
 
     private final Outbox outbox;
-    private final ForgetTimer forgetTimer;
-    private final Descriptors descriptors;
+    /** The port memory's timer: wss.portMemory after a robot left, its ports are forgotten unless it came back (the rule is the core's). */
+    private final ClockTimer forgetTimer;
     private final InetAddress bindAddress;
-    private final ListenFailure listenFailure;
     private final PortSelector selector;
     private final SocketTurns turns = new SocketTurns();
     private final Map<WssPort, PortSockets> sockets = new HashMap<>();
@@ -55,20 +69,17 @@ final class ChangeApplier {
     /** Ports allocated by the step being taken that listen already: their LISTEN is done. */
     private final Set<WssPort> listenedNow = new HashSet<>();
 
-    ChangeApplier(Outbox outbox, ForgetTimer forgetTimer, Descriptors descriptors, PortSelector selector, InetAddress bindAddress,
-            ListenFailure listenFailure) {
+    ChangeApplier(Outbox outbox, PortSelector selector, InetAddress bindAddress, HubClock clock) {
         this.outbox = outbox;
-        this.forgetTimer = forgetTimer;
-        this.descriptors = descriptors;
+        this.forgetTimer = new ClockTimer("wss-port-memory", clock);
         this.bindAddress = bindAddress;
         this.selector = selector;
-        this.listenFailure = listenFailure;
     }
 
     /**
-     * Under the hub's lock, inside the DNS's step, before it is {@link #taken}: the socket of a
-     * port the core just allocated, bound by the DNS before the lock ({@link #put}); a port that
-     * cannot start accepting does not listen after all.
+     * Under the hub's lock, inside the step that opened it, before it is {@link #taken}: the socket
+     * of a port the core just allocated, bound by the {@link PortOpener} before the lock
+     * ({@link #put}); a port that cannot start accepting does not listen after all.
      */
     void adopt(HubCore core, WssPort port, ServerSocketChannel bound, Changes out) {
         try {
@@ -97,18 +108,26 @@ final class ChangeApplier {
         portSockets.listen(port.epoch(), null);
     }
 
-    /** Under the hub's lock: the port's sockets, or null. */
-    PortSockets socketsOf(WssPort port) {
-        return sockets.get(port);
+    /** Under the hub's lock: the sockets of the ports that have some (a departure's, to drain). */
+    List<PortSockets> socketsOf(List<WssPort> ports) {
+        return ports.stream().map(sockets::get).filter(Objects::nonNull).toList();
     }
 
-    /** Under the hub's lock: the step's events are numbered in the outbox, its port work resolved and given a turn. */
-    Applying taken(Changes out) {
+    /** The listening sockets the caller stops, handed to the selector's thread together and waited for once. */
+    Closes closes() {
+        return selector.closes();
+    }
+
+    /**
+     * Under the hub's lock: the step's events are numbered in the outbox, its port work resolved
+     * and given a turn; {@code followUps} takes what follows it.
+     */
+    Applying taken(Changes out, FollowUps followUps) {
         List<PortTask> tasks = resolved(out);
         if (tasks.isEmpty() && !out.hasSocketWork()) {
-            return new Applying(out, tasks, 0);
+            return new Applying(out, tasks, 0, followUps);
         }
-        return new Applying(out, tasks, turns.take(() -> socketWork(out, tasks)));
+        return new Applying(out, tasks, turns.take(() -> socketWork(out, tasks, followUps)), followUps);
     }
 
     /**
@@ -122,7 +141,7 @@ final class ChangeApplier {
                 || !out.sessionsToClose().isEmpty()) {
             throw new IllegalStateException("only releases are applied out of turn");
         }
-        return new Applying(out, resolved(out), 0);
+        return new Applying(out, resolved(out), 0, null);
     }
 
     private List<PortTask> resolved(Changes out) {
@@ -156,14 +175,15 @@ final class ChangeApplier {
         if (applying.turn() > 0) {
             turns.complete(applying.turn());
         }
-        changes.forgetLater().forEach(later -> forgetTimer.schedule(later.robot(), later.afterNs()));
+        FollowUps followUps = applying.followUps();
+        changes.forgetLater().forEach(later -> forgetTimer.after(later.afterNs(), () -> followUps.forgetIfGone(later.robot())));
         outbox.deliver();
     }
 
     /** A step's socket work, in its turn (on whichever thread does the turns then). */
-    private void socketWork(Changes changes, List<PortTask> tasks) {
+    private void socketWork(Changes changes, List<PortTask> tasks, FollowUps followUps) {
         Closes closes = selector.closes();
-        tasks.forEach(task -> portWork(task, closes));
+        tasks.forEach(task -> portWork(task, closes, followUps));
         closes.await(); // every port this step stopped refuses connections now
         changes.closes().forEach(close -> close.link().close(close.reason()));
         changes.sessionsToClose().forEach(RobotSession::close);
@@ -188,10 +208,10 @@ final class ChangeApplier {
      * first use, and the first stop may come when descriptors have run out (loading a class from a
      * directory of classes takes one).
      */
-    private void portWork(PortTask task, Closes closes) {
+    private void portWork(PortTask task, Closes closes, FollowUps followUps) {
         Changes.PortWork work = task.action().work();
         if (work == Changes.PortWork.LISTEN) {
-            listen(task, closes); // a port stopped earlier in the step is closed before it listens again (PortSockets)
+            listen(task, closes, followUps); // a port stopped earlier in the step is closed before it listens again (PortSockets)
         } else if (work == Changes.PortWork.STOP) {
             task.sockets().stop(closes);
         } else {
@@ -200,15 +220,20 @@ final class ChangeApplier {
     }
 
     /** Out of descriptors, remembered ports of robots that left give theirs back and it is tried once more. */
-    private void listen(PortTask task, Closes closes) {
+    private void listen(PortTask task, Closes closes, FollowUps followUps) {
         Changes.PortAction action = task.action();
         try {
-            descriptors.retrying(() -> {
+            Descriptors.retrying(() -> {
                 task.sockets().listen(action.epoch(), closes);
                 return null;
-            });
+            }, followUps::giveBackRemembered);
         } catch (IOException e) {
-            listenFailure.failed(action, e);
+            followUps.couldNotListen(action, e);
         }
+    }
+
+    /** The end: no port memory timer runs any more. */
+    void close() {
+        forgetTimer.stop();
     }
 }

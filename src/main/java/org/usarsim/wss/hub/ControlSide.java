@@ -1,26 +1,22 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.DnsOutcome;
-import org.usarsim.wss.hub.core.DnsResult;
-import org.usarsim.wss.hub.core.NameCheck;
-import java.io.IOException;
 import java.net.InetAddress;
-import java.nio.channels.ServerSocketChannel;
 import java.util.List;
-import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.concurrent.TimeUnit;
+import org.usarsim.wss.hub.core.DnsResult;
 import org.usarsim.wss.hub.core.Force;
-import org.usarsim.wss.hub.core.Measurement;
-import org.usarsim.wss.hub.core.OrderedPair;
+import org.usarsim.wss.hub.core.HubClock;
+import org.usarsim.wss.hub.core.NameCheck;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RegisteredRobot;
+import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closes;
-import org.usarsim.wss.hub.tcp.Closing;
 import org.usarsim.wss.hub.tcp.ControlHub;
 import org.usarsim.wss.hub.tcp.ControlSession;
+import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.PortListener;
 import org.usarsim.wss.hub.tcp.PortSelector;
@@ -30,7 +26,8 @@ import org.usarsim.wss.model.RobotPair;
 
 /**
  * The hub as the control sessions see it ({@link ControlHub}): each command one step of the core
- * through the {@link StepExecutor}, the model asked before it, without the lock.
+ * through the {@link StepExecutor}, the model asked before it, without the lock; a DNS through the
+ * {@link PortOpener}, a departure's drain on the ports' sockets ({@link ChangeApplier}).
  */
 final class ControlSide extends SocketSide implements ControlHub {
 
@@ -40,14 +37,22 @@ final class ControlSide extends SocketSide implements ControlHub {
     private static final long DRAIN_NS = TimeUnit.SECONDS.toNanos(1);
 
     private final StepExecutor executor;
+    private final PortOpener opener;
+    /** The ports' sockets: a departure drains and stops them. */
+    private final ChangeApplier sockets;
     private final ModelAnswers answers;
     private final HubConfig config;
+    private final HubClock clock;
 
-    ControlSide(StepExecutor executor, ModelAnswers answers, HubConfig config, WarningLimiter warnings, KeepAlive keepAlive) {
-        super(warnings, keepAlive, executor.descriptors());
+    ControlSide(StepExecutor executor, PortOpener opener, ChangeApplier sockets, ModelAnswers answers, HubConfig config, HubClock clock,
+            WarningLimiter warnings, KeepAlive keepAlive, Descriptors descriptors) {
+        super(warnings, keepAlive, descriptors);
         this.executor = executor;
+        this.opener = opener;
+        this.sockets = sockets;
         this.answers = answers;
         this.config = config;
+        this.clock = clock;
     }
 
     /**
@@ -86,18 +91,22 @@ final class ControlSide extends SocketSide implements ControlHub {
      */
     @Override
     public void deregister(String name, ControlSession session) {
-        List<PortSockets> toDrain = executor.beginLeaving(name, session);
+        // A step: its name stays taken until its ports drained, and an INIT of it waiting is woken to wait for that.
+        List<PortSockets> toDrain = executor.step((core, now, out) -> {
+            List<WssPort> listening = core.beginLeaving(name, session);
+            return listening == null ? null : sockets.socketsOf(listening);
+        });
         if (toDrain == null) {
             return;
         }
         // The drains' own connections are started without the lock (a listener stopped meanwhile declines).
         List<PortListener> draining = toDrain.stream().map(PortSockets::beginDrain).filter(Objects::nonNull).toList();
-        long deadline = System.nanoTime() + DRAIN_NS;
+        long deadline = clock.nanoTime() + DRAIN_NS;
         draining.forEach(listener -> listener.awaitEnd(deadline));
         // Drained, they stop now, together: once the robot is gone, a connect to them is refused. The
         // departure's step stops them in its turn too (nothing left to do then); stopping is the
         // same whenever it is done, and a port that listens again later is a new listening.
-        Closes closes = executor.portSelector().closes();
+        Closes closes = sockets.closes();
         toDrain.forEach(sockets -> sockets.stop(closes));
         closes.await();
         executor.run((core, now, out) -> core.left(name, session, now, out));
@@ -121,51 +130,10 @@ final class ControlSide extends SocketSide implements ControlHub {
         return answers.signalStrength(from, to);
     }
 
-    /**
-     * The WSS port for connections from {@code from} to {@code to} on {@code targetPort} (0: the
-     * first), in one step. Before it, without the lock: the model is asked, and a new port's
-     * number and listening socket are bound (out of descriptors, some are given back first), since
-     * whether the port is new is only known under the lock; a DNS of a port that exists closes
-     * the socket unused. A port that cannot listen is not allocated (Could.Not.Allocate.Port).
-     * Returns once the port listens (when it should): a robot may connect as soon as it has the answer.
-     */
+    /** DNS: the one way a port is opened ({@link PortOpener}). */
     @Override
     public DnsResult dns(String from, String to, int targetPort) {
-        if (from.equals(to)) {
-            return new DnsResult(DnsOutcome.NO_SUCH_ROBOT, -1, null, false);
-        }
-        boolean allowed = answers.allows(from, to);
-        // Shaped, a new pair starts at its own rate, not the lowest.
-        Map<OrderedPair, Measurement> measurements = config.shaping().on() ? answers.measure(List.of(RobotPair.of(from, to))) : Map.of();
-        ServerSocketChannel bound = null;
-        String noNumber = null;
-        try {
-            executor.portSelector().start(); // once: not under the lock, where a new port joins it
-            bound = executor.descriptors().retrying(() -> PortSockets.bindNew(config.bindAddress()));
-        } catch (IOException e) {
-            noNumber = e.getMessage();
-        }
-        ServerSocketChannel socket = bound;
-        String why = noNumber;
-        DnsResult result = executor.step((core, now, out) -> {
-            if (!measurements.isEmpty() && core.isRegistered(from) && core.isRegistered(to)) {
-                core.measured(measurements, out);
-            }
-            int number = socket == null ? -1 : PortSockets.numberOf(socket);
-            DnsResult answer = core.dns(from, to, targetPort, allowed, number, now, out);
-            if (answer.outcome() == DnsOutcome.NEEDS_NUMBER) { // new, and no socket could be bound
-                core.couldNotAllocate(answer.key(), why, out);
-                return new DnsResult(DnsOutcome.NO_PORT, -1, answer.key(), false);
-            }
-            if (answer.numberUsed()) {
-                executor.adopt(core.port(answer.key()), socket, out);
-            }
-            return answer;
-        });
-        if (!result.numberUsed()) {
-            Closing.quietly(bound); // the port exists, or the DNS is refused
-        }
-        return result;
+        return opener.dns(from, to, targetPort);
     }
 
     @Override

@@ -6,6 +6,7 @@ import java.io.Writer;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Instant;
 import java.time.LocalDateTime;
 import java.time.ZoneId;
 import java.time.format.DateTimeFormatter;
@@ -14,6 +15,7 @@ import java.util.logging.Logger;
 import java.util.stream.Collectors;
 import org.usarsim.wss.LogText;
 import org.usarsim.wss.QueuedWriter;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.protocol.Strengths;
 
@@ -22,7 +24,7 @@ import org.usarsim.wss.protocol.Strengths;
  * {@code log-yyyy.MM.dd-HH.mm.ss.SSS.txt}, with the time of day as {@code HH:mm:ss.SSS}.
  * <p>
  * The threads that fire events (link threads, once per chunk) only put a small record, stamped
- * with the time of the event, in a bounded queue and never wait: when the queue is full the event
+ * with the time of the event (the hub's clock), in a bounded queue and never wait: when the queue is full the event
  * is counted as dropped. One writer thread ({@code wss-event-log}) takes what is queued, writes it
  * in order and flushes whenever it has caught up, so the file is current while the log is open;
  * once caught up, it lets the next events gather for 20 ms before it writes again.
@@ -51,14 +53,17 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     private final Path file;
+    /** The hub's clock: each line's time. */
+    private final HubClock clock;
     /** Queues {@link Line}s and {@link DataSent}s. */
     private final QueuedWriter<Object> writer;
     /** The writer's: a line's time of day. */
     private final LineTime lineTime = new LineTime(ZoneId.systemDefault());
 
-    /** The log writing to {@code out} (named {@code file}), behind a queue of {@code capacity} events. */
-    CsvEventLog(Path file, Writer out, int capacity) {
+    /** The log writing to {@code out} (named {@code file}), behind a queue of {@code capacity} events, its times from {@code clock}. */
+    CsvEventLog(Path file, Writer out, int capacity, HubClock clock) {
         this.file = file;
+        this.clock = clock;
         this.writer = new QueuedWriter<>("wss-event-log", LOG, "the event log " + file, out, capacity, new QueuedWriter.Format<>() {
             @Override
             public void append(StringBuilder text, Object item) {
@@ -72,18 +77,24 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
             @Override
             public void dropped(StringBuilder text, long count) {
-                format(text, "DROPPED", System.currentTimeMillis(), count);
+                format(text, "DROPPED", clock.currentTimeMillis(), count);
             }
         });
     }
 
-    /** Creates a new log file in the directory (created if missing), named by the time now. */
+    /** As {@link #create(Path, HubClock)}, on the machine's clock. */
     public static CsvEventLog create(Path directory) throws IOException {
+        return create(directory, HubClock.SYSTEM);
+    }
+
+    /** Creates a new log file in the directory (created if missing), named by the time now; its times are the hub's {@code clock}'s. */
+    public static CsvEventLog create(Path directory, HubClock clock) throws IOException {
         Files.createDirectories(directory);
-        Path file = directory.resolve("log-" + FILE_TIME.format(LocalDateTime.now()) + ".txt");
+        LocalDateTime now = LocalDateTime.ofInstant(Instant.ofEpochMilli(clock.currentTimeMillis()), ZoneId.systemDefault());
+        Path file = directory.resolve("log-" + FILE_TIME.format(now) + ".txt");
         BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
         LOG.info("writing the event log to " + file.toAbsolutePath());
-        return new CsvEventLog(file, out, QUEUE_CAPACITY);
+        return new CsvEventLog(file, out, QUEUE_CAPACITY, clock);
     }
 
     public Path file() {
@@ -93,7 +104,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     /** Any thread: queues the event, or counts it as dropped when the writer is too far behind. Never waits. */
     private void event(String type, Object... fields) {
         if (writer.open()) {
-            writer.offer(new Line(type, System.currentTimeMillis(), fields));
+            writer.offer(new Line(type, clock.currentTimeMillis(), fields));
         }
     }
 
@@ -185,7 +196,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     @Override
     public void dataSent(String from, String to, int bytes) {
-        writer.offer(new DataSent(from, to, bytes, System.currentTimeMillis()));
+        writer.offer(new DataSent(from, to, bytes, clock.currentTimeMillis()));
     }
 
     @Override

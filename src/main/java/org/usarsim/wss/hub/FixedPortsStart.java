@@ -1,34 +1,31 @@
 package org.usarsim.wss.hub;
 
-import org.usarsim.wss.hub.core.Admission;
-import org.usarsim.wss.hub.core.DnsResult;
 import java.io.IOException;
 import java.net.InetAddress;
-import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import java.util.function.LongSupplier;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.Admission;
 import org.usarsim.wss.hub.core.DeclaredRobot;
 import org.usarsim.wss.hub.core.FixedPort;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.Measurement;
 import org.usarsim.wss.hub.core.OrderedPair;
 import org.usarsim.wss.hub.core.RegisteredRobot;
 import org.usarsim.wss.hub.core.RobotSession;
-import org.usarsim.wss.hub.tcp.Closing;
-import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.hub.udp.UdpRelay;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
  * What the hub does at Start for the declared robots and the fixed ports (docs/fixed-ports.md):
- * the robots registered as if they had sent INIT; each fixed TCP port allocated as a DNS would
- * allocate it, on its configured number; each fixed UDP port's relay started over the pair's
- * conditions and counters. No new rule: the core breaks, resumes, forces, shapes and counts them
- * as any WSS port.
+ * the robots registered as if they had sent INIT; each fixed TCP port opened where a DNS opens
+ * its port ({@link PortOpener#fix}), on its configured number; each fixed UDP port's relay
+ * started over the pair's conditions and counters. No new rule: the core breaks, resumes,
+ * forces, shapes and counts them as any WSS port. All before the control port accepts
+ * ({@link Hub#start}).
  */
 final class FixedPortsStart {
 
@@ -46,8 +43,8 @@ final class FixedPortsStart {
      * @return the UDP relays, for the hub to close at Stop
      * @throws IOException when a fixed port's number cannot be bound (the relays started are closed)
      */
-    static List<UdpRelay> open(HubConfig config, StepExecutor executor, ModelAnswers answers, Airtime airtime, LongSupplier clock,
-            WssEventListener events)
+    static List<UdpRelay> open(HubConfig config, StepExecutor executor, PortOpener opener, ModelAnswers answers, Airtime airtime,
+            HubClock clock, WssEventListener events)
             throws IOException {
         FixedSetup setup = config.fixed();
         for (DeclaredRobot robot : setup.robots()) {
@@ -58,7 +55,7 @@ final class FixedPortsStart {
         try {
             for (FixedPort port : setup.ports()) {
                 if (port.transport() == FixedPort.Transport.TCP) {
-                    fixTcp(port, config.bindAddress(), config.shaping().on(), executor, answers);
+                    opener.fix(port);
                 } else {
                     relays.add(relay(port, config, executor, answers, airtime, clock, events));
                 }
@@ -72,35 +69,8 @@ final class FixedPortsStart {
         return relays;
     }
 
-    private static void fixTcp(FixedPort port, InetAddress bindAddress, boolean shaped, StepExecutor executor, ModelAnswers answers)
-            throws IOException {
-        boolean allowed = answers.allows(port.key().from(), port.key().to());
-        executor.portSelector().start();
-        ServerSocketChannel socket;
-        try {
-            socket = PortSockets.bindNumber(bindAddress, port.number());
-        } catch (IOException e) {
-            throw new IOException("cannot listen on fixed port " + port + ": " + e.getMessage(), e);
-        }
-        Map<OrderedPair, Measurement> measurements = shaped ? answers.measure(List.of(port.key().pair())) : Map.of();
-        DnsResult result = executor.step((core, now, out) -> {
-            if (!measurements.isEmpty()) {
-                core.measured(measurements, out);
-            }
-            DnsResult answer = core.fix(port.key(), allowed, port.number(), now, out);
-            if (answer.numberUsed()) {
-                executor.adopt(core.port(answer.key()), socket, out);
-            }
-            return answer;
-        });
-        if (!result.numberUsed()) {
-            Closing.quietly(socket);
-            throw new IOException("cannot make fixed port " + port + ": " + result.outcome());
-        }
-    }
-
     private static UdpRelay relay(FixedPort port, HubConfig config, StepExecutor executor, ModelAnswers answers, Airtime airtime,
-            LongSupplier clock, WssEventListener events)
+            HubClock clock, WssEventListener events)
             throws IOException {
         // Shaped, the pair starts at its own rate and loss, not those of a strength not known yet.
         Map<OrderedPair, Measurement> measurements = config.shaping().on() ? answers.measure(List.of(port.key().pair())) : Map.of();

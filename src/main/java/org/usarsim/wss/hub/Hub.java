@@ -5,12 +5,12 @@ import java.net.InetSocketAddress;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Changes;
 import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.RatePin;
@@ -19,6 +19,7 @@ import org.usarsim.wss.hub.tcp.ControlListener;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
+import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.udp.UdpRelay;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
@@ -28,10 +29,13 @@ import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
- * The server: builds the hub's parts and starts and stops them. The {@link HubCore} (the rules
- * and the state) runs under one lock in the {@link StepExecutor}; the control sessions call in
- * through {@link ControlSide}, the WSS ports and links through {@link LinkSide}, the propagation
- * model through {@link ModelSide}; the window and the tests read {@link #snapshot()} and listen.
+ * The server: builds the hub's parts, each from parts built before it, and starts and stops them.
+ * The {@link HubCore} (the rules and the state) runs under one lock in the {@link StepExecutor};
+ * the WSS ports' sockets are the {@link ChangeApplier}'s and the {@link PortSelector}'s, and a port
+ * is opened by the {@link PortOpener} alone; the control sessions call in through
+ * {@link ControlSide}, the WSS ports and links through {@link LinkSide}, the propagation model
+ * through {@link ModelSide}; the window and the tests read {@link #snapshot()} and listen. Every
+ * part reads the one {@link HubClock} it is given.
  */
 public final class Hub implements AutoCloseable {
 
@@ -44,30 +48,44 @@ public final class Hub implements AutoCloseable {
         Descriptors.Work.class.getDeclaredMethods();
         HubEvent.class.getPermittedSubclasses();
         WarningLimiter.class.getDeclaredClasses();
+        ClockTimer.class.getDeclaredClasses();
         Changes.class.getDeclaredClasses();
     }
 
     private final HubConfig config;
     private final PropagationModel model;
-    private final LongSupplier clock = System::nanoTime;
+    /** The hub's one clock: every part that needs the time reads it. */
+    private final HubClock clock;
     private final EventFanOut events;
     /** Every WARNING a client can cause goes through it (docs/reliability.md). */
     private final WarningLimiter warnings;
     private final ModelAnswers answers;
+    private final PortSelector portSelector;
+    private final ChangeApplier applier;
     private final StepExecutor executor;
+    private final PortOpener opener;
     private final ControlSide controlSide;
     private final ModelSide modelSide;
     /** The robots' radios, when links are shaped (docs/shaping.md). */
     private final Airtime airtime;
     /** Asks the model a few times a second what the shaped pairs' rates are now; null when links are not shaped. */
     private final Sampler sampler;
-    private volatile ControlListener controlListener;
+    /** Guarded by this: set once the control port accepts; whether {@link #close} was called. */
+    private ControlListener controlListener;
+    private boolean closed;
     /** The fixed UDP ports' relays, made at Start (docs/fixed-ports.md). */
     private volatile List<UdpRelay> relays = List.of();
 
+    /** A hub on the machine's clock. */
     public Hub(HubConfig config, PropagationModel model) {
+        this(config, model, HubClock.SYSTEM);
+    }
+
+    /** A hub whose every part reads {@code clock} (a test's, moved by hand). */
+    public Hub(HubConfig config, PropagationModel model, HubClock clock) {
         this.config = config;
         this.model = model;
+        this.clock = clock;
         this.answers = new ModelAnswers(model);
         this.warnings = WarningLimiter.standard(clock);
         this.events = new EventFanOut(LOG, warnings);
@@ -75,9 +93,14 @@ public final class Hub implements AutoCloseable {
         HubCore core = new HubCore(model.name(), config.matchSourceAddress(), config.portMemorySeconds(), config.maxPortsPerRobot(),
                 config.maxPortsPerAddress(), config.shaping());
         KeepAlive keepAlive = KeepAlive.within(config.deadPeerSeconds());
-        this.executor = new StepExecutor(core, clock, new Outbox(events), config.bindAddress(),
-                steps -> new LinkSide(steps, answers, config, warnings, keepAlive, events, airtime, clock, LOG));
-        this.controlSide = new ControlSide(executor, answers, config, warnings, keepAlive);
+        Outbox outbox = new Outbox(events);
+        this.portSelector = new PortSelector(clock);
+        this.applier = new ChangeApplier(outbox, portSelector, config.bindAddress(), clock);
+        this.executor = new StepExecutor(core, clock, outbox, applier);
+        Descriptors descriptors = new Descriptors(executor::giveBackRemembered);
+        LinkSide linkSide = new LinkSide(executor, answers, config, warnings, keepAlive, descriptors, events, airtime, clock, LOG);
+        this.opener = new PortOpener(executor, applier, portSelector, linkSide, descriptors, answers, config);
+        this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors);
         this.modelSide = new ModelSide(executor, answers);
         this.sampler = config.shaping().on() ? new Sampler(modelSide::measure) : null;
         events.add(new EventLogger(warnings));
@@ -92,58 +115,78 @@ public final class Hub implements AutoCloseable {
     }
 
     /**
-     * Binds the control port, starts the model, then accepts robots.
+     * Checks that the control port is free, starts the model, declares the robots and opens the
+     * fixed ports (docs/fixed-ports.md), then binds the control port: once it accepts, every fixed
+     * port listens, so a program started with the server may connect to both at once.
      *
-     * @throws IOException         when the control port cannot be bound (in use, bad address), or
-     *                             {@link #close} was called before the start finished
+     * @throws IOException         when the control port or a fixed port cannot be bound (in use,
+     *                             bad address), or {@link #close} was called before the start finished
      * @throws ModelStartException when the model will not start; nothing is left listening
      */
     public void start() throws IOException, ModelStartException {
-        controlListener = new ControlListener(controlSide, new InetSocketAddress(config.bindAddress(), config.controlPort()));
+        InetSocketAddress controlAddress = new InetSocketAddress(config.bindAddress(), config.controlPort());
+        ControlListener.checkFree(controlAddress);
+        model.setRobotLinkModel(modelSide);
+        model.setEventListener(modelSide.events());
+        model.start();
+        ControlListener listener;
         try {
-            model.setRobotLinkModel(modelSide);
-            model.setEventListener(modelSide.events());
-            model.start();
-        } catch (ModelStartException | RuntimeException e) {
-            controlListener.close();
-            throw e;
-        }
-        if (executor.locked(HubCore::isClosed)) {
-            // Stopped while the model was starting (a slow simulator connection, say).
-            controlListener.close();
-            model.shutdown();
-            throw new IOException("stopped while starting");
-        }
-        // Before the first robot can come; a start that failed forced nothing.
-        config.forced().forEach((pair, force) -> controlSide.force(pair.first(), pair.second(), force,
-                config.pins().getOrDefault(pair, RatePin.NONE)));
-        try {
-            relays = FixedPortsStart.open(config, executor, answers, airtime, clock, events);
+            if (executor.locked(HubCore::isClosed)) {
+                // Stopped while the model was starting (a slow simulator connection, say).
+                throw new IOException("stopped while starting");
+            }
+            // Before the first robot can come; a start that failed forced nothing.
+            config.forced().forEach((pair, force) -> controlSide.force(pair.first(), pair.second(), force,
+                    config.pins().getOrDefault(pair, RatePin.NONE)));
+            relays = FixedPortsStart.open(config, executor, opener, answers, airtime, clock, events);
+            listener = new ControlListener(controlSide, controlAddress);
         } catch (IOException | RuntimeException e) {
-            controlListener.close();
-            model.shutdown();
-            executor.close();
+            stopParts();
             throw e;
+        }
+        boolean stopped;
+        synchronized (this) {
+            stopped = closed;
+            if (!stopped) {
+                controlListener = listener;
+            }
+        }
+        if (stopped) { // closed meanwhile, maybe before the relays were made: they close now
+            listener.close();
+            stopParts();
+            throw new IOException("stopped while starting");
         }
         if (sampler != null) {
             sampler.start();
         }
-        controlListener.start();
+        listener.start();
         LOG.info("WSS listening for robots on " + config.bindAddress().getHostAddress() + ":" + controlPort()
                 + " with " + model.name());
     }
 
     /** The control port robots connect to (the one the OS chose when configured as 0). */
-    public int controlPort() {
+    public synchronized int controlPort() {
         return controlListener.port();
     }
 
     /** Stops the model and closes every socket: control connections, WSS ports, links. */
     @Override
     public void close() {
-        if (controlListener != null) {
-            controlListener.close();
+        ControlListener listener;
+        synchronized (this) {
+            closed = true;
+            listener = controlListener;
         }
+        if (listener != null) {
+            listener.close();
+        }
+        stopParts();
+        warnings.close();
+        LOG.info("WSS stopped");
+    }
+
+    /** Everything but the control port and the warnings, stopped: the model, the sampler, the relays, the ports and links. */
+    private void stopParts() {
         try {
             model.shutdown();
         } catch (RuntimeException e) {
@@ -153,9 +196,9 @@ public final class Hub implements AutoCloseable {
             sampler.close();
         }
         relays.forEach(UdpRelay::close);
-        executor.close();
-        warnings.close();
-        LOG.info("WSS stopped");
+        applier.close(); // no port memory timer runs any more
+        executor.close(); // the core closes: every port stops, every link closes
+        portSelector.close();
     }
 
     /** What the model is given: for a test or a benchmark that plays the model. */
@@ -190,7 +233,10 @@ public final class Hub implements AutoCloseable {
 
     /** The sockets of the control connections and of both legs of every link, for the tests of their options. */
     List<SocketChannel> openSockets() {
-        List<SocketChannel> open = new ArrayList<>(controlListener.channels());
+        List<SocketChannel> open;
+        synchronized (this) {
+            open = new ArrayList<>(controlListener.channels());
+        }
         executor.locked(core -> {
             for (WssPort port : core.ports()) {
                 for (Connection link : port.links()) {
@@ -205,7 +251,7 @@ public final class Hub implements AutoCloseable {
     /** The robots, the WSS ports, the established links and the pairs' statistics, all at one instant. */
     public HubSnapshot snapshot() {
         Airtime radios = config.shaping().on() ? airtime : null;
-        Snapshots.Copied copied = executor.locked(core -> Snapshots.copy(core, radios, relays, clock.getAsLong()));
-        return Snapshots.complete(copied, answers, clock.getAsLong());
+        Snapshots.Copied copied = executor.locked(core -> Snapshots.copy(core, radios, relays, clock.nanoTime()));
+        return Snapshots.complete(copied, answers, clock.nanoTime());
     }
 }

@@ -4,11 +4,12 @@ import org.usarsim.wss.hub.core.Admission;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.channels.SocketChannel;
-import java.util.function.LongSupplier;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
+import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
 import org.usarsim.wss.hub.tcp.LinkHub;
@@ -34,11 +35,12 @@ final class LinkSide extends SocketSide implements LinkHub {
     private final WssEventListener events;
     /** The robots' radios, when links are shaped (docs/shaping.md). */
     private final Airtime airtime;
-    private final LongSupplier clock;
+    /** The hub's clock: a shaped link's (docs/shaping.md). */
+    private final HubClock clock;
 
     LinkSide(StepExecutor executor, ModelAnswers answers, HubConfig config, WarningLimiter warnings, KeepAlive keepAlive,
-            WssEventListener events, Airtime airtime, LongSupplier clock, Logger log) {
-        super(warnings, keepAlive, executor.descriptors());
+            Descriptors descriptors, WssEventListener events, Airtime airtime, HubClock clock, Logger log) {
+        super(warnings, keepAlive, descriptors);
         this.log = log;
         this.executor = executor;
         this.answers = answers;
@@ -66,7 +68,7 @@ final class LinkSide extends SocketSide implements LinkHub {
         }
         Link link;
         try {
-            link = executor.descriptors().retrying(() -> newLink(port, socket, admission));
+            link = descriptors().retrying(() -> newLink(port, socket, admission));
         } catch (IOException e) {
             warnings.warn(log, "connections not forwarded", peer, port + ": could not open a socket to the target: " + e.getMessage());
             Closing.quietly(socket);
@@ -92,7 +94,8 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     private Link newLink(WssPort port, SocketChannel socket, Admission admission) throws IOException {
-        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock, config.shaping().queueMs()) : null;
+        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock::nanoTime,
+                config.shaping().queueMs()) : null;
         return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), shaping);
     }
 

@@ -1,34 +1,28 @@
 package org.usarsim.wss.hub;
 
-import java.net.InetAddress;
-import java.nio.channels.ServerSocketChannel;
+import java.io.IOException;
 import java.util.List;
-import java.util.Objects;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
-import java.util.function.LongSupplier;
 import java.util.function.ToLongFunction;
 import org.usarsim.wss.hub.core.Changes;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
-import org.usarsim.wss.hub.core.RobotSession;
-import org.usarsim.wss.hub.core.WssPort;
-import org.usarsim.wss.hub.tcp.Descriptors;
-import org.usarsim.wss.hub.tcp.LinkHub;
-import org.usarsim.wss.hub.tcp.PortSelector;
-import org.usarsim.wss.hub.tcp.PortSockets;
 
 /**
  * Runs the {@link HubCore} under one lock: each {@link #step} takes the lock once, runs one step of
  * the core with the time now, and applies what it returned after the lock (through the
  * {@link ChangeApplier}: the socket work in the order of the steps, the port memory's timers, the
  * events in order through the {@link Outbox}). Under the lock there is no I/O, no call into the
- * model (a model may call back in from its own thread) and no listener.
+ * model (a model may call back in from its own thread) and no listener. It holds no socket: the
+ * applier holds them, and is handed this executor with each step for what follows it
+ * ({@link ChangeApplier.FollowUps}: each is a step too).
  *
- * <p>The time is the one clock the hub was given ({@link System#nanoTime()} in use), read under
- * the lock for each step, so the steps see it move forward in their order.
+ * <p>The time is the hub's one {@link HubClock}, read under the lock for each step, so the steps
+ * see it move forward in their order.
  */
-final class StepExecutor {
+final class StepExecutor implements ChangeApplier.FollowUps {
 
     /** One step of the core: changes its state, says in {@code out} what must happen, answers. */
     interface Step<T> {
@@ -48,35 +42,15 @@ final class StepExecutor {
 
     private final Object lock = new Object();
     private final HubCore core;
-    private final LongSupplier clock;
+    private final HubClock clock;
     private final Outbox outbox;
-    private final ForgetTimer forgetTimer = new ForgetTimer(this::forgetIfGone);
-    private final Descriptors descriptors = new Descriptors(this::giveBackRemembered);
-    /** Every listening WSS port, on one thread; it hands what it accepts to the link side. */
-    private final PortSelector portSelector;
     private final ChangeApplier applier;
 
-    /** @param linkSide the link side, given this executor: what the port selector hands its connections to */
-    StepExecutor(HubCore core, LongSupplier clock, Outbox outbox, InetAddress bindAddress,
-            Function<StepExecutor, LinkHub> linkSide) {
+    StepExecutor(HubCore core, HubClock clock, Outbox outbox, ChangeApplier applier) {
         this.core = core;
         this.clock = clock;
         this.outbox = outbox;
-        this.portSelector = new PortSelector(linkSide.apply(this));
-        this.applier = new ChangeApplier(outbox, forgetTimer, descriptors, portSelector, bindAddress,
-                (action, e) -> run((hub, now, out) -> hub.couldNotListen(action.port(), action.epoch(), e.getMessage(), out)));
-    }
-
-    Descriptors descriptors() {
-        return descriptors;
-    }
-
-    PortSelector portSelector() {
-        return portSelector;
-    }
-
-    long now() {
-        return clock.getAsLong();
+        this.applier = applier;
     }
 
     /**
@@ -89,9 +63,9 @@ final class StepExecutor {
         T answer;
         ChangeApplier.Applying applying;
         synchronized (lock) {
-            answer = step.take(core, clock.getAsLong(), out);
+            answer = step.take(core, clock.nanoTime(), out);
             lock.notifyAll();
-            applying = applier.taken(out);
+            applying = applier.taken(out, this);
         }
         applier.apply(applying);
         return answer;
@@ -115,9 +89,9 @@ final class StepExecutor {
         T answer;
         ChangeApplier.Applying applying;
         synchronized (lock) {
-            long start = clock.getAsLong();
+            long start = clock.nanoTime();
             while (true) {
-                long now = clock.getAsLong();
+                long now = clock.nanoTime();
                 answer = step.take(core, now, out);
                 long patience = patienceNs.applyAsLong(answer);
                 long left = start + patience - now;
@@ -125,13 +99,13 @@ final class StepExecutor {
                     break;
                 }
                 try {
-                    TimeUnit.NANOSECONDS.timedWait(lock, left);
+                    TimeUnit.NANOSECONDS.timedWait(lock, clock.waitNanos(left));
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
                     break;
                 }
             }
-            applying = applier.taken(out);
+            applying = applier.taken(out, this);
         }
         applier.apply(applying);
         return answer;
@@ -141,30 +115,6 @@ final class StepExecutor {
     <T> T locked(Function<HubCore, T> call) {
         synchronized (lock) {
             return call.apply(core);
-        }
-    }
-
-    /**
-     * Inside a DNS's step: the new port's socket, bound before the lock; a port that cannot start
-     * accepting does not listen after all.
-     */
-    void adopt(WssPort port, ServerSocketChannel bound, Changes out) {
-        applier.adopt(core, port, bound, out);
-    }
-
-    /**
-     * A robot's control connection closed: it begins to leave (its name stays taken until its
-     * ports drained). @return the sockets of its listening ports, to drain; null when the session
-     * is not the robot's
-     */
-    List<PortSockets> beginLeaving(String name, RobotSession session) {
-        synchronized (lock) {
-            List<WssPort> listening = core.beginLeaving(name, session);
-            if (listening == null) {
-                return null;
-            }
-            lock.notifyAll(); // an INIT of the name waits for the drain now
-            return listening.stream().map(applier::socketsOf).filter(Objects::nonNull).toList();
         }
     }
 
@@ -185,32 +135,38 @@ final class StepExecutor {
         outbox.deliverThrough(last);
     }
 
+    @Override
+    public void couldNotListen(Changes.PortAction action, IOException e) {
+        run((hub, now, out) -> hub.couldNotListen(action.port(), action.epoch(), e.getMessage(), out));
+    }
+
+    /** The port memory's timer, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
+    @Override
+    public void forgetIfGone(String robot) {
+        run((hub, now, out) -> hub.forgetIfGone(robot, now, out));
+    }
+
     /**
-     * Descriptors ran short: remembered ports of robots that left are given back, the longest gone
-     * first, before anyone here is refused. Their sockets are closed at once, even from inside
-     * another step's turn (a port given back is done with). @return true when some were
+     * Descriptors ran short ({@link org.usarsim.wss.hub.tcp.Descriptors}): remembered ports of
+     * robots that left are given back, the longest gone first, before anyone here is refused.
+     * Their sockets are closed at once, even from inside another step's turn (a port given back is
+     * done with). @return true when some were
      */
-    private boolean giveBackRemembered() {
+    @Override
+    public boolean giveBackRemembered() {
         Changes out = new Changes();
         ChangeApplier.Applying applying;
         int given;
         synchronized (lock) {
-            given = core.giveBackRemembered(GIVE_BACK_AT_LEAST, clock.getAsLong(), out);
+            given = core.giveBackRemembered(GIVE_BACK_AT_LEAST, clock.nanoTime(), out);
             applying = applier.takenOutOfTurn(out);
         }
         applier.applyOutOfTurn(applying);
         return given > 0;
     }
 
-    /** The timer's call, wss.portMemory seconds after a robot left: forget its ports unless it came back. */
-    private void forgetIfGone(String name) {
-        run((hub, now, out) -> hub.forgetIfGone(name, now, out));
-    }
-
-    /** The end: no port memory timer runs any more, and the port selector stops. */
+    /** The end: the core closes, every port stops and every link closes. */
     void close() {
-        forgetTimer.close();
         run((hub, now, out) -> hub.close(out));
-        portSelector.close();
     }
 }

@@ -1,9 +1,9 @@
 package org.usarsim.wss.hub;
 
 import java.net.InetAddress;
-import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.net.LogLimiter;
 
 /**
@@ -32,43 +32,28 @@ final class WarningLimiter implements AutoCloseable {
     /** Lines of one kind of {@link #say} from all addresses together in an interval. */
     static final int SAID_ALL_FIRST = 100;
 
-    /** Runs a task after a delay: a timer thread in the server, by hand in a test. */
-    interface Timer extends LogLimiter.Timer {
-    }
-
     private final LogLimiter limiter;
     private final LogLimiter said;
 
     /** {@code first} from one address, {@code allFirst} from all, per kind and interval. */
-    WarningLimiter(int first, int allFirst, long intervalNs, LongSupplier clock, Timer timer) {
+    WarningLimiter(int first, int allFirst, long intervalNs, HubClock clock, LogLimiter.Timer timer) {
         this(first, allFirst, SAID_FIRST, SAID_ALL_FIRST, intervalNs, clock, timer);
     }
 
     /** As above, with {@code saidFirst} and {@code saidAllFirst} for {@link #say}. */
-    WarningLimiter(int first, int allFirst, int saidFirst, int saidAllFirst, long intervalNs, LongSupplier clock, Timer timer) {
-        this.limiter = new LogLimiter(first, allFirst, intervalNs, clock, timer);
-        this.said = new LogLimiter(saidFirst, saidAllFirst, intervalNs, clock, timer);
+    WarningLimiter(int first, int allFirst, int saidFirst, int saidAllFirst, long intervalNs, HubClock clock, LogLimiter.Timer timer) {
+        this.limiter = new LogLimiter(first, allFirst, intervalNs, clock::nanoTime, timer);
+        this.said = new LogLimiter(saidFirst, saidAllFirst, intervalNs, clock::nanoTime, timer);
     }
 
-    /** The server's: {@link #FIRST} a minute, the summaries written by a {@link #daemonTimer()}. */
-    static WarningLimiter standard(LongSupplier clock) {
-        return new WarningLimiter(FIRST, LogLimiter.ALL_FIRST, INTERVAL_NS, clock, daemonTimer());
+    /** The server's: {@link #FIRST} a minute on the hub's clock, the summaries written by a {@link #timer}. */
+    static WarningLimiter standard(HubClock clock) {
+        return new WarningLimiter(FIRST, LogLimiter.ALL_FIRST, INTERVAL_NS, clock, timer(clock));
     }
 
-    /** A timer whose one daemon thread, {@code wss-warnings}, lives only while a task waits (and a second more). */
-    static Timer daemonTimer() {
-        LogLimiter.Timer timer = LogLimiter.daemonTimer("wss-warnings");
-        return new Timer() {
-            @Override
-            public void after(long delayNs, Runnable task) {
-                timer.after(delayNs, task);
-            }
-
-            @Override
-            public void stop() {
-                timer.stop();
-            }
-        };
+    /** The server's timer: its one daemon thread, {@code wss-warnings}, lives only while a summary waits (and a second more). */
+    static LogLimiter.Timer timer(HubClock clock) {
+        return new ClockTimer("wss-warnings", clock);
     }
 
     void warn(Logger log, String kind, InetAddress source, String message) {

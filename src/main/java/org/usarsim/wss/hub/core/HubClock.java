@@ -13,6 +13,16 @@ public interface HubClock {
     /** The wall clock in milliseconds since the epoch, as {@link System#currentTimeMillis()}: for what a log line says. */
     long currentTimeMillis();
 
+    /**
+     * How long a thread that waits for this clock to move {@code clockNs} on sleeps (by the
+     * machine's time) before it reads the clock again: that long on the machine's clock; a clock a
+     * test moves by hand says less, so that a waiter sees the move at once. Every timed wait of the
+     * hub goes through it: a timer's, a departure's drain, a registration waiting for a name.
+     */
+    default long waitNanos(long clockNs) {
+        return clockNs;
+    }
+
     /** The machine's clock. */
     HubClock SYSTEM = new HubClock() {
         @Override

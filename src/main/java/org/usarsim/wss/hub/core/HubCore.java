@@ -19,7 +19,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * place a port is given back). Every method is one step: it changes
  * the state and appends what must happen because of it to a {@link Changes} (events, port work,
  * connections to close), which the hub applies after its lock. The time comes in with each step
- * that needs it ({@code nowNs}, as {@link System#nanoTime()}), so tests move it by hand.
+ * that needs it ({@code nowNs}, the {@link HubClock}'s nanoseconds), so tests move it by hand.
  *
  * <p>Single-threaded: the hub calls it under its lock only. What the model answers
  * ({@code connectionIsPossibleForPair}) is asked by the hub before the step and passed in, since

@@ -33,7 +33,7 @@ public final class Closes {
         List<PortListener> closing = List.copyOf(added);
         added.clear();
         selector.close(closing);
-        long deadline = System.nanoTime() + PortSelector.CLOSE_WAIT_NS;
+        long deadline = selector.clock().nanoTime() + PortSelector.CLOSE_WAIT_NS;
         for (PortListener listener : closing) {
             if (!listener.awaitClosed(deadline)) {
                 LOG.severe(listener.port + ": its listening socket was not closed in time");

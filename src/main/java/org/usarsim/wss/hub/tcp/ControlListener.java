@@ -20,7 +20,16 @@ public final class ControlListener extends AcceptLoop {
     private final Set<ControlSession> sessions = ConcurrentHashMap.newKeySet();
     private final Thread thread;
 
-    /** Binds at once, so that a port in use is known before anything else starts. */
+    /**
+     * Binds the address for a moment: a control port in use, or an address not of this machine,
+     * is known before anything else starts (the model, the fixed ports), though the hub binds the
+     * control port last. A number taken in between is still refused by the bind.
+     */
+    public static void checkFree(InetSocketAddress address) throws IOException {
+        AcceptLoop.bind(address, 1).close();
+    }
+
+    /** Binds at once: connections are accepted (by the kernel, then by {@link #start}) from now on. */
     public ControlListener(ControlHub hub, InetSocketAddress address) throws IOException {
         super(AcceptLoop.bind(address, AcceptLoop.BACKLOG), LOG, "the control port", "the control connection from");
         this.hub = hub;

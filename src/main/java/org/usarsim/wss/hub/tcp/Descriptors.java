@@ -30,10 +30,18 @@ public final class Descriptors {
 
     /** Does the work; out of descriptors, gives some back and does it once more. */
     public <T> T retrying(Work<T> work) throws IOException {
+        return retrying(work, giveBack);
+    }
+
+    /**
+     * As {@link #retrying(Work)}, with the give-back named by the caller: the hub's socket work
+     * after a step, handed the hub's steps with the step (docs/architecture.md, "The hub").
+     */
+    public static <T> T retrying(Work<T> work, BooleanSupplier giveBack) throws IOException {
         try {
             return work.run();
         } catch (IOException e) {
-            if (gaveBack(e)) {
+            if (ranOut(e) && giveBack.getAsBoolean()) {
                 return work.run();
             }
             throw e;

@@ -10,6 +10,7 @@ import java.nio.channels.SocketChannel;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.WssPort;
 
 /**
@@ -33,6 +34,8 @@ public final class PortListener {
     /** Which listening of the port this is (the core's epoch): a connection it accepted after the port stopped is refused. */
     final int epoch;
     final ServerSocketChannel channel;
+    /** The hub's clock, which the deadlines of the waits for it are on. */
+    private final HubClock clock;
     /** Its key in the selector; only the selector's thread reads or writes it. */
     SelectionKey key;
     /** Asked to close (a stop or a release); the selector's thread closes it. */
@@ -47,10 +50,11 @@ public final class PortListener {
     private volatile InetSocketAddress markerAddress;
     private SocketChannel marker;
 
-    PortListener(WssPort port, int epoch, ServerSocketChannel channel) {
+    PortListener(WssPort port, int epoch, ServerSocketChannel channel, HubClock clock) {
         this.port = port;
         this.epoch = epoch;
         this.channel = channel;
+        this.clock = clock;
     }
 
     /** Whether its close was asked for (it may not be done yet: {@link #isClosed}). */
@@ -101,7 +105,7 @@ public final class PortListener {
         ended.countDown();
     }
 
-    /** Waits until the socket no longer listens, at most until the deadline (System.nanoTime()). @return whether it is closed */
+    /** Waits until the socket no longer listens, at most until the deadline (the hub's clock). @return whether it is closed */
     boolean awaitClosed(long deadline) {
         return await(closed, deadline);
     }
@@ -163,20 +167,25 @@ public final class PortListener {
         Closing.quietly(socket);
     }
 
-    /** Waits until the drain ended (or the listener closed and its connections were handed over), or until the deadline (System.nanoTime()). */
+    /** Waits until the drain ended (or the listener closed and its connections were handed over), or until the deadline (the hub's clock). */
     public void awaitEnd(long deadline) {
         if (!await(ended, deadline)) {
             LOG.fine(() -> port + ": did not drain in time");
         }
     }
 
-    private static boolean await(CountDownLatch latch, long deadline) {
+    private boolean await(CountDownLatch latch, long deadline) {
         try {
-            return latch.await(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            long left;
+            while ((left = deadline - clock.nanoTime()) > 0) {
+                if (latch.await(clock.waitNanos(left), TimeUnit.NANOSECONDS)) {
+                    return true;
+                }
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-            return latch.getCount() == 0;
         }
+        return latch.getCount() == 0;
     }
 
     @Override

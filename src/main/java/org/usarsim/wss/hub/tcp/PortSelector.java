@@ -17,6 +17,7 @@ import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubClock;
 
 /**
  * Every listening WSS port, served by one thread ({@code wss-port-accept}) on one Selector: it
@@ -26,8 +27,9 @@ import java.util.logging.Logger;
  * channel registered with a Selector is really closed only when that selector next runs, so the
  * thread closes it and runs the selector again before it says the close is done.
  *
- * <p>Its two threads start with the first port that listens (a hub whose start fails leaves none)
- * and end with {@link #close}. The thread never waits for the hub, nor for the hand-over thread.
+ * <p>Its two threads start with the first port opened ({@link #start}, given where the connections
+ * go: a hub whose start fails leaves none) and end with {@link #close}. The thread never waits for
+ * the hub, nor for the hand-over thread.
  */
 public final class PortSelector implements AutoCloseable {
 
@@ -39,7 +41,9 @@ public final class PortSelector implements AutoCloseable {
     /** How long a close may take before the one waiting for it says so and goes on. */
     public static final long CLOSE_WAIT_NS = TimeUnit.SECONDS.toNanos(10);
 
-        private final HandOver handOver;
+    private final HubClock clock;
+    /** Set as the threads start, before them; the accepting thread reads it. */
+    private HandOver handOver;
     private final Queue<Runnable> tasks = new ConcurrentLinkedQueue<>();
     /** Opened with the first listener, under this object's monitor; read without it once open. */
     private volatile Selector selector;
@@ -53,16 +57,26 @@ public final class PortSelector implements AutoCloseable {
     private final Set<PortListener> closing = new LinkedHashSet<>();
     /** Ports held back while the hand-over queue is full. */
     private final Set<SelectionKey> heldBack = new HashSet<>();
-    /** Ports whose accept failed, and when they accept again (System.nanoTime()). */
+    /** Ports whose accept failed, and when they accept again (the hub's clock). */
     private final Map<SelectionKey, Long> paused = new HashMap<>();
 
-    public PortSelector(LinkHub hub) {
-        this.handOver = new HandOver(hub, this);
+    public PortSelector(HubClock clock) {
+        this.clock = clock;
     }
 
-    /** Opens the selector and starts its threads, unless done: before the first port listens. */
-    public void start() throws IOException {
-        opened();
+    /**
+     * Opens the selector and starts its threads, which hand what they accept to {@code hub},
+     * unless done: before the first port listens. Later calls give the same hub.
+     */
+    public void start(LinkHub hub) throws IOException {
+        if (selector == null || closed) {
+            openedFirst(hub);
+        }
+    }
+
+    /** The hub's clock, which the waits for this selector's closes are on. */
+    HubClock clock() {
+        return clock;
     }
 
     /** The listeners a step closes: handed to the selector's thread at once and waited for once. */
@@ -129,40 +143,41 @@ public final class PortSelector implements AutoCloseable {
     }
 
     /**
-     * The selector, opened and its threads started with the first listener. Once open, without
-     * this object's monitor: every DNS asks first, and a hundred robots asking at once queued on it.
+     * The selector, open since {@link #start}. Without this object's monitor: every DNS asks
+     * first, and a hundred robots asking at once queued on it.
      */
     private Selector opened() throws IOException {
         Selector open = selector;
         if (open != null && !closed) {
             return open;
         }
-        return openedFirst();
+        throw new IOException(closed ? "the WSS has stopped" : "the WSS ports' selector has not started");
     }
 
-    private synchronized Selector openedFirst() throws IOException {
+    private synchronized void openedFirst(LinkHub hub) throws IOException {
         if (closed) {
             throw new IOException("the WSS has stopped");
         }
         if (selector == null) {
             Selector opened = Selector.open();
+            HandOver handing = new HandOver(hub, this);
+            handOver = handing; // before the threads start: they read it
             Thread accepting = new Thread(() -> run(opened), "wss-port-accept"); // before the field is set
             accepting.setDaemon(true);
-            Thread handing = new Thread(handOver, "wss-port-handover");
-            handing.setDaemon(true);
+            Thread handingThread = new Thread(handing, "wss-port-handover");
+            handingThread.setDaemon(true);
             try {
-                handing.start();
+                handingThread.start();
                 accepting.start();
             } catch (Throwable e) {
-                handOver.stop();
+                handing.stop();
                 Closing.quietly(opened);
                 throw e;
             }
             selector = opened;
             thread = accepting;
-            handOverThread = handing;
+            handOverThread = handingThread;
         }
-        return selector;
     }
 
     private void run(Selector selector) {
@@ -248,7 +263,7 @@ public final class PortSelector implements AutoCloseable {
                 connection = listener.channel.accept();
             } catch (IOException e) {
                 interest(key, 0);
-                paused.put(key, System.nanoTime() + PAUSE_NS);
+                paused.put(key, clock.nanoTime() + PAUSE_NS);
                 handOver.acceptFailed(listener, e);
                 return;
             }
@@ -280,14 +295,14 @@ public final class PortSelector implements AutoCloseable {
             return 0; // until woken
         }
         long next = paused.values().stream().mapToLong(Long::longValue).min().getAsLong();
-        return Math.max(1, TimeUnit.NANOSECONDS.toMillis(next - System.nanoTime()) + 1);
+        return Math.max(1, TimeUnit.NANOSECONDS.toMillis(clock.waitNanos(next - clock.nanoTime())) + 1);
     }
 
     private void resumePaused() {
         if (paused.isEmpty()) {
             return;
         }
-        long now = System.nanoTime();
+        long now = clock.nanoTime();
         paused.entrySet().removeIf(entry -> {
             if (entry.getValue() - now > 0) {
                 return false;

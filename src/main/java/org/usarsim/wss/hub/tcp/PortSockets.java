@@ -13,9 +13,9 @@ import org.usarsim.wss.hub.core.WssPort;
 
 /**
  * The socket of one WSS port: what the core's {@link WssPort} is on the machine. Its number is
- * chosen by the OS when a DNS first binds it ({@link #bindNew}) and kept until the hub forgets the
- * port (wss.portMemory, a kick, descriptors running short); it listens or not as the hub applies
- * the core's decisions, one descriptor either way:
+ * chosen by the OS when a DNS first binds it ({@link #bind}; a fixed port's is configured) and
+ * kept until the hub forgets the port (wss.portMemory, a kick, descriptors running short); it
+ * listens or not as the hub applies the core's decisions, one descriptor either way:
  * <ul>
  * <li>listening, its listening socket ({@link PortListener}, on the {@link PortSelector}) holds
  * the number;</li>
@@ -70,24 +70,22 @@ public final class PortSockets {
         }
     }
 
-    /** A new listening socket on a number the OS chooses: a DNS binds it before the port is allocated. */
-    public static ServerSocketChannel bindNew(InetAddress bindAddress) throws IOException {
-        return bindListening(new InetSocketAddress(bindAddress, 0));
-    }
-
-    /** A new listening socket on a fixed port's number (docs/fixed-ports.md), shared as a port's sockets share it. */
-    public static ServerSocketChannel bindNumber(InetAddress bindAddress, int number) throws IOException {
+    /**
+     * A new listening socket for a port about to be opened, bound before the port is allocated: on
+     * a number the OS chooses (0: a DNS's), or on a fixed port's number (docs/fixed-ports.md).
+     */
+    public static ServerSocketChannel bind(InetAddress bindAddress, int number) throws IOException {
         return bindListening(new InetSocketAddress(bindAddress, number));
     }
 
-    /** The number a socket from {@link #bindNew} holds. */
+    /** The number a socket from {@link #bind} holds. */
     public static int numberOf(ServerSocketChannel bound) {
         return bound.socket().getLocalPort();
     }
 
     /**
      * The socket of a port the core allocated with the number of {@code fresh} (from
-     * {@link #bindNew}), which the port's first {@link #listen} takes; a port allocated not
+     * {@link #bind}), which the port's first {@link #listen} takes; a port allocated not
      * listening is {@link #stop}ped in the same step, and keeps its number with a placeholder.
      */
     public static PortSockets adopt(WssPort port, InetAddress bindAddress, PortSelector selector, ServerSocketChannel fresh) {
@@ -110,11 +108,11 @@ public final class PortSockets {
         if (listener != null && !listener.isClosed()) {
             stop(closes);
             closes.await();
-            listener.awaitClosed(System.nanoTime() + PortSelector.CLOSE_WAIT_NS);
+            listener.awaitClosed(selector.clock().nanoTime() + PortSelector.CLOSE_WAIT_NS);
         }
         ServerSocketChannel channel = fresh != null ? fresh : bindListening(address);
         fresh = null;
-        PortListener started = new PortListener(port, epoch, channel);
+        PortListener started = new PortListener(port, epoch, channel, selector.clock());
         try {
             selector.register(started);
         } catch (IOException e) {

@@ -10,10 +10,10 @@ import java.nio.channels.DatagramChannel;
 import java.nio.channels.SelectionKey;
 import java.nio.channels.Selector;
 import java.util.List;
-import java.util.function.LongSupplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.FixedPort;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.UdpCounts;
@@ -53,7 +53,7 @@ public final class UdpRelay implements AutoCloseable {
     private final InetAddress source;
     private final InetAddress bindAddress;
     private final Pair pair;
-    private final LongSupplier clock;
+    private final HubClock clock;
     private final Selector selector;
     private final DatagramChannel front;
     private final UdpSessions<DatagramChannel> sessions;
@@ -77,7 +77,7 @@ public final class UdpRelay implements AutoCloseable {
      * @throws IOException when the number cannot be bound
      */
     public UdpRelay(FixedPort port, InetAddress bindAddress, InetSocketAddress target, InetAddress source, Pair pair,
-            Airtime airtime, long idleNs, LongSupplier clock, Report report) throws IOException {
+            Airtime airtime, long idleNs, HubClock clock, Report report) throws IOException {
         this.report = report;
         this.port = port;
         this.target = target;
@@ -86,7 +86,7 @@ public final class UdpRelay implements AutoCloseable {
         this.pair = pair;
         this.clock = clock;
         this.sessions = new UdpSessions<>(idleNs);
-        long now = clock.getAsLong();
+        long now = clock.nanoTime();
         long seed = port.number() * 2L;
         this.forward = new DatagramFlow<>(airtime.open(port.key().from(), port.key().to(), now), seed);
         this.back = new DatagramFlow<>(airtime.open(port.key().to(), port.key().from(), now), seed + 1);
@@ -138,7 +138,7 @@ public final class UdpRelay implements AutoCloseable {
         try {
             while (!closed) {
                 follow();
-                long now = clock.getAsLong();
+                long now = clock.nanoTime();
                 long waitNs;
                 synchronized (sessions) {
                     waitNs = Math.min(Math.min(forward.nanosUntilNext(now), back.nanosUntilNext(now)), sessions.nanosUntilExpiry(now));
@@ -149,7 +149,7 @@ public final class UdpRelay implements AutoCloseable {
                 } else if (waitNs == Long.MAX_VALUE) {
                     selector.select();
                 } else {
-                    selector.select(Math.max(1, (waitNs + 999_999) / 1_000_000));
+                    selector.select(Math.max(1, (clock.waitNanos(waitNs) + 999_999) / 1_000_000));
                 }
                 for (SelectionKey key : selector.selectedKeys()) {
                     if (key.isValid() && key.isReadable()) {
@@ -157,10 +157,10 @@ public final class UdpRelay implements AutoCloseable {
                     }
                 }
                 selector.selectedKeys().clear();
-                sendDue(clock.getAsLong());
-                if (clock.getAsLong() - nextReportNs >= 0) {
+                sendDue(clock.nanoTime());
+                if (clock.nanoTime() - nextReportNs >= 0) {
                     reportCounts();
-                    nextReportNs = clock.getAsLong() + REPORT_NS;
+                    nextReportNs = clock.nanoTime() + REPORT_NS;
                 }
             }
         } catch (IOException | RuntimeException e) {
@@ -229,7 +229,7 @@ public final class UdpRelay implements AutoCloseable {
             buffer.flip();
             byte[] data = new byte[buffer.remaining()];
             buffer.get(data);
-            long now = clock.getAsLong();
+            long now = clock.nanoTime();
             if (channel == front) {
                 fromSender((InetSocketAddress) from, data, now);
             } else {

@@ -12,7 +12,7 @@ import java.util.Map;
  * A fixed UDP port's senders (docs/fixed-ports.md): each sender (address and port) has a session,
  * its own socket of the WSS toward the target, so that the target's answers to that socket go back
  * to that sender. A session expires once nothing passed either way for the idle time. Pure: the
- * time is given ({@code System.nanoTime()}'s); the sockets are the caller's.
+ * time is given (the hub's clock's nanoseconds); the sockets are the caller's.
  *
  * @param <S> a session's socket
  */

@@ -39,7 +39,7 @@ import sun.misc.SignalHandler;
 /**
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
- * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]} runs a USARSim-compatible
+ * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT [--ros-rate HZ]]} runs a USARSim-compatible
  * world server instead (docs/world.md); {@code --export-world RUN.rec [--out FILE]} writes a recording as a
  * world file (docs/replay.md). {@link #run} does it all and returns the exit code
  * ({@link #OK}, {@link #CANNOT_START}, {@link #BAD_INPUT}); {@link #main} only exits with it.
@@ -117,7 +117,7 @@ public final class Main {
                 yield OK;
             }
             case EXPORT_WORLD -> exportWorld(out, err, options.export(), options.out());
-            case WORLD -> runWorld(out, options.world(), options.port(), options.bind(), options.rosbridge());
+            case WORLD -> runWorld(out, options.world(), options.port(), options.bind(), options.rosbridge(), options.rosRate());
             case SERVE -> serve(out, options);
             case PRINT_PORTS -> printPorts(out, err, options.config());
         };
@@ -307,7 +307,8 @@ public final class Main {
     }
 
     /** The world server (and its rosbridge, on a port not -1): read the file, listen, serve until SIGTERM or Ctrl-C. */
-    private static int runWorld(PrintStream out, Path file, int port, String bindText, int rosbridgePort) throws Failure {
+    private static int runWorld(PrintStream out, Path file, int port, String bindText, int rosbridgePort, double rosRate)
+            throws Failure {
         InetAddress address;
         try {
             address = InetAddress.getByName(bindText);
@@ -329,7 +330,8 @@ public final class Main {
             try {
                 if (rosbridgePort >= 0) {
                     try {
-                        rosbridge = RosbridgeServer.start(server, address, rosbridgePort);
+                        rosbridge = RosbridgeServer.start(server, address, rosbridgePort, rosRate,
+                                RosbridgeServer.DEFAULT_CONNECTION_DELAY);
                     } catch (IOException e) {
                         throw new Failure(CANNOT_START, "cannot listen for rosbridge on " + address.getHostAddress() + ":"
                                 + rosbridgePort + ": " + e.getMessage());

@@ -41,6 +41,10 @@ class FragmentsTest {
         fragments.set(59.0, true);
         assertEquals(2, fragments.of(FRAME, null).size());
         assertEquals("2.0", JsonNode.parse(fragments.of(FRAME, null).get(1), JsonLimits.DEFAULT).get("total").value().toString());
+        fragments.set(20.0, true);
+        List<String> four = fragments.of(FRAME + " ", null);
+        assertEquals(4, four.size(), "61 chars: total 4.0, as many as the total truncated (3.95: 3)");
+        assertEquals(4.0, JsonNode.parse(four.get(3), JsonLimits.DEFAULT).get("total").number());
         fragments.set(null, false);
         assertEquals(List.of(FRAME), fragments.of(FRAME, null), "null: no fragments again");
     }

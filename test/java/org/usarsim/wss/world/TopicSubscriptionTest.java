@@ -184,4 +184,16 @@ class TopicSubscriptionTest {
         assertThrows(IllegalArgumentException.class, () -> subscription.unsubscribe("a", false, 0), "b's -1 stays");
         assertTrue(subscription.unsubscribe("b", false, 0));
     }
+
+    @Test
+    void aQueueHandlerKeepsItsQueueWhenANegativeLengthIsRefused() {
+        subscription.subscribe("a", 200, 2, 0);
+        assertThrows(IllegalArgumentException.class, () -> subscription.subscribe("b", 100, -1, 0));
+        assertEquals(Handler.QUEUE, subscription.handler());
+        for (long t = 0; t <= 30; t += 10) {
+            publish("A", t);
+        }
+        subscription.sendDue(300 * MS);
+        assertEquals(List.of("A0@0", "A20@100", "A30@200"), sent, "its deque of 2, sent at the throttle of 100 taken before");
+    }
 }

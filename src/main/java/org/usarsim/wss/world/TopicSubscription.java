@@ -53,6 +53,8 @@ final class TopicSubscription<M> {
     private long throttleNanos;
     private long queueLength;
     private final ArrayDeque<M> queue = new ArrayDeque<>();
+    /** The queue's bound, set when the queue handler's deque is made (its {@code maxlen}). */
+    private int capacity;
     /** When the queue last became non-empty, or was last sent from, or its handler was told of a change. */
     private long readySince;
     private long lastSend = NEVER;
@@ -113,7 +115,7 @@ final class TopicSubscription<M> {
                 if (queue.isEmpty()) {
                     readySince = nanos;
                 }
-                if (queue.size() >= Math.min(queueLength, Integer.MAX_VALUE)) {
+                if (queue.size() >= capacity) {
                     queue.removeFirst();
                 }
                 queue.addLast(message);
@@ -168,11 +170,12 @@ final class TopicSubscription<M> {
         if (next == Handler.QUEUE && queueLength < 0) {
             throw new IllegalArgumentException("maxlen must be non-negative");
         }
-        if (handler == Handler.QUEUE && next == Handler.QUEUE) {
-            while (queue.size() > Math.min(queueLength, Integer.MAX_VALUE)) {
+        if (next == Handler.QUEUE) {
+            capacity = (int) Math.min(queueLength, Integer.MAX_VALUE);
+            while (queue.size() > capacity) {
                 queue.removeFirst();
             }
-            readySince = now; // its thread is told, and sends at once if the throttle lets it
+            readySince = now; // its thread is told (or started), and sends at once if the throttle lets it
         } else if (handler == Handler.QUEUE) {
             finish(now);
         }

@@ -34,6 +34,9 @@ class OptionsParserTest {
         assertEquals("127.0.0.1", given.bind());
         assertEquals(-1, given.rosbridge(), "no rosbridge unless asked");
         assertEquals(9090, OptionsParser.parse("--world", "a.world", "--rosbridge", "9090").rosbridge());
+        assertEquals(20, given.rosRate(), "the rosbridge publishers' rate");
+        assertEquals(5, OptionsParser.parse("--world", "a.world", "--rosbridge", "0", "--ros-rate", "5").rosRate());
+        assertEquals(0.5, OptionsParser.parse("--world", "a.world", "--rosbridge", "0", "--ros-rate", "0.5").rosRate());
     }
 
     @Test

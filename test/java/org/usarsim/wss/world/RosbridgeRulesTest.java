@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.OptionalDouble;
-import java.util.logging.Level;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.ros.JsonException;
@@ -30,23 +29,14 @@ class RosbridgeRulesTest {
     private final World world = new World(List.of(
             new WorldRobot("A", new Point(1, 0, 0), null, OptionalDouble.empty()),
             new WorldRobot("B", new Point(2, 0, 0), null, OptionalDouble.empty())), List.of());
-    private final List<String> sent = new ArrayList<>();
-    private final List<String> logged = new ArrayList<>();
+    private final RecordedOut out = new RecordedOut();
+    private final List<String> sent = out.sent;
+    private final List<String> logged = out.logged;
     private RosbridgeSession session = session(5, 300);
 
     private RosbridgeSession session(double hz, long delayMs) {
         return new RosbridgeSession(world, new RosGraph(world.robotNames(), hz, delayMs * MS), () -> "{\"op\":\"publish\",\"topic\":\"/map\"}",
-                new RosbridgeSession.Out() {
-                    @Override
-                    public void send(String frame) {
-                        sent.add(frame);
-                    }
-
-                    @Override
-                    public void log(Level level, String kind, String message) {
-                        logged.add(level + " " + message);
-                    }
-                });
+                out);
     }
 
     /** The robots of each /tf message sent, in order: "A", "B". */

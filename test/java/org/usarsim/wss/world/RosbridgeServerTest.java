@@ -7,7 +7,6 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.http.WebSocket;
 import java.nio.ByteBuffer;
@@ -52,28 +51,25 @@ class RosbridgeServerTest {
     private final long started = System.nanoTime();
     /** The world's time when the test started. */
     private volatile double offset = 4;
+    private RunningRosbridge running;
     private WorldServer worldServer;
     private RosbridgeServer server;
-    private final List<WebSocket> sockets = new ArrayList<>();
 
     @BeforeEach
     void start() throws IOException {
-        worldServer = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0),
-                () -> offset + (System.nanoTime() - started) / 1e9);
-        server = RosbridgeServer.start(worldServer, InetAddress.getLoopbackAddress(), 0);
+        running = new RunningRosbridge(world, () -> offset + (System.nanoTime() - started) / 1e9, RosbridgeServer.DEFAULT_RATE_HZ,
+                RosbridgeServer.DEFAULT_CONNECTION_DELAY);
+        worldServer = running.world;
+        server = running.server;
     }
 
     @AfterEach
     void stop() {
-        sockets.forEach(WebSocket::abort);
-        server.close();
-        worldServer.close();
+        running.close();
     }
 
     private WebSocket connect(ReceivedFrames received) {
-        WebSocket socket = received.connect(server.port());
-        sockets.add(socket);
-        return socket;
+        return running.connect(received);
     }
 
     private static Map<String, RobotPose> poses(MessageType type, String frame) throws Exception {

@@ -6,12 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.charset.StandardCharsets;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.OptionalDouble;
 import java.util.function.Function;
-import java.util.logging.Level;
 import java.util.stream.Collectors;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.ros.JsonException;
@@ -35,25 +33,15 @@ class RosbridgeSessionTest {
                     OptionalDouble.empty())),
             List.of(new Wall(5, -10, 5, 10), new Wall(7, -10, 7, 10), new Wall(-1, 1, 1, 1)));
 
-    private final List<String> sent = new ArrayList<>();
-    private final List<String> logged = new ArrayList<>();
     private static final long MS = 1_000_000L;
     /** The session's time: 2 s into the world (publishers at 20 Hz, as the server's default). */
     private static final long NOW = 2000 * MS;
 
+    private final RecordedOut out = new RecordedOut();
+    private final List<String> sent = out.sent;
+    private final List<String> logged = out.logged;
     private final RosbridgeSession session = new RosbridgeSession(world, new RosGraph(world.robotNames(), 20, 300 * MS),
-            () -> RosbridgeMessages.map(world.walls(), 0),
-            new RosbridgeSession.Out() {
-                @Override
-                public void send(String frame) {
-                    sent.add(frame);
-                }
-
-                @Override
-                public void log(Level level, String kind, String message) {
-                    logged.add(level + " " + message);
-                }
-            });
+            () -> RosbridgeMessages.map(world.walls(), 0), out);
 
     private static String request(String name) throws IOException {
         try (InputStream in = RosbridgeSessionTest.class.getResourceAsStream("/ros/responses/" + name)) {

@@ -4,11 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.net.http.WebSocket;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.OptionalDouble;
@@ -43,31 +39,21 @@ class RosbridgeSocketRulesTest {
     private final World world = new World(ROBOTS.stream().map(name -> new WorldRobot(name, new Point(ROBOTS.indexOf(name), 0, 0), null,
             OptionalDouble.empty())).toList(), List.of());
     private final long started = System.nanoTime();
-    private WorldServer worldServer;
-    private RosbridgeServer server;
-    private final List<WebSocket> sockets = new ArrayList<>();
+    private RunningRosbridge running;
 
     @BeforeEach
     void start() throws IOException {
-        worldServer = new WorldServer(world, new InetSocketAddress(InetAddress.getLoopbackAddress(), 0),
-                () -> (System.nanoTime() - started) / 1e9);
-        server = RosbridgeServer.start(worldServer, InetAddress.getLoopbackAddress(), 0, RATE_HZ, Duration.ofMillis(300));
+        running = new RunningRosbridge(world, () -> (System.nanoTime() - started) / 1e9, RATE_HZ, Duration.ofMillis(300));
     }
 
     @AfterEach
     void stop() {
-        sockets.forEach(WebSocket::abort);
-        server.close();
-        worldServer.close();
+        running.close();
     }
 
     private ReceivedFrames client(String... requests) {
         ReceivedFrames received = new ReceivedFrames();
-        WebSocket socket = received.connect(server.port());
-        sockets.add(socket);
-        for (String request : requests) {
-            socket.sendText(request, true).join();
-        }
+        running.connect(received, requests);
         return received;
     }
 
@@ -121,7 +107,7 @@ class RosbridgeSocketRulesTest {
 
     @Test
     void aPerRobotTopicsFirstMessageComesNoEarlierThanTheConnectionDelayAfterTheSubscribe() throws Exception {
-        double before = worldServer.time();
+        double before = running.world.time();
         ReceivedFrames received = client("{\"op\":\"subscribe\",\"topic\":\"/B/odom\",\"type\":\"nav_msgs/Odometry\"}");
         RobotPose first = onlyPose(MessageType.ODOMETRY, received.next());
         assertEquals("B", first.name());

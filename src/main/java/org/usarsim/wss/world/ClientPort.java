@@ -38,7 +38,8 @@ final class ClientPort<C extends ClientThread> {
     final LogLimiter lines;
 
     /**
-     * Binds and starts accepting.
+     * Binds; accepting starts with {@link #start} (once the server that owns it has it: its
+     * clients reach the server's fields).
      *
      * @param thread its accepting thread's name before the port ({@code world-server}); its limit's
      *        thread is this with {@code -warnings}
@@ -56,6 +57,10 @@ final class ClientPort<C extends ClientThread> {
         this.lines = LogLimiter.standard(thread + "-warnings");
         this.acceptor = new Thread(new Acceptor(what, make, starter), thread + " " + port());
         acceptor.setDaemon(true);
+    }
+
+    /** Starts accepting. */
+    void start() {
         acceptor.start();
     }
 

@@ -86,6 +86,7 @@ public final class RosbridgeServer implements AutoCloseable {
         this.graph = graph;
         this.port = new ClientPort<>(address, "world-rosbridge", LOG, "rosbridge", "rosbridge client",
                 (socket, serving) -> new RosbridgeClient(this, socket, serving >= MAX_CLIENTS), RosbridgeClient::start);
+        port.start();
     }
 
     public int port() {

@@ -51,6 +51,7 @@ public final class WorldServer implements AutoCloseable {
         this.clock = clock;
         this.port = new ClientPort<>(address, "world-server", LOG, "world server", "client",
                 (socket, serving) -> new WorldClient(this, socket), starter);
+        port.start();
     }
 
     public int port() {

@@ -171,6 +171,10 @@ final class OptionsParser {
         if (printPorts) {
             return new Options(Action.PRINT_PORTS, false, false, config, null, 0, null, null, null, -1);
         }
+        if (rosRate != null && (world == null || rosbridge == null)) {
+            throw new Mistake("--ros-rate is the rate of the world server's rosbridge: it needs --world FILE and --rosbridge PORT\n"
+                    + USAGE);
+        }
         if (export != null && (headless || config != null || start || world != null || port != null || bind != null
                 || rosbridge != null)) {
             throw new Mistake("--export-world only writes a world file: no --headless, --config, --start, --world, --port, --bind"
@@ -194,10 +198,6 @@ final class OptionsParser {
         }
         if (world == null && (port != null || bind != null || rosbridge != null)) {
             throw new Mistake("--port, --bind and --rosbridge are for the world server: they need --world FILE\n" + USAGE);
-        }
-        if (rosRate != null && (world == null || rosbridge == null)) {
-            throw new Mistake("--ros-rate is the rate of the world server's rosbridge: it needs --world FILE and --rosbridge PORT\n"
-                    + USAGE);
         }
         if (world != null) {
             return new Options(Action.WORLD, false, false, null, world,

@@ -23,12 +23,14 @@ class OptionsParserTest {
 
     @Test
     void theWorldServerGetsItsDefaultPortAndAddress() throws Exception {
-        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, -1),
-                OptionsParser.parse("--world", "a.world"), "no rosbridge unless asked");
-        assertEquals(new Options.World(Path.of("a.world"), 0, "127.0.0.1", -1),
+        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, -1, 20),
+                OptionsParser.parse("--world", "a.world"), "no rosbridge unless asked; its publishers at 20 Hz");
+        assertEquals(new Options.World(Path.of("a.world"), 0, "127.0.0.1", -1, 20),
                 OptionsParser.parse("--bind", "127.0.0.1", "--port", "0", "--world", "a.world"));
-        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, 9090),
+        assertEquals(new Options.World(Path.of("a.world"), Defaults.WORLD_PORT, Defaults.ALL_INTERFACES, 9090, 20),
                 OptionsParser.parse("--world", "a.world", "--rosbridge", "9090"));
+        assertEquals(5, ((Options.World) OptionsParser.parse("--world", "a.world", "--rosbridge", "0", "--ros-rate", "5")).rosRate());
+        assertEquals(0.5, ((Options.World) OptionsParser.parse("--world", "a.world", "--rosbridge", "0", "--ros-rate", "0.5")).rosRate());
     }
 
     @Test

@@ -31,7 +31,10 @@ class RosbridgeFuzzTest {
         "{\"op\":\"call_service\",\"id\":\"cs1\",\"service\":\"/rosapi/topics\"}",
         "{\"op\":\"subscribe\",\"topic\":\"/tf\",",
         "{\"topic\":\"/tf\"}",
-        "{\"op\":\"frobnicate\",\"id\":\"x1\"}"};
+        "{\"op\":\"frobnicate\",\"id\":\"x1\"}",
+        "{\"op\":\"subscribe\",\"id\":\"f\",\"topic\":\"/tf_static\",\"queue_length\":2,\"throttle_rate\":10,\"fragment_size\":50}",
+        "{\"op\":\"subscribe\",\"id\":7,\"topic\":\"/gazebo/model_states\",\"throttle_rate\":10.0,\"queue_length\":-1}",
+        "{\"op\":\"unsubscribe\",\"id\":\"f\",\"topic\":\"/tf_static\",\"fragment_size\":\"big\"}"};
 
     private final long seed = Long.getLong("wss.fuzz.seed", new Random().nextLong());
     private final String replay = " (seed " + seed + "; replay with -Dwss.fuzz.seed=" + seed + ")";
@@ -59,15 +62,16 @@ class RosbridgeFuzzTest {
                 logged[0]++;
             }
         };
-        String map = RosbridgeMessages.map(world.at(0).walls(), 0);
+        String map = RosbridgeMessages.map(world.walls(), 0);
+        RosGraph graph = new RosGraph(world.robotNames(), 20, 0);
         for (int i = 0; i < strings; i++) {
             byte[] bytes = fuzzed(random);
-            RosbridgeSession session = new RosbridgeSession(() -> world.at(1), () -> map, out);
+            RosbridgeSession session = new RosbridgeSession(world, graph, () -> map, out);
             WebSocketFrames frames = new WebSocketFrames(RosbridgeServer.MAX_MESSAGE_BYTES);
             WebSocketFrames.Sink sink = new WebSocketFrames.Sink() {
                 @Override
                 public void text(String message) {
-                    session.request(message);
+                    session.request(message, 1_000_000_000L);
                 }
 
                 @Override
@@ -96,7 +100,7 @@ class RosbridgeFuzzTest {
                     frames.feed(bytes, at, n, sink);
                     at += n;
                 }
-                session.tick(0, world.at(1), 1);
+                session.advance(1_060_000_000L);
             } catch (RuntimeException e) {
                 throw new AssertionError("byte string " + i + " threw " + e + replay, e);
             }

@@ -55,6 +55,11 @@ class WorldCommandLineTest {
         "--world " + CORRIDOR + " --port                  | --port needs a value",
         "--rosbridge 9090                                 | --port, --bind and --rosbridge are for the world server",
         "--world " + CORRIDOR + " --rosbridge 70000       | --rosbridge 70000 is not a port number from 0 to 65535",
+        "--world " + CORRIDOR + " --ros-rate 5            | --ros-rate is the rate of the world server's rosbridge: it needs",
+        "--export-world run.rec --ros-rate 5              | --ros-rate is the rate of the world server's rosbridge: it needs",
+        "--world " + CORRIDOR + " --rosbridge 0 --ros-rate 0 | --ros-rate 0 is not a rate in Hz above 0 and at most 1000",
+        "--world " + CORRIDOR + " --rosbridge 0 --ros-rate 1001 | --ros-rate 1001 is not a rate in Hz",
+        "--world " + CORRIDOR + " --rosbridge 0 --ros-rate 1e3 | --ros-rate 1e3 is not a rate in Hz",
     })
     void commandLineMistakesExitTwo(String args, String message) throws Exception {
         MainRun server = MainRun.of(args.strip().split(" +"));
@@ -69,7 +74,8 @@ class WorldCommandLineTest {
         MainRun server = MainRun.of("--help");
         assertEquals(0, server.exitCode());
         String help = String.join("\n", server.stdoutLines());
-        assertTrue(help.contains("--world FILE [--port N] [--bind ADDRESS]"), help);
+        assertTrue(help.contains("--world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT [--ros-rate HZ]]"), help);
+        assertTrue(help.contains("--ros-rate HZ"), help);
         assertTrue(help.contains("default 7435"), help);
     }
 }

@@ -2,7 +2,6 @@ package org.usarsim.wss.world;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 import static org.usarsim.wss.hub.Sockets.readLine;
@@ -13,15 +12,10 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.net.URI;
-import java.net.http.HttpClient;
 import java.net.http.WebSocket;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.BlockingQueue;
-import java.util.concurrent.CompletionStage;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -111,30 +105,16 @@ class WorldProcessTest {
 
     @Test
     void rosbridgeServesTheSameWorldAndStopsBeforeIt() throws Exception {
-        ServerProcess server = start("--world", CORRIDOR, "--bind", "127.0.0.1", "--port", "0", "--rosbridge", "0");
+        ServerProcess server = start("--world", CORRIDOR, "--bind", "127.0.0.1", "--port", "0", "--rosbridge", "0", "--ros-rate", "50");
         awaitPort(server);
         Matcher line = ROSBRIDGE.matcher(server.awaitLine(text -> ROSBRIDGE.matcher(text).matches()));
         assertTrue(line.matches());
-        BlockingQueue<String> texts = new LinkedBlockingQueue<>();
-        WebSocket socket = HttpClient.newHttpClient().newWebSocketBuilder()
-                .buildAsync(URI.create("ws://127.0.0.1:" + line.group(1) + "/"), new WebSocket.Listener() {
-                    private final StringBuilder part = new StringBuilder();
-
-                    @Override
-                    public CompletionStage<?> onText(WebSocket webSocket, CharSequence data, boolean last) {
-                        part.append(data);
-                        if (last) {
-                            texts.add(part.toString());
-                            part.setLength(0);
-                        }
-                        webSocket.request(1);
-                        return null;
-                    }
-                }).join();
+        assertTrue(line.group().endsWith(", at 50 Hz"), line.group());
+        ReceivedFrames received = new ReceivedFrames();
+        WebSocket socket = received.connect(Integer.parseInt(line.group(1)));
         closeables.add(socket::abort);
         socket.sendText("{\"op\":\"subscribe\",\"topic\":\"/gazebo/model_states\",\"throttle_rate\":200}", true).join();
-        String frame = texts.poll(ServerProcess.WAIT.toMillis(), TimeUnit.MILLISECONDS);
-        assertNotNull(frame, "a model_states message");
+        String frame = received.next();
         List<RobotPose> poses = new PoseDecoder(MessageType.MODEL_STATES).decode(frame);
         assertEquals(List.of("Base", "Scout"), poses.stream().map(RobotPose::name).toList());
         assertEquals(new RobotPose("Base", 0, 0, 0.45, RobotPose.NO_STAMP), poses.get(0));

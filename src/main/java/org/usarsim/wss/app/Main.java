@@ -23,7 +23,7 @@ import org.usarsim.wss.model.Setting;
 /**
  * Starts the WSS. With a display, {@code [--config FILE] [--start]} opens the main window
  * (docs/gui.md); {@code --headless [--config FILE]} runs without a window, from built-in
- * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]} runs a USARSim-compatible
+ * defaults and the file, as does the first form when there is no display. {@code --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT [--ros-rate HZ]]} runs a USARSim-compatible
  * world server instead (docs/world.md); {@code --export-world RUN.rec [--out FILE]} writes a recording as a
  * world file (docs/replay.md); those two are programs of their own, {@link WorldServerRun} and
  * {@link WorldFileExport}. {@link #run} dispatches on the {@link Options} and returns the exit code

@@ -15,9 +15,10 @@ sealed interface Options {
 
     /**
      * {@code --world FILE}: the world server, on {@code port} at {@code bind} (their defaults
-     * filled in); {@code rosbridge} its rosbridge port, -1 when it serves none.
+     * filled in); {@code rosbridge} its rosbridge port, -1 when it serves none, and {@code rosRate}
+     * its publishers' rate in Hz.
      */
-    record World(Path file, int port, String bind, int rosbridge) implements Options {
+    record World(Path file, int port, String bind, int rosbridge, double rosRate) implements Options {
     }
 
     /** {@code --export-world RUN.rec}: a recording written as a world file, to {@code out} ({@code --out}), or to standard output when it is null. */

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import org.usarsim.wss.world.RosbridgeServer;
 
 /**
  * Reads Main's command line into an {@link Options}: each option once in {@link #FLAGS} (its
@@ -41,6 +42,9 @@ final class OptionsParser {
             Flag.valued("--rosbridge", "PORT", "a value",
                     "the world server also serves its world over rosbridge v2 (WebSocket) on\n"
                     + "this port, 0 = any free port (docs/world.md, docs/ros-messages.md)"),
+            Flag.valued("--ros-rate", "HZ", "a value",
+                    "the rate of every publisher of the world server's rosbridge, above 0 and at\n"
+                    + "most 1000 (default " + (int) RosbridgeServer.DEFAULT_RATE_HZ + "; docs/world.md, \"Over rosbridge\")"),
             Flag.valued("--export-world", "RUN.rec", "a file",
                     "write a world file whose robots follow the recording's paths, with its walls\n"
                     + "(docs/replay.md); to standard output, or to the file of --out FILE"),
@@ -92,7 +96,7 @@ final class OptionsParser {
     static String usage(String command) {
         return "usage: " + command + " [--config FILE] [--start]\n"
                 + "       " + command + " --headless [--config FILE]\n"
-                + "       " + command + " --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT]\n"
+                + "       " + command + " --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT [--ros-rate HZ]]\n"
                 + "       " + command + " --export-world RUN.rec [--out FILE]\n"
                 + "       " + command + " --print-ports [--config FILE]\n"
                 + "       " + command + " --version | --help";
@@ -153,6 +157,11 @@ final class OptionsParser {
         String port = given.get("--port");
         String bind = given.get("--bind");
         String rosbridge = given.get("--rosbridge");
+        String rosRate = given.get("--ros-rate");
+        if (rosRate != null && (world == null || rosbridge == null)) {
+            throw new Mistake("--ros-rate is the rate of the world server's rosbridge: it needs --world FILE and --rosbridge PORT\n"
+                    + USAGE);
+        }
         Path export = path(given, "--export-world");
         Path out = path(given, "--out");
         boolean printPorts = given.containsKey("--print-ports");
@@ -188,7 +197,8 @@ final class OptionsParser {
         }
         if (world != null) {
             return new Options.World(world, port("--port", port == null ? String.valueOf(Defaults.WORLD_PORT) : port),
-                    bind == null ? Defaults.ALL_INTERFACES : bind, rosbridge == null ? -1 : port("--rosbridge", rosbridge));
+                    bind == null ? Defaults.ALL_INTERFACES : bind, rosbridge == null ? -1 : port("--rosbridge", rosbridge),
+                    rosRate == null ? RosbridgeServer.DEFAULT_RATE_HZ : rate(rosRate));
         }
         return new Options.Serve(headless, start, config);
     }
@@ -196,6 +206,19 @@ final class OptionsParser {
     private static Path path(Map<String, String> given, String key) {
         String value = given.get(key);
         return value == null ? null : Path.of(value);
+    }
+
+    private static double rate(String text) throws Mistake {
+        double rate = Double.NaN;
+        try {
+            rate = Double.parseDouble(text);
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        if (!(rate > 0 && rate <= 1000) || !text.matches("[0-9.]+")) {
+            throw new Mistake("--ros-rate " + text + " is not a rate in Hz above 0 and at most 1000 (20, 5, 0.5)\n" + USAGE);
+        }
+        return rate;
     }
 
     private static int port(String option, String text) throws Mistake {

@@ -42,7 +42,8 @@ final class WorldServerRun {
             try {
                 if (options.rosbridge() >= 0) {
                     try {
-                        rosbridge = RosbridgeServer.start(server, address, options.rosbridge());
+                        rosbridge = RosbridgeServer.start(server, address, options.rosbridge(), options.rosRate(),
+                                RosbridgeServer.DEFAULT_CONNECTION_DELAY);
                     } catch (IOException e) {
                         throw new RunFailure(Main.CANNOT_START, "cannot listen for rosbridge on " + address.getHostAddress() + ":"
                                 + options.rosbridge() + ": " + e.getMessage());

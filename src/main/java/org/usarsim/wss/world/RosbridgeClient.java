@@ -12,9 +12,10 @@ import java.util.logging.Logger;
 /**
  * One rosbridge client of the world server, on its own thread, which alone reads and writes its
  * socket: the WebSocket handshake (10 s at most), then its frames as they come, and between them
- * the ticks ({@link RosbridgeServer#TICK_NANOS}) at which its subscriptions are published (the
- * read waits until the next tick at most). A client that does not read its messages holds up
- * only its own thread. Its log lines go through the server's {@link RosbridgeServer#lines} limit.
+ * what its session has due (a publication to one of its subscriptions, a queued message's send):
+ * the read waits until the next due instant at most, in the world's time, then the session sends
+ * what is due. A client that does not read its messages holds up only its own thread. Its log
+ * lines go through the server's limit ({@link RosbridgeServer#lines()}).
  */
 final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink, RosbridgeSession.Out {
 
@@ -34,7 +35,7 @@ final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink
         super(socket, "world-rosbridge-client");
         this.server = server;
         this.busy = busy;
-        this.session = new RosbridgeSession(server.world()::now, server::map, this);
+        this.session = server.session(this);
     }
 
     @Override
@@ -89,24 +90,16 @@ final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink
         return answer.upgraded();
     }
 
-    /** Reads frames and publishes at the ticks until either side closes. */
+    /** Reads frames, and sends what is due when it is due, until either side closes. */
     private void serve(InputStream in) throws IOException {
         byte[] buffer = new byte[16 * 1024];
-        long nextTick = System.nanoTime();
         while (!closing) {
-            long now = System.nanoTime();
-            if (now - nextTick >= 0) {
-                if (session.subscriptionCount() > 0) {
-                    double seconds = server.world().time();
-                    session.tick(nextTick, server.world().at(seconds), seconds);
-                }
-                nextTick += RosbridgeServer.TICK_NANOS;
-                if (now - nextTick >= 0) {
-                    nextTick = now + RosbridgeServer.TICK_NANOS; // behind: the missed ticks are not made up
-                }
-                continue;
-            }
-            socket.setSoTimeout((int) Math.max(1, (nextTick - now + 999_999) / 1_000_000));
+            long now = server.now();
+            session.advance(now);
+            long due = session.nextDue();
+            // the world's time runs as the wall clock does; 0: no due instant, wait for a request
+            long waitMs = due == Long.MAX_VALUE ? 0 : Math.max(1, (due - now + 999_999) / 1_000_000);
+            socket.setSoTimeout((int) Math.min(Integer.MAX_VALUE, waitMs));
             int n;
             try {
                 n = in.read(buffer);
@@ -122,7 +115,7 @@ final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink
 
     @Override
     public void text(String message) {
-        session.request(message);
+        session.request(message, server.now());
     }
 
     @Override
@@ -169,6 +162,6 @@ final class RosbridgeClient extends ClientThread implements WebSocketFrames.Sink
 
     @Override
     public void log(Level level, String kind, String message) {
-        server.lines.log(LOG, level, kind, socket.getInetAddress(), "rosbridge client " + peer + ": " + message, null);
+        server.lines().log(LOG, level, kind, socket.getInetAddress(), "rosbridge client " + peer + ": " + message, null);
     }
 }

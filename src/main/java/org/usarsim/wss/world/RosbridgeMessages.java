@@ -9,21 +9,19 @@ import java.util.Map;
 import org.usarsim.wss.ros.Json;
 
 /**
- * The ROS messages of the world, as rosbridge v2 publish frames: {@code /gazebo/model_states}
- * ({@code gazebo_msgs/ModelStates}: every robot, in file order), {@code /tf}
- * ({@code tf2_msgs/TFMessage}: {@code world -> NAME/base_link} for each robot), each robot's
- * {@code /NAME/odom} ({@code nav_msgs/Odometry}, frame {@code world}, child {@code NAME/base_link})
- * and {@code /map} ({@code nav_msgs/OccupancyGrid} of the walls, in {@code world}). Positions as
- * the world has them, turned by nothing (the world has no headings: every rotation is the
- * identity); stamps the world's time since the server started, as Gazebo's simulation time.
+ * The ROS messages of the world, as rosbridge v2 publish frames, one per publication of its
+ * {@link RosGraph}: {@code /gazebo/model_states} ({@code gazebo_msgs/ModelStates}: every robot, in
+ * file order), {@code /tf} ({@code tf2_msgs/TFMessage}: one robot's {@code world -> NAME/base_link},
+ * from that robot's publisher), {@code /tf_static} ({@code map -> world}, the identity), each
+ * robot's {@code /NAME/odom} ({@code nav_msgs/Odometry}, frame {@code world}, child
+ * {@code NAME/base_link}) and {@code /map} ({@code nav_msgs/OccupancyGrid} of the walls, in
+ * {@code world}). Positions as the world has them at the publication's instant, turned by nothing
+ * (the world has no headings: every rotation is the identity); stamps that instant, the world's
+ * time since the server started, as Gazebo's simulation time; {@code seq} the publisher's count.
  * The only place the world server writes a ROS message.
  */
 final class RosbridgeMessages {
 
-    static final String MODEL_STATES = "/gazebo/model_states";
-    static final String TF = "/tf";
-    static final String MAP = "/map";
-    static final String ODOM_SUFFIX = "/odom";
     /** The map's cell size unless the walls span too much for {@link #MAX_CELLS} cells. */
     static final double RESOLUTION = 0.1;
     /** The most cells of the map (2000 x 2000): coarser cells beyond. */
@@ -35,34 +33,24 @@ final class RosbridgeMessages {
     private RosbridgeMessages() {
     }
 
-    /** Every topic the world publishes, with its type: the three fixed ones and each robot's odom. */
-    static Map<String, String> topics(Snapshot world) {
-        Map<String, String> topics = new LinkedHashMap<>();
-        topics.put(MODEL_STATES, "gazebo_msgs/ModelStates");
-        topics.put(TF, "tf2_msgs/TFMessage");
-        topics.put(MAP, "nav_msgs/OccupancyGrid");
-        for (RobotAt robot : world.robots()) {
-            topics.put(odomTopic(robot.name()), "nav_msgs/Odometry");
-        }
-        return topics;
-    }
-
-    static String odomTopic(String robot) {
-        return "/" + robot + ODOM_SUFFIX;
-    }
-
-    /** A publish frame of a topic whose message is published at the tick; null for a topic the world does not publish so. */
-    static String publish(String topic, Snapshot world, double seconds, long seq) {
+    /** The publish frame of a publication of the world's graph, but {@code /map}'s ({@link #map}). */
+    static String publish(RosGraph.Publication publication, World world) {
+        RosGraph.Publisher publisher = publication.publisher();
+        String topic = publisher.topic();
+        double seconds = publication.nanos() / 1e9;
         Object msg;
-        if (topic.equals(MODEL_STATES)) {
-            msg = modelStates(world);
-        } else if (topic.equals(TF)) {
-            msg = tf(world, seconds, seq);
+        if (topic.equals(RosGraph.MODEL_STATES)) {
+            msg = modelStates(world.at(seconds));
+        } else if (topic.equals(RosGraph.TF_STATIC)) {
+            msg = object("transforms", List.of(transform(header(seconds, publication.seq(), "map"), "world", new Point(0, 0, 0))));
+        } else if (topic.equals(RosGraph.TF)) {
+            RobotAt robot = world.robotAt(publisher.robot(), seconds);
+            msg = object("transforms", List.of(transform(header(seconds, publication.seq(), "world"), robot.name() + "/base_link",
+                    robot.position())));
         } else {
-            msg = world.robots().stream().filter(robot -> odomTopic(robot.name()).equals(topic)).findFirst()
-                    .map(robot -> odometry(robot, seconds, seq)).orElse(null);
+            msg = odometry(world.robotAt(publisher.robot(), seconds), seconds, publication.seq());
         }
-        return msg == null ? null : frame(topic, msg);
+        return frame(topic, msg);
     }
 
     static String frame(String topic, Object msg) {
@@ -85,14 +73,9 @@ final class RosbridgeMessages {
         return object("name", names, "pose", poses, "twist", twists);
     }
 
-    private static Map<String, Object> tf(Snapshot world, double seconds, long seq) {
-        List<Object> transforms = new ArrayList<>();
-        for (RobotAt robot : world.robots()) {
-            Point p = robot.position();
-            transforms.add(object("header", header(seconds, seq, "world"), "child_frame_id", robot.name() + "/base_link",
-                    "transform", object("translation", vector(p.x(), p.y(), p.z()), "rotation", identity())));
-        }
-        return object("transforms", transforms);
+    private static Map<String, Object> transform(Map<String, Object> header, String child, Point p) {
+        return object("header", header, "child_frame_id", child, "transform",
+                object("translation", vector(p.x(), p.y(), p.z()), "rotation", identity()));
     }
 
     private static Map<String, Object> odometry(RobotAt robot, double seconds, long seq) {
@@ -143,7 +126,7 @@ final class RosbridgeMessages {
         }
         Map<String, Object> info = object("map_load_time", stamp(seconds), "resolution", resolution, "width", width,
                 "height", height, "origin", object("position", vector(minX, minY, 0), "orientation", identity()));
-        return frame(MAP, object("header", header(seconds, 0, "world"), "info", info, "data", Arrays.asList(data)));
+        return frame(RosGraph.MAP, object("header", header(seconds, 0, "world"), "info", info, "data", Arrays.asList(data)));
     }
 
     /** Marks every cell a segment (in cell units) passes through, sampled at a quarter of a cell. */

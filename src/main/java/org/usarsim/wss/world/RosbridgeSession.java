@@ -1,7 +1,9 @@
 package org.usarsim.wss.world;
 
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import org.usarsim.wss.ros.Json;
@@ -10,21 +12,28 @@ import org.usarsim.wss.ros.JsonLimits;
 import org.usarsim.wss.ros.JsonNode;
 
 /**
- * One rosbridge v2 client's requests and what the world server does about them, as a real
- * rosbridge (rosbridge_suite 0.11) does: {@code subscribe} (topic, type, throttle_rate,
- * queue_length, id) and {@code unsubscribe} kept in {@link Subscriptions}; {@code /map} sent at
- * once on subscribe, as a latched topic is, the others at the ticks they are due
- * ({@link #tick}); {@code call_service} answered that the service does not exist (the world
- * server offers none). A bad request gets no answer, only a log line, as rosbridge only logs it:
- * malformed JSON, no {@code op}, an unknown op, a topic the world does not publish without a
- * type, a type that is not the topic's. A request the client may send but the world server does
- * not serve ({@code advertise}, {@code publish}, ...) is logged too. No sockets: what it sends
- * and logs goes to its {@link Out}.
+ * One rosbridge v2 client's requests and what the world server does about them, as
+ * rosbridge_suite 0.11.17 (rosbridge_library's protocol.py and capabilities) does:
+ * {@code subscribe} and {@code unsubscribe} kept in {@link ClientSubscriptions} (ids, throttle
+ * rates, queue lengths, latched topics, as rosbridge combines them), whose messages are sent as the
+ * world's {@link RosGraph} publishes them ({@link #advance}); {@code fragment_size} in any request
+ * of a known op, the connection's from then on ({@link Fragments}); {@code call_service} answered
+ * that the service does not exist (the world server offers none). A bad request gets no answer,
+ * only a log line, as rosbridge only logs it: malformed JSON, no {@code op}, an unknown op, a
+ * subscribe whose fields are of the wrong kind (a {@code throttle_rate} of {@code 100.0}), a topic
+ * the world does not publish without a type, a type that is not the topic's. A request the client
+ * may send but the world server does not serve ({@code advertise}, {@code publish}, ...) is logged
+ * too. No sockets, no clock: the world's time (nanoseconds) is passed in; what it sends and logs
+ * goes to its {@link Out}.
  */
 final class RosbridgeSession {
 
     /** The longest request taken, in chars (the WebSocket layer has already limited its bytes). */
     static final JsonLimits LIMITS = new JsonLimits(RosbridgeServer.MAX_MESSAGE_BYTES, JsonLimits.DEFAULT_MAX_DEPTH);
+
+    /** rosbridge's ops besides subscribe, unsubscribe and call_service: known, and not served by the world server. */
+    private static final Set<String> UNSERVED = Set.of("advertise", "unadvertise", "publish", "fragment", "advertise_service",
+            "service_response", "unadvertise_service");
 
     /** Where a session's frames and log lines go. */
     interface Out {
@@ -34,74 +43,113 @@ final class RosbridgeSession {
         void log(Level level, String kind, String message);
     }
 
-    private final Subscriptions subscriptions = new Subscriptions();
-    private final Supplier<Snapshot> world;
+    private final World world;
+    private final RosGraph graph;
     private final Supplier<String> map;
     private final Out out;
-    private long seq;
+    private final Fragments fragments = new Fragments();
+    private final ClientSubscriptions subscriptions;
 
     /**
-     * @param world the world now (for the topics it has)
+     * @param world the world, whose robots the graph publishes
      * @param map the {@code /map} frame (made once per server)
      */
-    RosbridgeSession(Supplier<Snapshot> world, Supplier<String> map, Out out) {
+    RosbridgeSession(World world, RosGraph graph, Supplier<String> map, Out out) {
         this.world = world;
+        this.graph = graph;
         this.map = map;
         this.out = out;
+        this.subscriptions = new ClientSubscriptions(graph, (nanos, publication) -> publish(publication));
     }
 
-    /** One text message from the client. */
-    void request(String text) {
+    /** Sends what is published and sent up to {@code now}, in order. */
+    void advance(long now) {
+        subscriptions.advance(now);
+    }
+
+    /** When something is next due to be published to the client's subscriptions or sent; {@link Long#MAX_VALUE}: never. */
+    long nextDue() {
+        return subscriptions.nextDue();
+    }
+
+    /** The topics the client holds subscriptions to. */
+    int subscriptionCount() {
+        return subscriptions.size();
+    }
+
+    /** One text message from the client, at {@code now} (after what is due up to then). */
+    void request(String text, long now) {
+        advance(now);
         JsonNode request;
+        Map<String, Object> fields;
+        Set<String> integers;
         try {
             request = JsonNode.parse(text, LIMITS);
             if (!request.isObject()) {
                 throw request.problem("expected an object, found " + (request.value() == null ? "null" : "another value"));
             }
+            @SuppressWarnings("unchecked")
+            Map<String, Object> object = (Map<String, Object>) request.value();
+            fields = object;
+            integers = IntegerFields.of(text);
         } catch (JsonException e) {
             out.log(Level.WARNING, "malformed requests", "malformed JSON: " + e.getMessage());
             return;
         }
-        try {
-            JsonNode op = request.optional("op");
-            String id = idOf(request);
-            if (op == null) {
+        String id = fields.get("id") instanceof String s ? s : null;
+        if (!(fields.get("op") instanceof String op)) {
+            if (fields.containsKey("op")) {
+                out.log(Level.WARNING, "unknown operations", prefix(id) + "Unknown operation: "
+                        + shortened(SubscribeRequest.python(fields.get("op"))));
+            } else {
                 out.log(Level.WARNING, "requests without an op", "Received a message without an op: " + shortened(text));
-                return;
             }
-            switch (op.string()) {
-                case "subscribe" -> subscribe(request, id);
-                case "unsubscribe" -> unsubscribe(request, id);
+            return;
+        }
+        if (!op.equals("subscribe") && !op.equals("unsubscribe") && !op.equals("call_service") && !UNSERVED.contains(op)) {
+            out.log(Level.WARNING, "unknown operations", prefix(id) + "Unknown operation: " + shortened(op));
+            return;
+        }
+        if (fields.containsKey("fragment_size")) {
+            fragments.set(fields.get("fragment_size"), integers.contains("fragment_size"));
+        }
+        try {
+            switch (op) {
+                case "subscribe" -> subscribe(fields, integers, id, now);
+                case "unsubscribe" -> unsubscribe(fields, id, now);
                 case "call_service" -> callService(request, id);
-                case "advertise", "unadvertise", "publish", "fragment", "advertise_service", "service_response",
-                        "unadvertise_service" -> out.log(Level.INFO, "unserved operations",
-                                prefix(id) + op.string() + " is not served by the world server: it only publishes");
-                default -> out.log(Level.WARNING, "unknown operations", prefix(id) + "Unknown operation: " + shortened(op.string()));
+                default -> out.log(Level.INFO, "unserved operations",
+                        prefix(id) + op + " is not served by the world server: it only publishes");
             }
         } catch (JsonException e) {
             out.log(Level.WARNING, "malformed requests", "a request with " + e.getMessage());
         }
     }
 
-    private void subscribe(JsonNode request, String id) throws JsonException {
-        String topic = request.get("topic").string();
-        JsonNode typeNode = request.optional("type");
-        String type = typeNode == null || typeNode.isNull() ? null : typeNode.string();
-        JsonNode throttleNode = request.optional("throttle_rate");
-        long throttleMs = throttleNode == null ? 0 : throttleNode.integer(0, Integer.MAX_VALUE);
-        JsonNode queue = request.optional("queue_length");
-        if (queue != null) {
-            queue.integer(0, Integer.MAX_VALUE);
-        }
-        String published = RosbridgeMessages.topics(world.get()).get(topic);
-        if (published == null) {
-            if (type == null) {
-                out.log(Level.WARNING, "bad subscriptions", prefix(id) + "subscribe: Cannot infer topic type for topic "
-                        + shortened(topic) + " as it is not yet advertised");
-            } else {
-                out.log(Level.INFO, "subscriptions to unknown topics", prefix(id) + "subscribe: " + shortened(topic)
-                        + " is not published by the world server: nothing will come");
+    private void subscribe(Map<String, Object> fields, Set<String> integers, String id, long now) {
+        SubscribeRequest asked;
+        try {
+            asked = SubscribeRequest.of(fields, integers);
+            if (!subscriptions.subscribe(asked.topic(), asked.id(), asked.throttleMs(), asked.queueLength(), now)) {
+                out.log(Level.WARNING, "bad subscriptions", prefix(id) + "subscribe: " + shortened(asked.topic()) + ": already "
+                        + ClientSubscriptions.MAX_TOPICS + " topics subscribed to: not subscribed");
+                return;
             }
+        } catch (SubscribeRequest.Refused | IllegalArgumentException e) {
+            out.log(Level.WARNING, "bad subscriptions", prefix(id) + "subscribe: " + shortened(e.getMessage()));
+            return;
+        }
+        String topic = asked.topic();
+        String type = asked.type();
+        String published = graph.type(topic);
+        if (published == null && type == null) {
+            out.log(Level.WARNING, "bad subscriptions", prefix(id) + "subscribe: Cannot infer topic type for topic "
+                    + shortened(topic) + " as it is not yet advertised");
+            return;
+        }
+        if (published == null) {
+            out.log(Level.INFO, "subscriptions to unknown topics", prefix(id) + "subscribe: " + shortened(topic)
+                    + " is not published by the world server: nothing will come");
             return;
         }
         if (type != null && !plain(type).equals(published)) {
@@ -109,18 +157,30 @@ final class RosbridgeSession {
                     + " with type " + shortened(type) + " but it is already established with type " + published);
             return;
         }
-        out.log(Level.INFO, "subscriptions", "subscribed to " + topic + " (" + published + ", throttle_rate " + throttleMs + " ms)");
-        if (topic.equals(RosbridgeMessages.MAP)) {
-            out.send(map.get());
-            return;
+        if (!asked.compression().equals("none")) {
+            out.log(Level.INFO, "compressions", prefix(id) + "subscribe: compression " + shortened(asked.compression())
+                    + " is not served by the world server: JSON text");
         }
-        subscriptions.subscribe(new Subscriptions.Subscription(topic, published, throttleMs * 1_000_000L, id));
+        out.log(Level.INFO, "subscriptions", "subscribed to " + topic + " (" + published + ", throttle_rate " + asked.throttleMs()
+                + " ms, queue_length " + asked.queueLength() + ")");
+        subscriptions.connected(topic, now);
     }
 
-    private void unsubscribe(JsonNode request, String id) throws JsonException {
-        String topic = request.get("topic").string();
-        if (!subscriptions.unsubscribe(topic) && !topic.equals(RosbridgeMessages.MAP)) {
-            out.log(Level.INFO, "unsubscriptions", prefix(id) + "unsubscribe: not subscribed to " + shortened(topic));
+    private void unsubscribe(Map<String, Object> fields, String id, long now) {
+        if (!(fields.get("topic") instanceof String topic)) {
+            out.log(Level.WARNING, "bad subscriptions", prefix(id) + "unsubscribe: " + (fields.containsKey("topic")
+                    ? "Expected field topic to be one of (<class 'str'>,). Invalid value: "
+                            + shortened(SubscribeRequest.python(fields.get("topic")))
+                    : "Expected a topic field but none was found."));
+            return;
+        }
+        Object sid = fields.get("id");
+        try {
+            if (!subscriptions.unsubscribe(topic, sid, sid == null, now)) {
+                out.log(Level.INFO, "unsubscriptions", prefix(id) + "unsubscribe: not subscribed to " + shortened(topic));
+            }
+        } catch (IllegalArgumentException e) {
+            out.log(Level.WARNING, "bad subscriptions", prefix(id) + "unsubscribe: " + e.getMessage());
         }
     }
 
@@ -136,28 +196,22 @@ final class RosbridgeSession {
         if (id != null) {
             response.put("id", id);
         }
-        out.send(Json.write(response));
+        send(Json.write(response), id, "the answer to call_service " + shortened(service));
     }
 
-    /** Sends what is due at a tick ({@code nanos}: its time, for the throttle rates), the world at {@code seconds}. */
-    void tick(long nanos, Snapshot now, double seconds) {
-        for (Subscriptions.Subscription due : subscriptions.due(nanos)) {
-            String frame = RosbridgeMessages.publish(due.topic(), now, seconds, seq);
-            if (frame != null) {
-                out.send(frame);
-            }
+    /** A publication's frame, sent as the connection's fragment_size has it. */
+    private void publish(RosGraph.Publication publication) {
+        String topic = publication.publisher().topic();
+        send(topic.equals(RosGraph.MAP) ? map.get() : RosbridgeMessages.publish(publication, world), null, "a message of " + topic);
+    }
+
+    private void send(String frame, Object id, String what) {
+        List<String> frames = fragments.of(frame, id);
+        if (frames.isEmpty()) {
+            out.log(Level.WARNING, "unsendable messages", what + " (" + Fragments.ascii(frame).length() + " chars) is not sent: "
+                    + "fragment_size " + shortened(fragments.describe()) + " cannot split it, and rosbridge's send fails");
         }
-        seq++;
-    }
-
-    int subscriptionCount() {
-        return subscriptions.size();
-    }
-
-    /** The request's id when it is a string (rosbridge's ids are), or null. */
-    private static String idOf(JsonNode request) throws JsonException {
-        JsonNode id = request.optional("id");
-        return id == null || !(id.value() instanceof String) ? null : id.string();
+        frames.forEach(out::send);
     }
 
     private static String prefix(String id) {

@@ -15,10 +15,25 @@ final class World {
 
     /** The world {@code seconds} after it started: a pure function of the time. */
     Snapshot at(double seconds) {
+        checked(seconds);
+        return new Snapshot(robots.stream().map(robot -> robot.at(seconds)).toList(), walls);
+    }
+
+    /** One robot (its index in file order) {@code seconds} after the world started. */
+    RobotAt robotAt(int index, double seconds) {
+        return robots.get(index).at(checked(seconds));
+    }
+
+    private static double checked(double seconds) {
         if (!(seconds >= 0) || Double.isInfinite(seconds)) {
             throw new IllegalArgumentException("a time from 0 on, in seconds: " + seconds);
         }
-        return new Snapshot(robots.stream().map(robot -> robot.at(seconds)).toList(), walls);
+        return seconds;
+    }
+
+    /** The robots' names, in file order. */
+    List<String> robotNames() {
+        return robots.stream().map(WorldRobot::name).toList();
     }
 
     int robotCount() {

@@ -28,7 +28,7 @@ final class WorldClient extends ClientThread implements LineSplitter.Sink {
 
     @Override
     public void run() {
-        server.lines.log(LOG, Level.INFO, "clients connected", socket.getInetAddress(), "client " + peer + " connected", null);
+        server.lines().log(LOG, Level.INFO, "clients connected", socket.getInetAddress(), "client " + peer + " connected", null);
         try {
             socket.setTcpNoDelay(true);
             InputStream in = socket.getInputStream();
@@ -41,7 +41,7 @@ final class WorldClient extends ClientThread implements LineSplitter.Sink {
             LOG.fine(() -> "client " + peer + ": " + e);
         } finally {
             close();
-            server.lines.log(LOG, Level.INFO, "clients left", socket.getInetAddress(), "client " + peer + " left", null);
+            server.lines().log(LOG, Level.INFO, "clients left", socket.getInetAddress(), "client " + peer + " left", null);
             server.ended(this);
         }
     }
@@ -66,7 +66,7 @@ final class WorldClient extends ClientThread implements LineSplitter.Sink {
 
     @Override
     public void lineTooLong() {
-        server.lines.log(LOG, Level.WARNING, "over-long lines", socket.getInetAddress(),
+        server.lines().log(LOG, Level.WARNING, "over-long lines", socket.getInetAddress(),
                 "client " + peer + " sent a line over " + LineSplitter.MAX_LINE_BYTES + " bytes: dropping it", null);
         close();
     }

@@ -3,15 +3,11 @@ package org.usarsim.wss.world;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.channels.ServerSocketChannel;
-import java.nio.channels.SocketChannel;
 import java.nio.file.Path;
-import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.List;
 import java.util.function.Consumer;
 import java.util.function.DoubleSupplier;
-import java.util.logging.Level;
 import java.util.logging.Logger;
-import org.usarsim.wss.net.AcceptLoop;
 import org.usarsim.wss.net.LogLimiter;
 
 /**
@@ -25,14 +21,7 @@ public final class WorldServer implements AutoCloseable {
 
     private final World world;
     private final DoubleSupplier clock;
-    private final ServerSocketChannel server;
-    private final ServedClients<WorldClient> clients = new ServedClients<>();
-    /** Starts a client's thread: {@link WorldClient#start}, or what a test puts in its place. */
-    private final Consumer<WorldClient> starter;
-    private final Thread acceptor;
-    private final AtomicBoolean closed = new AtomicBoolean();
-    /** The limit on the lines its clients cause (connected, left, an over-long line), as the WSS's. */
-    final LogLimiter lines = LogLimiter.standard("world-warnings");
+    private final ClientPort<WorldClient> port;
 
     /**
      * Reads the world file, then listens on the address and port (0: any free port) and serves
@@ -60,15 +49,13 @@ public final class WorldServer implements AutoCloseable {
     WorldServer(World world, InetSocketAddress address, DoubleSupplier clock, Consumer<WorldClient> starter) throws IOException {
         this.world = world;
         this.clock = clock;
-        this.starter = starter;
-        this.server = AcceptLoop.bind(address, AcceptLoop.BACKLOG);
-        this.acceptor = new Thread(new Acceptor(server), "world-server " + port());
-        acceptor.setDaemon(true);
-        acceptor.start();
+        this.port = new ClientPort<>(address, "world-server", LOG, "world server", "client",
+                (socket, serving) -> new WorldClient(this, socket), starter);
+        port.start();
     }
 
     public int port() {
-        return server.socket().getLocalPort();
+        return port.port();
     }
 
     /** The world now. */
@@ -76,9 +63,17 @@ public final class WorldServer implements AutoCloseable {
         return world.at(clock.getAsDouble());
     }
 
-    /** The seconds the world has run. */
-    double time() {
+    /**
+     * The seconds the world has run: its time, which every position, stamp and publishing
+     * instant of its rosbridge side ({@link RosbridgeServer#firstPublishAtOrAfter}) is told in.
+     */
+    public double time() {
         return clock.getAsDouble();
+    }
+
+    /** The robots' names, in file order (as {@link RosbridgeServer#firstPublishAtOrAfter} takes them). */
+    public List<String> robotNames() {
+        return world.robotNames();
     }
 
     /** The world at a time ({@link #time()}). */
@@ -86,46 +81,32 @@ public final class WorldServer implements AutoCloseable {
         return world.at(seconds);
     }
 
-    /** Stops listening, at once, and closes every client connection; waits (at most a second) for their threads to end. */
+    World world() {
+        return world;
+    }
+
+    /** The limit on the lines its clients cause (connected, left, an over-long line), as the WSS's. */
+    LogLimiter lines() {
+        return port.lines;
+    }
+
+    /**
+     * Stops listening, at once, and closes every client connection; waits (at most a second) for
+     * their threads to end, so that each client's "left" comes before "world server stopped" (and
+     * not after whoever closed the server has gone on: Main.run puts its caller's logging back as
+     * it returns).
+     */
     @Override
     public void close() {
-        // Not server.isOpen(): the acceptor closes the socket itself when it gives up (AcceptLoop).
-        if (!closed.compareAndSet(false, true)) {
-            return;
-        }
-        // Their threads say "left" before "stopped", not after whoever closed the server has gone on
-        // (Main.run puts its caller's logging back as it returns).
-        clients.closeAll(server, acceptor);
-        lines.close();
-        LOG.info("world server stopped");
+        port.close();
     }
 
     void ended(WorldClient client) {
-        clients.ended(client);
+        port.ended(client);
     }
 
     /** The clients being served. */
     int clientCount() {
-        return clients.size();
-    }
-
-    /** The acceptor: gives each client its thread, with {@link AcceptLoop}'s policy when that fails. */
-    private final class Acceptor extends AcceptLoop {
-
-        Acceptor(ServerSocketChannel server) {
-            super(server, LOG, "the world server", "client");
-        }
-
-        @Override
-        protected void serve(SocketChannel socket) {
-            clients.serve(new WorldClient(WorldServer.this, socket.socket()), server, starter);
-        }
-
-        @Override
-        protected boolean acceptFailed(IOException e) {
-            // Out of descriptors, say: clients must still be able to connect once it passes.
-            LOG.log(Level.SEVERE, "accepting a client failed, trying again: " + e, e);
-            return false;
-        }
+        return port.size();
     }
 }

@@ -14,6 +14,8 @@ import java.util.logging.Level;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.TestRobot;
@@ -89,6 +91,29 @@ class RosbridgeEndToEndTest {
                 () -> !rig.server.hub.getListOfRegisteredRobots().contains("Ghost"));
         assertTrue(System.nanoTime() - registered >= TimeUnit.SECONDS.toNanos(5), "not before the grace (rosbridge.grace 5000)");
         assertEquals(List.of("A", "B", "C", "D"), rig.server.hub.getListOfRegisteredRobots());
+    }
+
+    /**
+     * Issue 31, faults 1 and 2 against the world server as rosbridge_suite behaves: /tf has one
+     * publisher per robot, and a robot's own odometry comes only a connection delay after its
+     * subscription. Robots registered one after another are all kept, and placed.
+     */
+    @ParameterizedTest
+    @ValueSource(strings = {"/tf", "/{robot}/odom"})
+    void robotsOnTfFromSeveralPublishersOrOnTheirOwnTopicsAreAllKeptAndPlaced(String topic) throws Exception {
+        serve("robot A 0,0,0\nrobot B 10,0,0\nrobot C 20,0,0\nrobot D 30,0,0\n");
+        rig(new DistanceOnlyPropagationModel(), Map.of("rosbridge.topic", topic, "positions.interval", "200"));
+        List<String> robots = List.of("A", "B", "C", "D");
+        TestRobot a = rig.robot("A");
+        for (String robot : robots.subList(1, 4)) {
+            Wait.until(robot + "'s turn: the one before it placed", () -> rig.model.positionOf(robots.get(robots.indexOf(robot) - 1))
+                    .isPresent());
+            rig.robot(robot);
+        }
+        String d = Replies.signal("D", N3.strength(30));
+        Wait.until("A's GETSS of D from the world", () -> ask(a, "GETSS {Robot D}").equals(d));
+        assertEquals(robots, rig.server.hub.getListOfRegisteredRobots(), "nobody kicked");
+        assertEquals(0, rig.logLines(Level.INFO, "kicking"));
     }
 
     @Test

@@ -78,8 +78,12 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from the compiled classes with these extra properties. */
     static WssProcess start(String... properties) throws IOException, InterruptedException {
-        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
-        return startFrom(classes, properties);
+        return startFrom(classes(), properties);
+    }
+
+    /** Where the compiled classes are (target/classes), for a process of their own. */
+    static String classes() {
+        return Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
     }
 
     /** Starts the server from another build (a wss.jar, or a classes folder) with these extra properties. */
@@ -89,8 +93,7 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from the compiled classes under {@code ulimit -n descriptors}, with these extra properties. */
     static WssProcess startWithDescriptorLimit(int descriptors, String... properties) throws IOException, InterruptedException {
-        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
-        return start(classes, descriptors, properties);
+        return start(classes(), descriptors, properties);
     }
 
     /** @param descriptors the process's limit of open descriptors; 0 keeps the shell's */

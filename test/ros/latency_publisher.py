@@ -80,7 +80,7 @@ class Ticks:
 
     def said(self):
         seconds = time.monotonic() - self.start
-        print("sent %d messages in %.1f s" % (self.sent, seconds), flush=True)
+        print("sent %d messages in %.1f s (%.1f a second)" % (self.sent, seconds, self.sent / max(seconds, 1e-9)), flush=True)
 
 
 def read_stdin(ticks, on_line=None):
@@ -192,22 +192,23 @@ def tf_mode(args):
         for _ in sys.stdin:
             pass
     finally:
+        for node in nodes:
+            node.stdin.close()  # its stdin ends: it stops and says what it sent
         sent = 0
         seconds = 0.0
         for node in nodes:
-            node.stdin.close()  # its stdin ends: it stops and says what it sent
-        for node in nodes:
             try:
-                out, _ = node.communicate(timeout=10)
+                node.wait(timeout=10)
             except subprocess.TimeoutExpired:
                 node.kill()
-                out, _ = node.communicate()
-            for line in out.splitlines():
+                node.wait()
+            for line in node.stdout.read().splitlines():
                 words = line.split()
-                if len(words) == 6 and words[0] == "sent":
+                if len(words) >= 5 and words[0] == "sent":
                     sent += int(words[1])
                     seconds = max(seconds, float(words[4]))
-        print("sent %d messages in %.1f s (%d publishers)" % (sent, seconds, len(nodes)), flush=True)
+        print("sent %d messages in %.1f s (%.1f a second, %d publishers)" % (sent, seconds, sent / max(seconds, 1e-9), len(nodes)),
+              flush=True)
 
 
 def main():

@@ -54,8 +54,8 @@ final class CpuRun {
                 System.out.println("  heap in use after a full GC, " + name + ", " + (i + 1) * seconds + " s: " + heapAfterGc(wss.pid())
                         + " KiB");
             }
-            System.out.println("  " + name + ": " + stream.finish() + "; " + wss.linesContaining("lost the simulator")
-                    + " silences said");
+            long silences = wss.linesContaining("lost the simulator");
+            System.out.println("  " + name + ": " + stream.finish() + "; " + silences + " silences said");
             close(clients);
             return cpu;
         }

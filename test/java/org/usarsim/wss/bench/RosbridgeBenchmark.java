@@ -111,8 +111,8 @@ public final class RosbridgeBenchmark {
             int hz = rate[0];
             int pollMs = rate[1];
             String at = String.format(Locale.ROOT, "%d Hz, poll %d ms", hz, pollMs);
-            System.out.printf(Locale.ROOT, "%s: the bounds (issue 31) median <= %.0f ms, p99 <= %d ms%n", at, pollMs / 2.0 + 20,
-                    pollMs + 50);
+            System.out.printf(Locale.ROOT, "%s: the bounds (issue 31) median <= %.0f ms, p99 <= %.0f ms%n", at,
+                    Latencies.medianBound(pollMs), Latencies.p99Bound(pollMs));
             Latencies usarsim = run(at, "USARSim socket", () -> new UsarsimFeed(pollMs), pollMs, changes, stale);
             List<String> ratios = new ArrayList<>();
             if (!"off".equals(options.get("--world"))) {
@@ -181,7 +181,7 @@ public final class RosbridgeBenchmark {
             tf = run.rosbridge("tf", stream, stale, -1);
         }
         double usarsim = run.usarsim();
-        System.out.println(CpuRun.line("(i) ModelStates at 20 Hz, " + where, states, usarsim));
+        System.out.println(CpuRun.line("(i) ModelStates of all at 20 Hz", states, usarsim));
         System.out.println(CpuRun.line("(ii) " + publishers + " tf publishers at 50 Hz, " + robots / publishers + " robots each",
                 tf, usarsim));
         System.out.println(CpuRun.line("(iii) USARSim socket, GETPOS every 100 ms", usarsim, usarsim));

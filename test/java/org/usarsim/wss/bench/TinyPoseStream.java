@@ -109,8 +109,9 @@ final class TinyPoseStream implements PoseStream {
             thread.interrupt();
             thread.join(5_000);
         }
-        return String.format(Locale.ROOT, "sent %d messages in %.1f s (%d publishers, in this JVM)", sent.get(),
-                (System.nanoTime() - start) / 1e9, threads.size());
+        double seconds = (System.nanoTime() - start) / 1e9;
+        return String.format(Locale.ROOT, "sent %d messages in %.1f s (%.1f a second, %d publishers, in this JVM)", sent.get(), seconds,
+                sent.get() / seconds, threads.size());
     }
 
     @Override

@@ -51,7 +51,7 @@ final class WorldFeed implements PositionFeed {
 
     @Override
     public String label() {
-        return "world server's rosbridge";
+        return "world server's rosbridge (its 20 ms tick)";
     }
 
     @Override

@@ -2,6 +2,7 @@ package org.usarsim.wss.bench;
 
 import java.util.List;
 import java.util.Random;
+import java.util.concurrent.TimeUnit;
 
 /**
  * Where robots A and B are in {@link LatencyRun}: A stands at the origin, B moves along x between
@@ -16,14 +17,21 @@ interface PositionFeed extends AutoCloseable {
     /** The WSS's settings that read this source (positions, its address, topic and type). */
     List<String> wssSettings();
 
-    /** B's x now, from the source; waits for its first word on B. */
-    double placeOfB() throws Exception;
+    /** B's x now, from the source (waits for its first word on B); B starts at 10 m unless the source moves it itself. */
+    default double placeOfB() throws Exception {
+        return 10;
+    }
 
     /** B to {@code x}, or B's next move there when the source moves it itself: when it was published (System.nanoTime). */
     long move(double x) throws Exception;
 
-    /** Until when (System.nanoTime) GETSS may show a move published at {@code published}: after it, the move was missed. */
-    long deadline(long published);
+    /**
+     * Until when (System.nanoTime) GETSS may show a move published at {@code published}: after it, the
+     * move was missed; 10 s unless the source's next move comes sooner.
+     */
+    default long deadline(long published) {
+        return published + TimeUnit.SECONDS.toNanos(10);
+    }
 
     /** Ends what the source runs for the run, and says what it did (for the report); empty when nothing to say. */
     default String finish() throws Exception {

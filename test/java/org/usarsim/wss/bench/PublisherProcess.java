@@ -1,9 +1,6 @@
 package org.usarsim.wss.bench;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.InputStreamReader;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import java.time.Instant;
@@ -13,7 +10,6 @@ import java.util.Locale;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.function.Consumer;
 
 /**
  * A ROS publisher the benchmark runs ({@code test/ros/latency_publisher.py}, or any command that
@@ -31,28 +27,13 @@ final class PublisherProcess implements AutoCloseable {
     private PublisherProcess(Process process) {
         this.process = process;
         this.in = process.getOutputStream();
-        outReader = lines(process.getInputStream(), out::add, "publisher-output");
-        lines(process.getErrorStream(), line -> System.err.println("  [publisher] " + line), "publisher-errors");
+        outReader = OutputLines.follow(process.getInputStream(), out::add, "publisher-output");
+        OutputLines.follow(process.getErrorStream(), line -> System.err.println("  [publisher] " + line), "publisher-errors");
     }
 
     /** Starts {@code bash -c "COMMAND ARGUMENTS"}: the command (a shell command line) with the script's arguments after it. */
     static PublisherProcess start(String command, String arguments) throws IOException {
         return new PublisherProcess(new ProcessBuilder("bash", "-c", command + " " + arguments).start());
-    }
-
-    private static Thread lines(InputStream stream, Consumer<String> each, String name) {
-        Thread reader = new Thread(() -> {
-            try (BufferedReader lines = new BufferedReader(new InputStreamReader(stream, StandardCharsets.UTF_8))) {
-                for (String line = lines.readLine(); line != null; line = lines.readLine()) {
-                    each.accept(line);
-                }
-            } catch (IOException ignored) {
-                // The process ended.
-            }
-        }, name);
-        reader.setDaemon(true);
-        reader.start();
-        return reader;
     }
 
     /**

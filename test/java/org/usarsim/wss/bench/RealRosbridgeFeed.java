@@ -2,7 +2,6 @@ package org.usarsim.wss.bench;
 
 import java.util.List;
 import java.util.Random;
-import java.util.concurrent.TimeUnit;
 
 /**
  * A and B published by a real ROS node ({@link PublisherProcess}: {@code latency_publisher.py --mode
@@ -40,19 +39,9 @@ final class RealRosbridgeFeed implements PositionFeed {
     }
 
     @Override
-    public double placeOfB() {
-        return 10;
-    }
-
-    @Override
     public long move(double x) throws Exception {
         PositionFeed.pause(random, pollMs);
         return publisher.place("B", x, 0);
-    }
-
-    @Override
-    public long deadline(long published) {
-        return published + TimeUnit.SECONDS.toNanos(10);
     }
 
     @Override

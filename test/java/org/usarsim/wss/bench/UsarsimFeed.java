@@ -3,7 +3,6 @@ package org.usarsim.wss.bench;
 import java.io.IOException;
 import java.util.List;
 import java.util.Random;
-import java.util.concurrent.TimeUnit;
 import org.usarsim.wss.model.simulator.FakeSimulator;
 
 /** The peer: A and B in a USARSim position socket of this JVM ({@link FakeSimulator}); a move's publish is the moment B's place changes. */
@@ -31,21 +30,11 @@ final class UsarsimFeed implements PositionFeed {
     }
 
     @Override
-    public double placeOfB() {
-        return 10;
-    }
-
-    @Override
     public long move(double x) throws InterruptedException {
         PositionFeed.pause(random, pollMs);
         long now = System.nanoTime();
         simulator.place("B", x, 0, 0);
         return now;
-    }
-
-    @Override
-    public long deadline(long published) {
-        return published + TimeUnit.SECONDS.toNanos(10);
     }
 
     @Override

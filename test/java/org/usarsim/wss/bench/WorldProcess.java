@@ -1,9 +1,6 @@
 package org.usarsim.wss.bench;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -44,20 +41,12 @@ final class WorldProcess implements AutoCloseable {
                 WssProcess.classes(), "org.usarsim.wss.app.Main", "--world", world.toString(), "--bind", "127.0.0.1", "--port", "0",
                 "--rosbridge", "0").redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
-        Thread reader = new Thread(() -> {
-            try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
-                for (String line = in.readLine(); line != null; line = in.readLine()) {
-                    out.add(line);
-                    if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
-                        System.err.println("  [world] " + line);
-                    }
-                }
-            } catch (IOException ignored) {
-                // The process ended.
+        OutputLines.follow(process.getInputStream(), line -> {
+            out.add(line);
+            if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
+                System.err.println("  [world] " + line);
             }
         }, "world-output");
-        reader.setDaemon(true);
-        reader.start();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (System.nanoTime() < deadline && process.isAlive()) {
             String line = out.poll(100, TimeUnit.MILLISECONDS);

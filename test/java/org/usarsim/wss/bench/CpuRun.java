@@ -36,6 +36,8 @@ final class CpuRun {
     double rosbridge(String name, PoseStream stream, List<String> more, int heapSamples) throws Exception {
         List<String> settings = new ArrayList<>(stream.wssSettings());
         settings.addAll(more);
+        double cpu;
+        long silences;
         try (WssProcess wss = start(settings)) {
             List<ControlClient> clients = register(wss);
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
@@ -44,7 +46,7 @@ final class CpuRun {
             }
             Thread.sleep(3_000); // warm up: the first polls, the JIT
             long heapStart = heapSamples >= 0 ? heapAfterGc(wss.pid()) : -1;
-            double cpu = cpuPerSecond(wss);
+            cpu = cpuPerSecond(wss);
             if (heapSamples >= 0) {
                 System.out.println("  heap in use after a full GC, " + name + ": " + heapStart + " KiB at the start, "
                         + heapAfterGc(wss.pid()) + " KiB after " + seconds + " s");
@@ -54,11 +56,12 @@ final class CpuRun {
                 System.out.println("  heap in use after a full GC, " + name + ", " + (i + 1) * seconds + " s: " + heapAfterGc(wss.pid())
                         + " KiB");
             }
-            long silences = wss.linesContaining("lost the simulator");
-            System.out.println("  " + name + ": " + stream.finish() + "; " + silences + " silences said");
+            silences = wss.linesContaining("lost the simulator");
             close(clients);
-            return cpu;
         }
+        // The WSS first: it would say the silence of publishers that stopped.
+        System.out.println("  " + name + ": " + stream.finish() + "; " + silences + " silences said");
+        return cpu;
     }
 
     /** The peer: the same robots in a USARSim position socket ({@link FakeSimulator}), GETPOS every 100 ms. */

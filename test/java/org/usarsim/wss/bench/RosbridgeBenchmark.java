@@ -1,349 +1,189 @@
 package org.usarsim.wss.bench;
 
-import java.io.IOException;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.Random;
-import java.util.concurrent.TimeUnit;
-import java.util.function.LongFunction;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
-import org.usarsim.wss.model.simulator.FakeSimulator;
-import org.usarsim.wss.model.simulator.PathLoss;
-import org.usarsim.wss.model.simulator.ReportedRobot;
-import org.usarsim.wss.model.simulator.TinyRosbridge;
-import org.usarsim.wss.protocol.Replies;
 
 /**
- * Positions over rosbridge (issue 23), the WSS a headless process of its own with the DistanceOnly
- * model, {@code positions = rosbridge}, a rosbridge in this JVM ({@link TinyRosbridge}) publishing
- * {@code /gazebo/model_states}:
+ * Positions over rosbridge (issues 23 and 31, docs/performance.md "Positions over rosbridge"), the
+ * WSS a headless process of its own with the DistanceOnly model, beside its USARSim path in the same
+ * run.
+ *
+ * <p>{@code latency}: A stands at the origin, B jumps between 10 m and 100 m from it (range 55.6 m
+ * with {@code distance.n = 3}) at random moments of the poll, {@code --changes} times; from the
+ * publish of B's new place to the new strength on A's GETSS (asked every millisecond), and to the
+ * pair's break or resume in the WSS's FINE log; at 5 Hz with a 200 ms poll and at 20 Hz with a
+ * 100 ms poll (the fastest), each source against a WSS of its own ({@link LatencyRun}):
  * <ul>
- * <li>{@code latency}: robot B jumps between 10 m and 100 m from A (range 55.6 m); from the publish
- * of the first message with its new place to the new strength on A's GETSS, and to the pair's break
- * or resume in the WSS's log; at 5 Hz (poll 200 ms) and 20 Hz (poll 100 ms, the fastest);</li>
- * <li>{@code cpu}: 100 robots moving, published at 20 Hz, polled every 100 ms: the WSS's CPU per
- * second, beside the same robots from a USARSim position socket polled every 100 ms; the heap in use
- * after a full GC at the start and the end of the rosbridge run. The stale limit is 1000 ms there
- * ({@code -Dwss.bench.stale=300} for the default of 3 polls), so that a loaded machine's pauses do
- * not turn into reconnections that the USARSim run does not pay.</li>
+ * <li>the USARSim socket ({@link UsarsimFeed}): publish is the moment B's place changes;</li>
+ * <li>the world server's rosbridge side ({@link WorldFeed}; {@code --no-world} leaves it out): B
+ * jumps by its world file, and publish is when a subscriber of the benchmark's own, with no
+ * throttle and no queue, first sees the new place; the world server publishes at its tick (50 Hz)
+ * at either poll;</li>
+ * <li>a real rosbridge ({@code --real URL}, {@link RealRosbridgeFeed}): a real ROS node publishing
+ * {@code gazebo_msgs/ModelStates} at 5 or 20 Hz on {@code --topic}, started by the benchmark as
+ * {@code bash -c "PUBLISHER --mode place --rate HZ --topic TOPIC"}, {@code PUBLISHER} being
+ * {@code --publisher} ({@code test/ros/latency_publisher.py} run with a ROS environment); publish
+ * is the script's realtime clock just before its publish.</li>
  * </ul>
+ * Printed: a line per source and rate with PASS or FAIL against issue 31's bounds (median at most
+ * half a poll plus 20 ms, p99 at most a poll plus 50 ms), and the ratios of the medians and p99s to
+ * the USARSim socket's. The WSS's own settings but the stale limit ({@code --stale}).
+ *
+ * <p>{@code cpu}: 100 robots moving ({@link Circles}), all registered, polled every 100 ms, the
+ * WSS's CPU per second over {@code --seconds} after 3 s of warm-up ({@link CpuRun}): (i)
+ * {@code /gazebo/model_states} at 20 Hz; (ii) 10 publishers on a tf topic ({@code --tf-topic}) at
+ * 50 Hz each, 10 robots each; (iii) the USARSim socket. (i) and (ii) come from a rosbridge in this
+ * JVM ({@link TinyPoseStream}), or with {@code --real} from the real one and
+ * {@code latency_publisher.py --mode model_states} and {@code --mode tf}. The heap in use after a
+ * full GC in (i), at the start and the end, and {@code --heap-samples} times more. The stale limit is
+ * 1000 ms there unless {@code --stale} says otherwise, so that a loaded machine's pauses do not turn
+ * into reconnections that the USARSim run does not pay.
+ *
  * <pre>
- * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RosbridgeBenchmark [--only latency|cpu] [--changes 40] [--seconds 60]
- *     [--heap-samples 9]   (the rosbridge WSS's heap after a full GC every --seconds, this many more times)
+ * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RosbridgeBenchmark
+ *     [--only latency|cpu] [--changes 40] [--seconds 60] [--robots 100] [--heap-samples 0]
+ *     [--no-world] [--real ws://127.0.0.1:9090] [--publisher "python3 test/ros/latency_publisher.py"]
+ *     [--topic /bench/model_states] [--tf-topic /bench/tf] [--stale MS]
  * </pre>
  */
 public final class RosbridgeBenchmark {
 
-    private static final PathLoss N3 = new PathLoss(-49.67, 3, 2, -93);
+    /** The publishing rate and the poll interval of each latency run. */
+    private static final int[][] RATES = {{5, 200}, {20, 100}};
 
     private RosbridgeBenchmark() {
     }
 
     public static void main(String[] args) throws Exception {
-        String only = "all";
-        int changes = 40;
-        int seconds = 60;
-        int robots = 100;
-        int heapSamples = 0;
-        for (int i = 0; i < args.length; i += 2) {
-            switch (args[i]) {
-                case "--only" -> only = args[i + 1];
-                case "--changes" -> changes = Integer.parseInt(args[i + 1]);
-                case "--seconds" -> seconds = Integer.parseInt(args[i + 1]);
-                case "--robots" -> robots = Integer.parseInt(args[i + 1]);
-                case "--heap-samples" -> heapSamples = Integer.parseInt(args[i + 1]);
-                default -> throw new IllegalArgumentException("unknown option " + args[i]);
-            }
-        }
+        Map<String, String> options = options(args);
+        String only = options.getOrDefault("--only", "all");
         if (!only.equals("cpu")) {
-            latency(5, 200, changes);
-            usarsimLatency(200, changes);
-            latency(20, 100, changes);
-            usarsimLatency(100, changes);
+            latency(options);
         }
         if (!only.equals("latency")) {
-            cpu(robots, seconds, heapSamples);
+            cpu(options);
         }
         System.exit(0);
     }
 
+    private static Map<String, String> options(String[] args) {
+        Map<String, String> options = new LinkedHashMap<>();
+        for (int i = 0; i < args.length; i++) {
+            switch (args[i]) {
+                case "--no-world", "--world" -> options.put("--world", args[i].equals("--world") ? "on" : "off");
+                case "--only", "--changes", "--seconds", "--robots", "--heap-samples", "--real", "--publisher", "--topic",
+                        "--tf-topic", "--stale" -> {
+                    if (i + 1 == args.length) {
+                        throw new IllegalArgumentException(args[i] + " needs a value");
+                    }
+                    options.put(args[i], args[++i]);
+                }
+                default -> throw new IllegalArgumentException("unknown option " + args[i]);
+            }
+        }
+        return options;
+    }
+
+    private static int number(Map<String, String> options, String name, int otherwise) {
+        return options.containsKey(name) ? Integer.parseInt(options.get(name)) : otherwise;
+    }
+
+    private static String publisher(Map<String, String> options) {
+        return options.getOrDefault("--publisher", "python3 test/ros/latency_publisher.py");
+    }
+
+    private static String topic(Map<String, String> options) {
+        return options.getOrDefault("--topic", "/bench/model_states");
+    }
+
     // ---- latency ----
 
-    private static void latency(int hz, int intervalMs, int changes) throws Exception {
-        try (TinyRosbridge ros = new TinyRosbridge();
-                WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=rosbridge",
-                        "rosbridge.url=" + ros.url(), "positions.interval=" + intervalMs, "distance.n=3", "wss.logLevel=FINE")) {
-            Publisher publisher = new Publisher(ros, hz);
-            publisher.place("A", 0, 0);
-            publisher.place("B", 10, 0);
-            publisher.start();
-            ControlClient a = new ControlClient(wss.controlPort, "A", 40001);
-            new ControlClient(wss.controlPort, "B", 40002);
-            awaitStrength(a, 10, System.nanoTime() + TimeUnit.SECONDS.toNanos(20));
-            Random random = new Random(23);
-            List<Double> getss = new ArrayList<>();
-            List<Double> links = new ArrayList<>();
-            double at = 10;
-            for (int i = 0; i < changes; i++) {
-                Thread.sleep(random.nextInt(intervalMs) + intervalMs);
-                at = at == 10 ? 100 : 10;
-                int lines = wss.lineCount();
-                long published = publisher.moveAndAwaitPublish("B", at, 0);
-                long strength = awaitStrength(a, at, published + TimeUnit.SECONDS.toNanos(10));
-                String event = at == 100 ? "out of range: A - B" : "in range: A - B";
-                long link;
-                long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-                while ((link = wss.lineTime(event, lines)) < 0 && System.nanoTime() < deadline) {
-                    Thread.sleep(1);
-                }
-                getss.add((strength - published) / 1e6);
-                links.add((link - published) / 1e6);
+    private static void latency(Map<String, String> options) throws Exception {
+        int changes = number(options, "--changes", 40);
+        String real = options.get("--real");
+        List<String> stale = options.containsKey("--stale") ? List.of("rosbridge.stale=" + options.get("--stale")) : List.of();
+        System.out.println("latency: B moved " + changes + " times between 10 m and 100 m from A (range 55.6 m)"
+                + (stale.isEmpty() ? "" : ", " + stale.get(0)));
+        for (int[] rate : RATES) {
+            int hz = rate[0];
+            int pollMs = rate[1];
+            String at = String.format(Locale.ROOT, "%d Hz, poll %d ms", hz, pollMs);
+            System.out.printf(Locale.ROOT, "%s: the bounds (issue 31) median <= %.0f ms, p99 <= %.0f ms%n", at,
+                    Latencies.medianBound(pollMs), Latencies.p99Bound(pollMs));
+            Latencies usarsim = run(at, "USARSim socket", () -> new UsarsimFeed(pollMs), pollMs, changes, stale);
+            List<String> ratios = new ArrayList<>();
+            if (!"off".equals(options.get("--world"))) {
+                ratios.add(ratio("world", run(at, "world server", () -> new WorldFeed(pollMs, changes), pollMs, changes, stale),
+                        usarsim));
             }
-            publisher.stop();
-            System.out.printf(Locale.ROOT, "latency %d Hz (poll %d ms), %d changes: publish -> GETSS median %.1f ms, p99 %.1f ms;"
-                    + " publish -> break/resume median %.1f ms, p99 %.1f ms%n", hz, intervalMs, changes, median(getss), p99(getss),
-                    median(links), p99(links));
-        }
-    }
-
-    /** The peer: the same jumps of B in a USARSim position socket (this JVM's), polled at the same interval. */
-    private static void usarsimLatency(int intervalMs, int changes) throws Exception {
-        try (FakeSimulator fake = new FakeSimulator()) {
-            fake.place("A", 0, 0, 0);
-            fake.place("B", 10, 0, 0);
-            try (WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=usarsim",
-                    "usarsim.host=127.0.0.1", "usarsim.port=" + fake.port(), "positions.interval=" + intervalMs, "distance.n=3",
-                    "wss.logLevel=FINE")) {
-                ControlClient a = new ControlClient(wss.controlPort, "A", 40001);
-                new ControlClient(wss.controlPort, "B", 40002);
-                awaitStrength(a, 10, System.nanoTime() + TimeUnit.SECONDS.toNanos(20));
-                Random random = new Random(23);
-                List<Double> getss = new ArrayList<>();
-                List<Double> links = new ArrayList<>();
-                double at = 10;
-                for (int i = 0; i < changes; i++) {
-                    Thread.sleep(random.nextInt(intervalMs) + intervalMs);
-                    at = at == 10 ? 100 : 10;
-                    int lines = wss.lineCount();
-                    long placed = System.nanoTime();
-                    fake.place("B", at, 0, 0);
-                    long strength = awaitStrength(a, at, placed + TimeUnit.SECONDS.toNanos(10));
-                    String event = at == 100 ? "out of range: A - B" : "in range: A - B";
-                    long link;
-                    long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
-                    while ((link = wss.lineTime(event, lines)) < 0 && System.nanoTime() < deadline) {
-                        Thread.sleep(1);
-                    }
-                    getss.add((strength - placed) / 1e6);
-                    links.add((link - placed) / 1e6);
-                }
-                System.out.printf(Locale.ROOT, "  peer, USARSim socket (poll %d ms), %d changes: move -> GETSS median %.1f ms, p99 %.1f ms;"
-                        + " move -> break/resume median %.1f ms, p99 %.1f ms%n", intervalMs, changes, median(getss), p99(getss),
-                        median(links), p99(links));
+            if (real != null) {
+                ratios.add(ratio("rosbridge", run(at, "real rosbridge", () -> new RealRosbridgeFeed(real, publisher(options),
+                        topic(options), hz, pollMs), pollMs, changes, stale), usarsim));
+            }
+            if (!ratios.isEmpty()) {
+                System.out.println("  " + at + ", ratios: " + String.join("; ", ratios));
             }
         }
     }
 
-    /** Asks A's GETSS for B every millisecond until it shows the strength at {@code metres}; when it did. */
-    private static long awaitStrength(ControlClient a, double metres, long deadline) throws IOException, InterruptedException {
-        String expected = Replies.signal("B", N3.strength(metres));
-        while (System.nanoTime() < deadline) {
-            if (a.ask("GETSS {Robot B}").equals(expected)) {
-                return System.nanoTime();
-            }
-            Thread.sleep(1);
-        }
-        throw new IOException("GETSS never showed B at " + metres + " m");
+    /** Opens a source of the latency run: it may fail to start. */
+    private interface FeedStart {
+        PositionFeed open() throws Exception;
     }
 
-    /** Publishes model_states at its rate; says when the first message with a change went out. */
-    private static final class Publisher {
-        private final TinyRosbridge ros;
-        private final long periodNs;
-        private final Map<String, double[]> world = Collections.synchronizedMap(new LinkedHashMap<>());
-        private volatile boolean running = true;
-        private Thread thread;
-
-        Publisher(TinyRosbridge ros, int hz) {
-            this.ros = ros;
-            this.periodNs = TimeUnit.SECONDS.toNanos(1) / hz;
+    /** One source at one rate, its line printed; null when it failed (said). */
+    private static Latencies run(String at, String name, FeedStart start, int pollMs, int changes, List<String> more) {
+        try (PositionFeed feed = start.open()) {
+            Latencies latencies = LatencyRun.measure(feed, pollMs, changes, more);
+            String said = feed.finish();
+            System.out.println("  " + at + ", " + feed.label() + ": " + latencies.line(pollMs) + (said.isEmpty() ? "" : " (" + said
+                    + ")"));
+            return latencies;
+        } catch (Exception e) {
+            System.out.println("  " + at + ", " + name + ": FAILED, " + e);
+            return null;
         }
+    }
 
-        void place(String name, double x, double y) {
-            world.put(name, new double[] {x, y});
+    private static String ratio(String name, Latencies source, Latencies usarsim) {
+        if (source == null || usarsim == null) {
+            return name + "/USARSim: -";
         }
-
-        void start() {
-            thread = new Thread(() -> {
-                long next = System.nanoTime();
-                while (running) {
-                    synchronized (this) {
-                        ros.publish(modelStatesNow());
-                    }
-                    next += periodNs;
-                    long wait = next - System.nanoTime();
-                    if (wait > 0) {
-                        try {
-                            TimeUnit.NANOSECONDS.sleep(wait);
-                        } catch (InterruptedException e) {
-                            return;
-                        }
-                    }
-                }
-            }, "publisher");
-            thread.setDaemon(true);
-            thread.start();
-        }
-
-        /**
-         * Moves the robot and publishes at once, out of the tick, so that the change comes at a
-         * random phase of the WSS's poll (the tick's phase against the poll's stays the same for a
-         * whole run); when it went out.
-         */
-        synchronized long moveAndAwaitPublish(String name, double x, double y) {
-            place(name, x, y);
-            long now = System.nanoTime();
-            ros.publish(modelStatesNow());
-            return now;
-        }
-
-        private String modelStatesNow() {
-            return TinyRosbridge.modelStates(new LinkedHashMap<>(world));
-        }
-
-        void stop() throws InterruptedException {
-            running = false;
-            thread.interrupt();
-            thread.join(5_000);
-        }
+        return String.format(Locale.ROOT, "%s/USARSim median %.2f, p99 %.2f", name, source.median() / usarsim.median(),
+                source.p99() / usarsim.p99());
     }
 
     // ---- CPU and heap ----
 
-    /** Robot i at time t (s): on a circle of 30 m around its own centre, so that some pairs go in and out of range. */
-    private static double[] at(int i, double t) {
-        double angle = t * 0.5 + i;
-        return new double[] {(i % 10) * 20 + 30 * Math.cos(angle), (i / 10) * 20 + 30 * Math.sin(angle)};
-    }
-
-    private static void cpu(int robots, int seconds, int heapSamples) throws Exception {
-        double rosbridge;
-        long[] heap;
-        try (TinyRosbridge ros = new TinyRosbridge();
-                WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=rosbridge",
-                        "rosbridge.url=" + ros.url(), "positions.interval=100", "distance.n=3",
-                        "rosbridge.stale=" + System.getProperty("wss.bench.stale", "1000"))) {
-            long start = System.nanoTime();
-            Publisher publisher = new Publisher(ros, 20);
-            Thread mover = new Thread(() -> {
-                while (!Thread.currentThread().isInterrupted()) {
-                    double t = (System.nanoTime() - start) / 1e9;
-                    synchronized (publisher) {
-                        for (int i = 0; i < robots; i++) {
-                            double[] p = at(i, t);
-                            publisher.place("R" + i, p[0], p[1]);
-                        }
-                    }
-                    try {
-                        Thread.sleep(50);
-                    } catch (InterruptedException e) {
-                        return;
-                    }
-                }
-            }, "mover");
-            mover.setDaemon(true);
-            for (int i = 0; i < robots; i++) {
-                double[] p = at(i, 0);
-                publisher.place("R" + i, p[0], p[1]);
-            }
-            mover.start();
-            publisher.start();
-            List<ControlClient> clients = register(wss, robots);
-            long heapStart = heapAfterGc(wss.pid());
-            rosbridge = cpuPerSecond(wss, seconds);
-            long heapEnd = heapAfterGc(wss.pid());
-            for (int i = 1; i <= heapSamples; i++) {
-                Thread.sleep(TimeUnit.SECONDS.toMillis(seconds));
-                System.out.println("  heap in use after a full GC, rosbridge, " + (i + 1) * seconds + " s: " + heapAfterGc(wss.pid()) + " KiB");
-            }
-            heap = new long[] {heapStart, heapEnd};
-            System.out.println("  (" + wss.linesContaining("lost the simulator") + " silences of rosbridge said in the run)");
-            mover.interrupt();
-            publisher.stop();
-            System.out.println("  (" + clients.size() + " robots registered over rosbridge)");
+    private static void cpu(Map<String, String> options) throws Exception {
+        int robots = number(options, "--robots", 100);
+        int seconds = number(options, "--seconds", 60);
+        int heapSamples = number(options, "--heap-samples", 0);
+        String real = options.get("--real");
+        String tfTopic = options.getOrDefault("--tf-topic", "/bench/tf");
+        List<String> stale = List.of("rosbridge.stale=" + options.getOrDefault("--stale", "1000"));
+        String where = real == null ? "the rosbridge in this JVM" : "the real rosbridge at " + real;
+        int publishers = 10;
+        System.out.printf(Locale.ROOT, "cpu: %d robots moving, poll 100 ms, %d s each, %s, %s%n", robots, seconds, where,
+                stale.get(0));
+        CpuRun run = new CpuRun(robots, seconds);
+        double states;
+        try (PoseStream stream = real == null ? TinyPoseStream.modelStates(robots, 20)
+                : RealPoseStream.modelStates(real, publisher(options), topic(options), robots, 20)) {
+            states = run.rosbridge("model states", stream, stale, heapSamples);
         }
-        double usarsim;
-        try (FakeSimulator fake = new FakeSimulator()) {
-            long start = System.nanoTime();
-            LongFunction<List<ReportedRobot>> script = k -> {
-                double t = (System.nanoTime() - start) / 1e9;
-                List<ReportedRobot> list = new ArrayList<>();
-                for (int i = 0; i < robots; i++) {
-                    double[] p = at(i, t);
-                    list.add(new ReportedRobot("R" + i, p[0], p[1], 0, false));
-                }
-                return list;
-            };
-            fake.script(script);
-            try (WssProcess wss = WssProcess.start("wss.model=DistanceOnlyPropagationModel", "positions=usarsim",
-                    "usarsim.host=127.0.0.1", "usarsim.port=" + fake.port(), "positions.interval=100", "distance.n=3")) {
-                register(wss, robots);
-                System.out.println("  heap in use after a full GC, USARSim, start: " + heapAfterGc(wss.pid()) + " KiB");
-                usarsim = cpuPerSecond(wss, seconds);
-                System.out.println("  heap in use after a full GC, USARSim, " + seconds + " s: " + heapAfterGc(wss.pid()) + " KiB");
-            }
+        double tf;
+        try (PoseStream stream = real == null ? TinyPoseStream.tf(tfTopic, robots, publishers, 50)
+                : RealPoseStream.tf(real, publisher(options), tfTopic, robots, publishers, 50)) {
+            tf = run.rosbridge("tf", stream, stale, -1);
         }
-        System.out.printf(Locale.ROOT, "cpu %d robots, poll 100 ms, %d s each: rosbridge (model_states at 20 Hz) %.1f ms CPU/s,"
-                + " USARSim socket (GETPOS at 10 Hz) %.1f ms CPU/s, ratio %.2f; heap in use after a full GC %d KiB at the start,"
-                + " %d KiB after %d s%n", robots, seconds, rosbridge, usarsim, rosbridge / usarsim, heap[0], heap[1], seconds);
-    }
-
-    private static List<ControlClient> register(WssProcess wss, int robots) throws IOException, InterruptedException {
-        List<ControlClient> clients = new ArrayList<>();
-        for (int i = 0; i < robots; i++) {
-            clients.add(new ControlClient(wss.controlPort, "R" + i, 41000 + i));
-        }
-        Thread.sleep(3_000); // warm up: the first polls, the JIT
-        return clients;
-    }
-
-    /** The process's CPU in milliseconds per second over {@code seconds}. */
-    private static double cpuPerSecond(WssProcess wss, int seconds) throws IOException, InterruptedException {
-        long cpu = ProcessStats.cpuNanos(wss.pid());
-        long start = System.nanoTime();
-        Thread.sleep(TimeUnit.SECONDS.toMillis(seconds));
-        double used = (ProcessStats.cpuNanos(wss.pid()) - cpu) / 1e6;
-        return used / ((System.nanoTime() - start) / 1e9);
-    }
-
-    private static final Pattern USED = Pattern.compile("used (\\d+)K");
-
-    /** The heap in use after a full GC, by jcmd, in KiB. */
-    private static long heapAfterGc(long pid) throws IOException, InterruptedException {
-        run("jcmd", Long.toString(pid), "GC.run");
-        Matcher matcher = USED.matcher(run("jcmd", Long.toString(pid), "GC.heap_info"));
-        return matcher.find() ? Long.parseLong(matcher.group(1)) : -1;
-    }
-
-    private static String run(String... command) throws IOException, InterruptedException {
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
-        String out = new String(process.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        process.waitFor();
-        return out;
-    }
-
-    private static double median(List<Double> values) {
-        List<Double> sorted = values.stream().sorted().toList();
-        return sorted.get(sorted.size() / 2);
-    }
-
-    private static double p99(List<Double> values) {
-        List<Double> sorted = values.stream().sorted().toList();
-        return sorted.get(Math.min(sorted.size() - 1, (int) Math.ceil(sorted.size() * 0.99) - 1));
+        double usarsim = run.usarsim();
+        System.out.println(CpuRun.line("(i) ModelStates of all at 20 Hz", states, usarsim));
+        System.out.println(CpuRun.line("(ii) " + publishers + " tf publishers at 50 Hz, " + robots / publishers + " robots each",
+                tf, usarsim));
+        System.out.println(CpuRun.line("(iii) USARSim socket, GETPOS every 100 ms", usarsim, usarsim));
     }
 }

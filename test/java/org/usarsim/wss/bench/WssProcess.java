@@ -1,9 +1,6 @@
 package org.usarsim.wss.bench;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -78,8 +75,12 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from the compiled classes with these extra properties. */
     static WssProcess start(String... properties) throws IOException, InterruptedException {
-        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
-        return startFrom(classes, properties);
+        return startFrom(classes(), properties);
+    }
+
+    /** Where the compiled classes are (target/classes), for a process of their own. */
+    static String classes() {
+        return Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
     }
 
     /** Starts the server from another build (a wss.jar, or a classes folder) with these extra properties. */
@@ -89,8 +90,7 @@ final class WssProcess implements AutoCloseable {
 
     /** Starts the server from the compiled classes under {@code ulimit -n descriptors}, with these extra properties. */
     static WssProcess startWithDescriptorLimit(int descriptors, String... properties) throws IOException, InterruptedException {
-        String classes = Path.of(org.usarsim.wss.app.Main.class.getProtectionDomain().getCodeSource().getLocation().getPath()).toString();
-        return start(classes, descriptors, properties);
+        return start(classes(), descriptors, properties);
     }
 
     /** @param descriptors the process's limit of open descriptors; 0 keeps the shell's */
@@ -118,25 +118,16 @@ final class WssProcess implements AutoCloseable {
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
         List<String> all = Collections.synchronizedList(new ArrayList<>());
         List<Long> times = new ArrayList<>();
-        Thread reader = new Thread(() -> {
-            try (BufferedReader in = new BufferedReader(new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
-                String line;
-                while ((line = in.readLine()) != null) {
-                    out.add(line);
-                    synchronized (all) {
-                        times.add(System.nanoTime());
-                        all.add(line);
-                    }
-                    if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
-                        System.err.println("  [wss] " + line);
-                    }
-                }
-            } catch (IOException ignored) {
-                // The process ended.
+        OutputLines.follow(process.getInputStream(), line -> {
+            out.add(line);
+            synchronized (all) {
+                times.add(System.nanoTime());
+                all.add(line);
+            }
+            if (line.contains(" WARNING ") || line.contains(" SEVERE ")) {
+                System.err.println("  [wss] " + line);
             }
         }, "wss-output");
-        reader.setDaemon(true);
-        reader.start();
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
         while (System.nanoTime() < deadline) {
             String line = out.poll(100, TimeUnit.MILLISECONDS);

@@ -116,7 +116,7 @@ public final class RosbridgeBenchmark {
             Latencies usarsim = run(at, "USARSim socket", () -> new UsarsimFeed(pollMs), pollMs, changes, stale);
             List<String> ratios = new ArrayList<>();
             if (!"off".equals(options.get("--world"))) {
-                ratios.add(ratio("world", run(at, "world server", () -> new WorldFeed(pollMs, changes), pollMs, changes, stale),
+                ratios.add(ratio("world", run(at, "world server", () -> new WorldFeed(hz, pollMs, changes), pollMs, changes, stale),
                         usarsim));
             }
             if (real != null) {

@@ -12,8 +12,9 @@ import java.util.concurrent.TimeUnit;
  * timed points ({@code at}: a jump takes a microsecond) at random moments after a lead for the
  * WSS's start. The world server is known only from outside: a move's publish is when
  * {@link TopicWatcher}, a subscriber of the benchmark's own with no throttle and no queue, first
- * sees B's new place (the world server publishes each subscription at its own ticks, 20 ms apart:
- * the WSS's copy of a message may come up to a tick before or after the watcher's).
+ * sees B's new place (the world server's one publisher of {@code /gazebo/model_states} at {@code --ros-rate}: the
+ * watcher, with no throttle, gets each message as it is published; the WSS, throttled to 20 ms,
+ * too at 5 and 20 Hz).
  */
 final class WorldFeed implements PositionFeed {
 
@@ -22,15 +23,18 @@ final class WorldFeed implements PositionFeed {
     /** The least time between two jumps, beside a poll interval and a random part of one: room for a late GETSS. */
     private static final int SETTLE_MS = 1000;
 
+    private final int hz;
     private final int pollMs;
     private final WorldProcess world;
     private final TopicWatcher watcher;
     /** The index of the next place of B to look at in {@link #watcher}. */
     private int from;
 
-    WorldFeed(int pollMs, int changes) throws IOException, InterruptedException {
+    /** The world server's publishers at {@code hz} ({@code --ros-rate}). */
+    WorldFeed(int hz, int pollMs, int changes) throws IOException, InterruptedException {
+        this.hz = hz;
         this.pollMs = pollMs;
-        world = WorldProcess.start(worldLines(pollMs, 2 * changes + 20));
+        world = WorldProcess.start(worldLines(pollMs, 2 * changes + 20), hz);
         watcher = TopicWatcher.open(world.url(), "/gazebo/model_states", "B");
     }
 
@@ -51,7 +55,7 @@ final class WorldFeed implements PositionFeed {
 
     @Override
     public String label() {
-        return "world server's rosbridge (its 20 ms tick)";
+        return "world server's rosbridge (--ros-rate " + hz + ")";
     }
 
     @Override

@@ -12,7 +12,7 @@ import java.util.regex.Pattern;
 
 /**
  * The world server with its rosbridge side, as users run it: a process of its own
- * ({@code --world FILE --bind 127.0.0.1 --port 0 --rosbridge 0}) from the compiled classes, known
+ * ({@code --world FILE --bind 127.0.0.1 --port 0 --rosbridge 0 --ros-rate HZ}) from the compiled classes, known
  * only by its command line and the WebSocket address its log names.
  */
 final class WorldProcess implements AutoCloseable {
@@ -33,13 +33,13 @@ final class WorldProcess implements AutoCloseable {
     }
 
     /** Starts the world server on a world file of these lines (a temporary file). */
-    static WorldProcess start(List<String> worldLines) throws IOException, InterruptedException {
+    static WorldProcess start(List<String> worldLines, int hz) throws IOException, InterruptedException {
         Path world = Files.createTempFile("wss-bench", ".world");
         world.toFile().deleteOnExit();
         Files.write(world, worldLines);
         Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
                 WssProcess.classes(), "org.usarsim.wss.app.Main", "--world", world.toString(), "--bind", "127.0.0.1", "--port", "0",
-                "--rosbridge", "0").redirectErrorStream(true).start();
+                "--rosbridge", "0", "--ros-rate", Integer.toString(hz)).redirectErrorStream(true).start();
         BlockingQueue<String> out = new LinkedBlockingQueue<>();
         OutputLines.follow(process.getInputStream(), line -> {
             out.add(line);

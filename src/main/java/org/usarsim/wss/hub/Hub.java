@@ -11,6 +11,7 @@ import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Changes;
 import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubCore;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.RatePin;
@@ -76,7 +77,7 @@ public final class Hub implements AutoCloseable {
                 config.maxPortsPerAddress(), config.shaping());
         KeepAlive keepAlive = KeepAlive.within(config.deadPeerSeconds());
         this.executor = new StepExecutor(core, clock, new Outbox(events), config.bindAddress(),
-                steps -> new LinkSide(steps, answers, config, warnings, keepAlive, events, airtime, clock, LOG));
+                steps -> new LinkSide(steps, answers, config, warnings, keepAlive, events, airtime, HubClock.SYSTEM, LOG));
         this.controlSide = new ControlSide(executor, answers, config, warnings, keepAlive);
         this.modelSide = new ModelSide(executor, answers);
         this.sampler = config.shaping().on() ? new Sampler(modelSide::measure) : null;

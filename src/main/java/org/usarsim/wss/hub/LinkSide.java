@@ -4,8 +4,8 @@ import org.usarsim.wss.hub.core.Admission;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.nio.channels.SocketChannel;
-import java.util.function.LongSupplier;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.hub.tcp.Closing;
@@ -34,10 +34,10 @@ final class LinkSide extends SocketSide implements LinkHub {
     private final WssEventListener events;
     /** The robots' radios, when links are shaped (docs/shaping.md). */
     private final Airtime airtime;
-    private final LongSupplier clock;
+    private final HubClock clock;
 
     LinkSide(StepExecutor executor, ModelAnswers answers, HubConfig config, WarningLimiter warnings, KeepAlive keepAlive,
-            WssEventListener events, Airtime airtime, LongSupplier clock, Logger log) {
+            WssEventListener events, Airtime airtime, HubClock clock, Logger log) {
         super(warnings, keepAlive, executor.descriptors());
         this.log = log;
         this.executor = executor;
@@ -92,8 +92,8 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     private Link newLink(WssPort port, SocketChannel socket, Admission admission) throws IOException {
-        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), clock, config.shaping().queueMs()) : null;
-        return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), shaping);
+        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), config.shaping().queueMs()) : null;
+        return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), clock, shaping);
     }
 
     private void refuse(WssPort port, SocketChannel socket, InetAddress peer, String refusal) {

@@ -6,7 +6,6 @@ import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 
 import java.nio.ByteBuffer;
-import java.nio.channels.WritableByteChannel;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Test;
@@ -49,7 +48,7 @@ class UnpacedTest {
     }
 
     /** A target that takes at most {@code most} bytes a write, and remembers the buffers it was given. */
-    private static final class Target implements WritableByteChannel {
+    private static final class Target implements OpenTarget {
         private final int most;
         final List<ByteBuffer> buffers = new ArrayList<>();
 
@@ -63,15 +62,6 @@ class UnpacedTest {
             int count = Math.min(most, bytes.remaining());
             bytes.position(bytes.position() + count);
             return count;
-        }
-
-        @Override
-        public boolean isOpen() {
-            return true;
-        }
-
-        @Override
-        public void close() {
         }
     }
 }

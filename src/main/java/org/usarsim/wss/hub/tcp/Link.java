@@ -17,7 +17,6 @@ import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.CloseReason;
 import org.usarsim.wss.hub.core.Connection;
 import org.usarsim.wss.hub.core.HubClock;
-import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.PortKey;
 import org.usarsim.wss.hub.core.WssPort;
@@ -225,27 +224,33 @@ public final class Link implements Runnable, Connection {
         Pacing upPacing = null;
         Pacing downPacing = null;
         try {
-            upPacing = pacing(shaping == null ? null : shaping.up(), source, target, key.from(), key.to(), wake, now);
-            downPacing = pacing(shaping == null ? null : shaping.down(), target, source, key.to(), key.from(), wake, now);
+            upPacing = pacing(true, wake, now);
+            downPacing = pacing(false, wake, now);
             Direction up = new Direction(this, source, target, key.from(), key.to(), chunkSize, stats, events, upPacing);
             Direction down = new Direction(this, target, source, key.to(), key.from(), chunkSize, stats, events, downPacing);
             new Forwarding(this, selector, clock, up, down).forward();
         } finally {
-            closeQuietly(upPacing);
-            closeQuietly(downPacing);
+            closeIfMade(upPacing);
+            closeIfMade(downPacing);
         }
     }
 
-    private static void closeQuietly(Pacing pacing) {
+    /**
+     * The pacing of the direction from the source to the target ({@code upward}) or back: at
+     * once, or as the pair's live condition that way says.
+     */
+    private Pacing pacing(boolean upward, Runnable wake, long now) {
+        if (shaping == null) {
+            return new Unpaced();
+        }
+        return upward ? new LiveShaping(shaping, shaping.up(), source, target, key.from(), key.to(), wake, now)
+                : new LiveShaping(shaping, shaping.down(), target, source, key.to(), key.from(), wake, now);
+    }
+
+    private static void closeIfMade(Pacing pacing) {
         if (pacing != null) {
             pacing.close();
         }
-    }
-
-    /** A direction's pacing: at once, or as the pair's live condition that way says. */
-    private Pacing pacing(LiveCondition condition, SocketChannel in, SocketChannel out, String from, String to, Runnable wake,
-            long now) {
-        return shaping == null ? new Unpaced() : new LiveShaping(shaping, condition, in, out, from, to, wake, now);
     }
 
     @Override

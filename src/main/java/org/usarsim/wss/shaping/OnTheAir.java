@@ -129,6 +129,11 @@ final class OnTheAir {
         arrived |= granted == queue.received();
     }
 
+    /** Takes the time: grants asked while it is this direction's turn, what fell due marked. */
+    void step(long nowNs) {
+        pump(nowNs);
+    }
+
     /** The offset in the queue's stream up to which its bytes may be written at {@code nowNs}. */
     long released(long nowNs) {
         pump(nowNs);

@@ -139,7 +139,7 @@ public final class ShapedFlow implements Pacing {
             air.arriving();
             queue.add(bytes);
         }
-        air.released(nowNs);
+        air.step(nowNs);
     }
 
     /** How many bytes may be written at {@code nowNs}. */
@@ -175,5 +175,4 @@ public final class ShapedFlow implements Pacing {
     public void close() {
         air.close();
     }
-
 }

@@ -439,43 +439,52 @@ public final class RelayBenchmark {
 
     /**
      * One stream and 8 streams through one WSS port, each run through direct loopback, socat and
-     * this build, and (with {@code baseline}) a build from before the per-link statistics, the
-     * two builds alternating which goes first; the ratio this/before is taken per run.
+     * this build, and (with {@code baseline}) a build from before a change (the per-link statistics,
+     * the one forwarding loop), the two builds alternating which goes first; the ratio this/before
+     * is taken per run, of the throughput and of the server's CPU per GB (which a loaded machine
+     * moves less than the throughput).
      */
     private void counting(String baseline) throws Exception {
-        System.out.printf("%n## Per-link counting: throughput against %s (iperf3, %d s, %d runs)%n%n",
-                baseline == null ? "socat and direct" : "the build before it (" + baseline + "), socat and direct", seconds, runs);
+        System.out.printf("%n## Per-link counting: throughput against %s (iperf3, %d s, %d runs; load average %s)%n%n",
+                baseline == null ? "socat and direct" : "the build before it (" + baseline + "), socat and direct", seconds, runs,
+                loadAverage());
         try (WssProcess now = WssProcess.start(); WssProcess before = baseline == null ? null : WssProcess.startFrom(baseline)) {
             iperfThroughWss(now, 8); // unmeasured: both servers warm
             if (before != null) {
                 iperfThroughWss(before, 8);
             }
-            System.out.println("| links at once | direct MB/s | socat -b 65536 MB/s | WSS before MB/s | WSS counting MB/s "
-                    + "| counting/before per run | counting/before (median) | counting vs socat | counting vs direct |");
-            System.out.println("|---|---|---|---|---|---|---|---|---|");
+            System.out.println("| links at once | direct MB/s | socat -b 65536 MB/s | WSS before MB/s | WSS now MB/s "
+                    + "| now/before per run | now/before (median) | server CPU s per GB, before / now (median) "
+                    + "| CPU per GB now/before (median) | now vs socat | now vs direct |");
+            System.out.println("|---|---|---|---|---|---|---|---|---|---|---|");
             for (int streams : new int[] {1, 8}) {
                 double[] direct = new double[runs];
                 double[] socat = new double[runs];
-                double[] beforeRuns = new double[runs];
-                double[] nowRuns = new double[runs];
+                Measured[] beforeRuns = new Measured[runs];
+                Measured[] nowRuns = new Measured[runs];
                 double[] ratios = new double[runs];
+                double[] cpuRatios = new double[runs];
                 for (int run = 0; run < runs; run++) {
                     direct[run] = iperfDirect(streams);
                     socat[run] = iperfThroughSocat(65536, streams);
                     if (before != null && run % 2 == 1) {
-                        beforeRuns[run] = iperfThroughWss(before, streams);
+                        beforeRuns[run] = measuredThroughWss(before, streams);
                     }
-                    nowRuns[run] = iperfThroughWss(now, streams);
+                    nowRuns[run] = measuredThroughWss(now, streams);
                     if (before != null && run % 2 == 0) {
-                        beforeRuns[run] = iperfThroughWss(before, streams);
+                        beforeRuns[run] = measuredThroughWss(before, streams);
                     }
-                    ratios[run] = before == null ? Double.NaN : nowRuns[run] / beforeRuns[run];
+                    ratios[run] = before == null ? Double.NaN : nowRuns[run].mbPerSecond() / beforeRuns[run].mbPerSecond();
+                    cpuRatios[run] = before == null ? Double.NaN : nowRuns[run].cpuPerGb() / beforeRuns[run].cpuPerGb();
                 }
-                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %.0f | %.0f | %s | **%.2fx** | %.2fx | %.2fx |%n", streams,
-                        median(direct), median(socat), median(beforeRuns), median(nowRuns), ratios(ratios), median(ratios),
-                        median(nowRuns) / median(socat), median(nowRuns) / median(direct));
+                double nowMb = median(Measured.mbPerSecond(nowRuns));
+                System.out.printf(Locale.ROOT, "| %d | %.0f | %.0f | %.0f | %.0f | %s | **%.2fx** | %.3f / %.3f | %.2fx | %.2fx | %.2fx |%n",
+                        streams, median(direct), median(socat), before == null ? Double.NaN : median(Measured.mbPerSecond(beforeRuns)),
+                        nowMb, ratios(ratios), median(ratios), before == null ? Double.NaN : median(Measured.cpuPerGb(beforeRuns)),
+                        median(Measured.cpuPerGb(nowRuns)), median(cpuRatios), nowMb / median(socat), nowMb / median(direct));
             }
         }
+        System.out.printf("%nLoad average after: %s%n", loadAverage());
     }
 
     private static String ratios(double[] ratios) {

@@ -8,7 +8,6 @@ import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.channels.Channels;
-import java.nio.channels.WritableByteChannel;
 import java.util.Random;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -245,7 +244,7 @@ class ShapedFlowTest {
     }
 
     /** A target that takes everything. */
-    private static final class Sink implements java.nio.channels.WritableByteChannel {
+    private static final class Sink implements OpenTarget {
         long bytes;
 
         @Override
@@ -254,15 +253,6 @@ class ShapedFlowTest {
             buffer.position(buffer.limit());
             bytes += count;
             return count;
-        }
-
-        @Override
-        public boolean isOpen() {
-            return true;
-        }
-
-        @Override
-        public void close() {
         }
     }
 
@@ -333,19 +323,10 @@ class ShapedFlowTest {
     }
 
     /** A target that must not be written to. */
-    private static final class Refusing implements WritableByteChannel {
+    private static final class Refusing implements OpenTarget {
         @Override
         public int write(ByteBuffer bytes) {
             throw new AssertionError("written to");
-        }
-
-        @Override
-        public boolean isOpen() {
-            return true;
-        }
-
-        @Override
-        public void close() {
         }
     }
 }

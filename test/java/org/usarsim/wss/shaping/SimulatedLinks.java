@@ -2,7 +2,6 @@ package org.usarsim.wss.shaping;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
-import java.nio.channels.WritableByteChannel;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
@@ -25,7 +24,7 @@ final class SimulatedLinks {
     }
 
     /** One direction: its flow, what feeds it, and the target's count and checks. */
-    final class Lane implements WritableByteChannel {
+    final class Lane implements OpenTarget {
         final ShapedFlow flow;
         final Source source;
         final Random sizes;
@@ -89,15 +88,6 @@ final class SimulatedLinks {
                 acceptable -= count;
             }
             return count;
-        }
-
-        @Override
-        public boolean isOpen() {
-            return true;
-        }
-
-        @Override
-        public void close() {
         }
     }
 

@@ -38,7 +38,8 @@ public final class DatagramFlow<T> {
     private final Airtime.Hop hop;
     private final SplittableRandom random;
     private long bitsPerSecond;
-    private int delayMs;
+    /** The stage after the air: a datagram is due when it is off the air plus the delay. */
+    private final Delay delay = new Delay(0);
     private double lossPercent;
     private final ArrayDeque<Datagram<T>> queue = new ArrayDeque<>();
     private long queuedBytes;
@@ -62,7 +63,7 @@ public final class DatagramFlow<T> {
     /** The pair's rate (0: unshaped), delay and loss percent from now on, for the datagrams not yet on the air. */
     public void setConditions(long bitsPerSecond, int delayMs, double lossPercent) {
         this.bitsPerSecond = bitsPerSecond;
-        this.delayMs = delayMs;
+        this.delay.set(delayMs);
         this.lossPercent = lossPercent;
     }
 
@@ -89,7 +90,7 @@ public final class DatagramFlow<T> {
 
     /** Books the airtime of the queue's head datagrams while the last booked one starts within the lookahead. */
     private void book(long nowNs) {
-        while (!queue.isEmpty() && (!anyBooked || lastStartNs - (nowNs + ShapedFlow.LOOKAHEAD_NS) <= 0)) {
+        while (!queue.isEmpty() && (!anyBooked || lastStartNs - (nowNs + OnTheAir.LOOKAHEAD_NS) <= 0)) {
             if (bitsPerSecond <= 0) {
                 Datagram<T> datagram = queue.poll();
                 queuedBytes -= datagram.data().length;
@@ -115,7 +116,7 @@ public final class DatagramFlow<T> {
             if (lossPercent > 0 && random.nextDouble() * 100 < lossPercent) {
                 lost++;
             } else {
-                onTheWay.add(new Pending<>(datagram, end + delayMs * 1_000_000L));
+                onTheWay.add(new Pending<>(datagram, delay.dueAt(end)));
             }
         }
     }
@@ -142,7 +143,7 @@ public final class DatagramFlow<T> {
             next = Math.max(0, onTheWay.peek().dueNs() - nowNs);
         }
         if (!queue.isEmpty()) {
-            next = Math.min(next, Math.max(0, lastStartNs - ShapedFlow.LOOKAHEAD_NS - nowNs));
+            next = Math.min(next, Math.max(0, lastStartNs - OnTheAir.LOOKAHEAD_NS - nowNs));
         }
         return next;
     }

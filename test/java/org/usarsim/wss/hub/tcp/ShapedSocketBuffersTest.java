@@ -14,22 +14,22 @@ class ShapedSocketBuffersTest {
 
     @Test
     void aSlowLinkAcrossANetworkGetsAFewSegmentsNotHalfASecond() {
-        assertEquals(8 * 1024, ShapedForwarding.socketBuffer(1_000_000, false));
-        assertEquals(8 * 1024, ShapedForwarding.socketBuffer(1, false));
-        assertEquals(15_000, ShapedForwarding.socketBuffer(6_000_000, false)); // 20 ms at 6 Mbit/s
+        assertEquals(8 * 1024, LiveShaping.socketBuffer(1_000_000, false));
+        assertEquals(8 * 1024, LiveShaping.socketBuffer(1, false));
+        assertEquals(15_000, LiveShaping.socketBuffer(6_000_000, false)); // 20 ms at 6 Mbit/s
     }
 
     @Test
     void aRobotOnThisMachineKeepsTheLoopbacksFloor() {
-        assertEquals(64 * 1024, ShapedForwarding.socketBuffer(1_000_000, true));
-        assertEquals(64 * 1024, ShapedForwarding.socketBuffer(6_000_000, true));
+        assertEquals(64 * 1024, LiveShaping.socketBuffer(1_000_000, true));
+        assertEquals(64 * 1024, LiveShaping.socketBuffer(6_000_000, true));
     }
 
     @Test
     void aFastLinkGetsTwentyMillisecondsAtItsRateWhereverTheRobotIs() {
-        assertEquals(135_000, ShapedForwarding.socketBuffer(54_000_000, false));
-        assertEquals(135_000, ShapedForwarding.socketBuffer(54_000_000, true));
-        assertEquals(1 << 22, ShapedForwarding.socketBuffer(100_000_000_000L, false)); // at most 4 MiB
+        assertEquals(135_000, LiveShaping.socketBuffer(54_000_000, false));
+        assertEquals(135_000, LiveShaping.socketBuffer(54_000_000, true));
+        assertEquals(1 << 22, LiveShaping.socketBuffer(100_000_000_000L, false)); // at most 4 MiB
     }
 
     @Test
@@ -37,8 +37,8 @@ class ShapedSocketBuffersTest {
         try (ServerSocketChannel server = ServerSocketChannel.open()) {
             server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
             try (SocketChannel client = SocketChannel.open(server.getLocalAddress()); SocketChannel accepted = server.accept()) {
-                assertTrue(ShapedForwarding.onThisMachine(accepted));
-                assertTrue(ShapedForwarding.onThisMachine(client));
+                assertTrue(LiveShaping.onThisMachine(accepted));
+                assertTrue(LiveShaping.onThisMachine(client));
             }
         }
     }

@@ -16,16 +16,19 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.CloseReason;
 import org.usarsim.wss.hub.core.Connection;
+import org.usarsim.wss.hub.core.HubClock;
 import org.usarsim.wss.hub.core.PairStats;
 import org.usarsim.wss.hub.core.PortKey;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.shaping.Pacing;
+import org.usarsim.wss.shaping.Unpaced;
 
 /**
  * One forwarded connection: the socket a source robot opened on a WSS port, and the socket the
  * WSS opens to the target robot. Its own thread connects to the target, then runs the
- * forwarding loop ({@link UnshapedForwarding}, or {@link ShapedForwarding} with links shaped)
- * until the link closes, and tells the hub it ended. End of stream or a reset on either side
+ * forwarding loop ({@link Forwarding}: each direction {@link Unpaced}, or {@link LiveShaping} with
+ * links shaped) until the link closes, and tells the hub it ended. End of stream or a reset on either side
  * stops reading and ends both streams once what was read is written ({@link Forwarding#finish});
  * a side that cannot be written to any more closes both at once.
  */
@@ -52,6 +55,8 @@ public final class Link implements Runnable, Connection {
     private final PairStats stats;
     /** With links shaped: how; null forwards as fast as the machine goes (wss.shaping = off). */
     private final Shaping shaping;
+    /** The hub's clock: the shaped directions' time, and the wait for both streams' ends. */
+    private final HubClock clock;
     /** Why the link closes: the first reason given wins. */
     private final AtomicReference<CloseReason> closeReason = new AtomicReference<>();
     /** Set once the connection to the target is made (what the window lists as established). */
@@ -59,9 +64,10 @@ public final class Link implements Runnable, Connection {
 
     /** Binds the outgoing socket at once, so that REVERSEDNS knows its port before the target can ask. */
     public Link(LinkHub hub, WssPort port, SocketChannel source, InetSocketAddress targetAddress, int chunkSize,
-            SocketBuffers buffers, WssEventListener events, PairStats stats, Shaping shaping) throws IOException {
+            SocketBuffers buffers, WssEventListener events, PairStats stats, HubClock clock, Shaping shaping) throws IOException {
         this.hub = hub;
         this.shaping = shaping;
+        this.clock = clock;
         this.stats = stats;
         this.port = port;
         this.key = port.key;
@@ -206,18 +212,45 @@ public final class Link implements Runnable, Connection {
     private void forward() throws IOException {
         for (SocketChannel channel : new SocketChannel[] {source, target}) {
             if (shaping == null) {
-                buffers.apply(channel); // a shaped link sizes them by its rate before it reads (ShapedForwarding)
+                buffers.apply(channel); // a shaped link sizes them by its rate before it reads (LiveShaping)
             }
             channel.setOption(StandardSocketOptions.TCP_NODELAY, true);
             // A robot that vanishes (crash, network gone) never closes its end: keepalive finds it.
             hub.keepAlive().apply(channel);
             channel.configureBlocking(false);
         }
-        Direction up = new Direction(this, source, target, key.from(), key.to(), chunkSize, stats, events);
-        Direction down = new Direction(this, target, source, key.to(), key.from(), chunkSize, stats, events);
-        Forwarding loop = shaping == null ? new UnshapedForwarding(this, selector, up, down)
-                : new ShapedForwarding(this, selector, up, down, shaping);
-        loop.forward();
+        Runnable wake = selector::wakeup; // the one instance each shaped direction watches and unwatches
+        long now = clock.nanoTime();
+        Pacing upPacing = null;
+        Pacing downPacing = null;
+        try {
+            upPacing = pacing(true, wake, now);
+            downPacing = pacing(false, wake, now);
+            Direction up = new Direction(this, source, target, key.from(), key.to(), chunkSize, stats, events, upPacing);
+            Direction down = new Direction(this, target, source, key.to(), key.from(), chunkSize, stats, events, downPacing);
+            new Forwarding(this, selector, clock, up, down).forward();
+        } finally {
+            closeIfMade(upPacing);
+            closeIfMade(downPacing);
+        }
+    }
+
+    /**
+     * The pacing of the direction from the source to the target ({@code upward}) or back: at
+     * once, or as the pair's live condition that way says.
+     */
+    private Pacing pacing(boolean upward, Runnable wake, long now) {
+        if (shaping == null) {
+            return new Unpaced();
+        }
+        return upward ? new LiveShaping(shaping, shaping.up(), source, target, key.from(), key.to(), wake, now)
+                : new LiveShaping(shaping, shaping.down(), target, source, key.to(), key.from(), wake, now);
+    }
+
+    private static void closeIfMade(Pacing pacing) {
+        if (pacing != null) {
+            pacing.close();
+        }
     }
 
     @Override

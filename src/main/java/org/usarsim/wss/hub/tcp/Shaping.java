@@ -1,14 +1,13 @@
 package org.usarsim.wss.hub.tcp;
 
-import java.util.function.LongSupplier;
 import org.usarsim.wss.hub.core.LiveCondition;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
  * What a shaped link forwards by (docs/shaping.md): its pair's live condition each way (the
  * core's one value per ordered pair, {@code up} from the port's source to its target), the
- * robots' radios, the clock, and each direction's queue ({@code wss.shaping.queueMs}).
+ * robots' radios, and each direction's queue ({@code wss.shaping.queueMs}). The time is the
+ * link's clock, the hub's.
  */
-public record Shaping(Airtime airtime, LiveCondition up, LiveCondition down,
-        LongSupplier clock, int queueMs) {
+public record Shaping(Airtime airtime, LiveCondition up, LiveCondition down, int queueMs) {
 }

@@ -92,7 +92,7 @@ class EventLogTest {
     @Test
     void theFilesNameAndEveryLinesTimeComeFromTheHubsClock() throws Exception {
         ManualHubClock clock = new ManualHubClock();
-        ZonedDateTime start = Instant.ofEpochMilli(clock.currentTimeMillis()).atZone(ZoneId.systemDefault());
+        ZonedDateTime start = Instant.ofEpochMilli(clock.wallMillis()).atZone(ZoneId.systemDefault());
         CsvEventLog log = CsvEventLog.create(dir, clock);
         assertEquals("log-" + DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss.SSS").format(start) + ".txt",
                 log.file().getFileName().toString());

@@ -50,7 +50,7 @@ public final class ManualHubClock implements HubClock {
     }
 
     @Override
-    public long currentTimeMillis() {
+    public long wallMillis() {
         return millis;
     }
 

@@ -77,7 +77,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
             @Override
             public void dropped(StringBuilder text, long count) {
-                format(text, "DROPPED", clock.currentTimeMillis(), count);
+                format(text, "DROPPED", clock.wallMillis(), count);
             }
         });
     }
@@ -90,7 +90,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     /** Creates a new log file in the directory (created if missing), named by the time now; its times are the hub's {@code clock}'s. */
     public static CsvEventLog create(Path directory, HubClock clock) throws IOException {
         Files.createDirectories(directory);
-        LocalDateTime now = LocalDateTime.ofInstant(Instant.ofEpochMilli(clock.currentTimeMillis()), ZoneId.systemDefault());
+        LocalDateTime now = LocalDateTime.ofInstant(Instant.ofEpochMilli(clock.wallMillis()), ZoneId.systemDefault());
         Path file = directory.resolve("log-" + FILE_TIME.format(now) + ".txt");
         BufferedWriter out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
         LOG.info("writing the event log to " + file.toAbsolutePath());
@@ -104,7 +104,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     /** Any thread: queues the event, or counts it as dropped when the writer is too far behind. Never waits. */
     private void event(String type, Object... fields) {
         if (writer.open()) {
-            writer.offer(new Line(type, clock.currentTimeMillis(), fields));
+            writer.offer(new Line(type, clock.wallMillis(), fields));
         }
     }
 
@@ -196,7 +196,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
 
     @Override
     public void dataSent(String from, String to, int bytes) {
-        writer.offer(new DataSent(from, to, bytes, clock.currentTimeMillis()));
+        writer.offer(new DataSent(from, to, bytes, clock.wallMillis()));
     }
 
     @Override

@@ -1,5 +1,6 @@
 package org.usarsim.wss.shaping;
 
+import org.usarsim.wss.Decimals;
 import java.math.BigDecimal;
 import java.math.BigInteger;
 import java.util.regex.Matcher;
@@ -96,7 +97,7 @@ public final class Bitrate {
     }
 
     private static String plain(BigDecimal number) {
-        return number.stripTrailingZeros().toPlainString();
+        return Decimals.plain(number);
     }
 
     /**

@@ -1,5 +1,6 @@
 package org.usarsim.wss.shaping;
 
+import org.usarsim.wss.Decimals;
 import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
@@ -93,7 +94,7 @@ public final class LossTable {
     }
 
     private static String plain(double value) {
-        return BigDecimal.valueOf(value).stripTrailingZeros().toPlainString();
+        return Decimals.plain(BigDecimal.valueOf(value));
     }
 
     @Override

@@ -1,5 +1,6 @@
 package org.usarsim.wss.shaping;
 
+import org.usarsim.wss.Decimals;
 import java.math.BigDecimal;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,7 +20,7 @@ public final class RateTable {
     private record Step(double dBm, long bitsPerSecond) {
         @Override
         public String toString() {
-            return BigDecimal.valueOf(dBm).stripTrailingZeros().toPlainString() + ":" + Bitrate.toText(bitsPerSecond);
+            return Decimals.plain(BigDecimal.valueOf(dBm)) + ":" + Bitrate.toText(bitsPerSecond);
         }
     }
 

@@ -1,5 +1,6 @@
 package org.usarsim.wss.world;
 
+import org.usarsim.wss.Decimals;
 import java.math.BigDecimal;
 import java.math.MathContext;
 import java.util.ArrayList;
@@ -100,7 +101,7 @@ final class Fragments {
         for (int digits = 1; digits <= 17; digits++) {
             BigDecimal shortest = exact.round(new MathContext(digits));
             if (shortest.doubleValue() == value) {
-                String plain = shortest.stripTrailingZeros().toPlainString();
+                String plain = Decimals.plain(shortest);
                 return plain.contains(".") ? plain : plain + ".0";
             }
         }

@@ -1,5 +1,6 @@
 package org.usarsim.wss.world;
 
+import org.usarsim.wss.Decimals;
 import java.io.IOException;
 import java.math.BigDecimal;
 import java.net.InetAddress;
@@ -60,7 +61,7 @@ public final class RosbridgeServer implements AutoCloseable {
         RosGraph graph = new RosGraph(world.robotNames(), rateHz, connectionDelay.toNanos());
         RosbridgeServer server = new RosbridgeServer(world, graph, new InetSocketAddress(address, port));
         LOG.info("rosbridge v2 on ws://" + address.getHostAddress() + ":" + server.port() + ": " + String.join(", ",
-                graph.topics().subList(0, 4)) + " and /NAME/odom, at " + BigDecimal.valueOf(rateHz).stripTrailingZeros().toPlainString()
+                graph.topics().subList(0, 4)) + " and /NAME/odom, at " + Decimals.plain(BigDecimal.valueOf(rateHz))
                 + " Hz");
         return server;
     }

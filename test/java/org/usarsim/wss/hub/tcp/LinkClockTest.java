@@ -105,7 +105,7 @@ class LinkClockTest {
         }
 
         @Override
-        public long currentTimeMillis() {
+        public long wallMillis() {
             return readings.incrementAndGet() * 20_000L;
         }
     }

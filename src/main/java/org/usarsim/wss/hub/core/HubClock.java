@@ -11,7 +11,7 @@ public interface HubClock {
     long nanoTime();
 
     /** The wall clock in milliseconds since the epoch, as {@link System#currentTimeMillis()}: for what a log line says. */
-    long currentTimeMillis();
+    long wallMillis();
 
     /**
      * How long a thread that waits for this clock to move {@code clockNs} on sleeps (by the
@@ -31,7 +31,7 @@ public interface HubClock {
         }
 
         @Override
-        public long currentTimeMillis() {
+        public long wallMillis() {
             return System.currentTimeMillis();
         }
     };

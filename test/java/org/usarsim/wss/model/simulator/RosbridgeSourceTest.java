@@ -295,6 +295,20 @@ class RosbridgeSourceTest {
     }
 
     @Test
+    void aLatchedTfStaticIsNoSignOfLifeTheGraceGoesOnUntilTfSends() throws Exception {
+        // Found against the real rosbridge (RealRosbridgeCheck, scenario 3): tf_static comes at once, the robots' /tf 1.5 s later.
+        RosbridgeSource source = source(Map.of("rosbridge.topic", "/tf", "rosbridge.frame", "map", "rosbridge.grace", "5000"));
+        source.received(frames("ros2", "tf_static.jsonl").get(0));
+        clock.advance(1_500 * MS);
+        assertNull(source.positions(List.of("Scout")), "1.5 s after the open, only the latched message: not silent, nothing listed");
+        frames("ros2", "tf.jsonl").forEach(source::received);
+        assertEquals(0.9, source.positions(List.of("Scout")).get("Scout").x(), 1e-9);
+        clock.advance(601 * MS);
+        source.received(frames("ros2", "tf_static.jsonl").get(0)); // a reconnection's latched message again
+        assertThrows(IOException.class, () -> source.positions(List.of("Scout")), "/tf quiet for the stale limit: silent, whatever tf_static");
+    }
+
+    @Test
     void onlyUnreadableMessagesAreSilenceNotEmptinessNobodyUnlisted() throws Exception {
         RosbridgeSource source = source(Map.of("rosbridge.topic", "/tf")); // stale 600 ms
         source.received(tf(100, "A", "B"));

@@ -60,12 +60,16 @@ final class PoseTable {
     /**
      * Takes one readable message's poses, by WSS name (a source name that is no WSS robot already
      * left out). {@code wholeList}: the message lists every model ({@code ModelStates}), so one it
-     * does not list is gone at once.
+     * does not list is gone at once. {@code live}: the message came on a topic that publishes
+     * on, a sign of life; a latched one's ({@code /tf_static}, sent once to each subscriber, again
+     * after each reconnection) is not, and its poses are kept all the same.
      */
-    void took(Map<String, RobotPose> poses, boolean wholeList, long now) {
-        posesCame = true;
-        lastPoses = now;
-        unreadable = 0;
+    void took(Map<String, RobotPose> poses, boolean wholeList, boolean live, long now) {
+        if (live) {
+            posesCame = true;
+            lastPoses = now;
+            unreadable = 0;
+        }
         if (wholeList) {
             latest.clear();
         }

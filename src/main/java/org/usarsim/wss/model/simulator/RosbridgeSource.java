@@ -254,7 +254,7 @@ final class RosbridgeSource implements PositionSource {
             return;
         }
         synchronized (this) {
-            table.took(poses, config.type() == MessageType.MODEL_STATES, now);
+            table.took(poses, config.type() == MessageType.MODEL_STATES, !topics.latched(frame.topic()), now);
         }
     }
 

@@ -90,6 +90,12 @@ final class TopicRequests {
         return true;
     }
 
+    /** Whether a topic is a latched one this connection subscribed to. */
+    boolean latched(String topic) {
+        Topic subscribed = topics.get(topic);
+        return subscribed != null && subscribed.latched();
+    }
+
     /** A message came on a topic. */
     void came(String topic) {
         waiting.remove(topic);

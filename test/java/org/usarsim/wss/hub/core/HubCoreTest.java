@@ -79,6 +79,25 @@ class HubCoreTest {
                 core.admit(port, port.epoch(), LOOPBACK, false, now, new Changes()).refusal(), "the model's answer counts");
     }
 
+    /**
+     * Issue 36, item 10: a poll that finds the pair broken again while the connections the break
+     * closed are still ending changes nothing, so the model tells no second break (the recording
+     * had two {@code break} lines where the log said "broken" once).
+     */
+    @Test
+    void aBreakAgainWhileTheBrokenLinksStillEndChangesNothing() {
+        WssPort port = registeredPort();
+        FakeConnection link = new FakeConnection(50001);
+        assertNull(core.commit(port, port.epoch(), LOOPBACK, true, link));
+        assertTrue(core.breakPair(AB, now, new Changes()));
+        assertTrue(port.hasLinks(), "the link the break closed has not ended yet");
+
+        Changes again = new Changes();
+        assertFalse(core.breakPair(AB, now, again), "nothing changed: the pair was broken, its port stopped, its link told");
+        assertTrue(again.events().isEmpty(), again.events().toString());
+        assertTrue(again.portActions().isEmpty());
+    }
+
     @Test
     void aForceWinsOverTheModelAndItsReleaseGivesThePairBack() {
         WssPort port = registeredPort();

@@ -325,13 +325,16 @@ public final class HubCore {
     }
     // ---- the model's verdicts ----
 
-    /** The model broke the pair. @return whether anything changed (the pair, a port, a connection) */
+    /**
+     * The model broke the pair. @return whether anything changed (the pair, a port). The links a
+     * break closes are those of a pair that was not broken: a pair broken again (the next poll)
+     * while they still end is no change (issue 36, item 10: it was told, and recorded, twice).
+     */
     public boolean breakPair(RobotPair pair, long nowNs, Changes out) {
         boolean changed = pairs.broke(pair, nowNs, out);
         // Forced up: the break is only remembered, for the release.
         for (WssPort port : pairs.forced(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
             changed |= listening.stopListening(port, out);
-            changed |= port.hasLinks();
             out.close(port.links(), CloseReason.OUT_OF_RANGE);
         }
         return changed;

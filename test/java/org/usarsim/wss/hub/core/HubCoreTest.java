@@ -98,6 +98,25 @@ class HubCoreTest {
         assertTrue(again.portActions().isEmpty());
     }
 
+    /**
+     * Issue 36, item 13: the stop says every connection terminated and every robot deregistered,
+     * itself, so that they come before the hub's "WSS stopped"; a link that ends later says nothing.
+     */
+    @Test
+    void theStopTerminatesTheConnectionsAndDeregistersEveryRobot() {
+        WssPort port = registeredPort();
+        FakeConnection link = new FakeConnection(50001);
+        assertNull(core.commit(port, port.epoch(), LOOPBACK, true, link));
+        Changes stopped = new Changes();
+        core.close(stopped);
+        assertEquals(List.of(new HubEvent.Terminated(port.key), new HubEvent.Deregistered("A"), new HubEvent.Deregistered("B")),
+                stopped.events().stream().filter(e -> e instanceof HubEvent.Terminated || e instanceof HubEvent.Deregistered).toList());
+        assertEquals(List.of(new Changes.Close(link, CloseReason.SERVER_STOPPED)), stopped.closes());
+        Changes ended = new Changes();
+        core.linkEnded(port, link, true, now, ended);
+        assertTrue(ended.events().stream().noneMatch(e -> e instanceof HubEvent.Terminated), "said once, at the stop");
+    }
+
     @Test
     void aForceWinsOverTheModelAndItsReleaseGivesThePairBack() {
         WssPort port = registeredPort();

@@ -300,7 +300,7 @@ public final class HubCore {
      */
     public void linkEnded(WssPort port, Connection link, boolean wasEstablished, long nowNs, Changes out) {
         port.removeLink(link);
-        if (wasEstablished) {
+        if (wasEstablished && !closed) { // closed: said by close
             out.add(new HubEvent.Terminated(port.key));
         }
         forgetting.linkEnded(port, nowNs, out);
@@ -393,12 +393,24 @@ public final class HubCore {
 
     // ---- the end ----
 
-    /** The hub stops: every port is given back and every connection closed. */
+    /**
+     * The hub stops: every port is given back, every connection closed and said terminated, then
+     * every robot deregistered, all here, so that they are told before the hub says it stopped
+     * (issue 36, item 13); a link that ends after this says nothing more ({@link #linkEnded}).
+     */
     public void close(Changes out) {
         closed = true;
         for (WssPort port : ports.all()) {
             PortForgetting.giveBack(port, out);
+            for (Connection link : port.links()) {
+                if (link.isEstablished()) {
+                    out.add(new HubEvent.Terminated(port.key));
+                }
+            }
             out.close(port.links(), CloseReason.SERVER_STOPPED);
+        }
+        for (String name : new java.util.TreeSet<>(robots.keySet())) {
+            out.add(new HubEvent.Deregistered(name));
         }
         ports.clear();
         robots.clear();

@@ -109,6 +109,8 @@ class RecorderTest {
         Path file = dir.resolve("run.rec");
         Recorder recorder = recorder(file);
         assertEquals(file, recorder.file());
+        assertTrue(logged.isEmpty(), "said once the run has started, not before: " + logged);
+        recorder.started();
         assertTrue(logged.contains("INFO recording the run to " + file.toAbsolutePath()), logged.toString());
         at(0);
         recorder.robotRegistered("Alpha", "127.0.0.1", List.of(5000));
@@ -224,11 +226,27 @@ class RecorderTest {
         return text.toString(StandardCharsets.UTF_8);
     }
 
+    /** Issue 36, item 9: a run that did not start leaves no recording and says none. */
+    @Test
+    void aDiscardedRecordingLeavesNoFileAndNeverSaidWhereItRecorded() throws Exception {
+        Path kept = Files.writeString(dir.resolve("run.rec"), "keep me\n");
+        Recorder recorder = recorder(kept);
+        recorder.robotRegistered("Alpha", "127.0.0.1", List.of(5000));
+        assertTrue(Files.exists(recorder.file()));
+        recorder.discard();
+        assertFalse(Files.exists(recorder.file()), "the new file is deleted");
+        assertEquals("keep me\n", Files.readString(kept), "the one asked for, which existed, is kept");
+        assertEquals(List.of(), logged);
+        recorder.robotRegistered("Bravo", "127.0.0.1", List.of(5000));
+        assertFalse(Files.exists(recorder.file()), "nothing written after");
+    }
+
     @Test
     void neverOverwritesAFileTheNewOneGetsTheStartTimeInItsName() throws Exception {
         Path file = Files.writeString(dir.resolve("run.rec"), "keep me\n");
         String time = DateTimeFormatter.ofPattern("yyyy.MM.dd-HH.mm.ss").format(STARTED.atZone(ZoneId.systemDefault()));
         Recorder first = recorder(file);
+        first.started();
         first.close();
         Recorder second = recorder(file);
         second.close();

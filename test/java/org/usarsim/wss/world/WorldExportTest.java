@@ -151,6 +151,18 @@ class WorldExportTest {
         assertEquals(2, run.exitCode());
         assertEquals(List.of("wss: " + dir.resolve("absent.rec") + ": no such file"), run.stderr().lines().toList());
 
+        // Issue 36, item 12: a header only (a run of a model without a simulator) is refused as the replay refuses it.
+        StringBuilder headerOnly = new StringBuilder();
+        EntryLines.header(headerOnly, new Header(EntryLines.VERSION, "0.1.0-TEST", "2026-11-25T14:30:00.123Z", "NoopPropagationModel",
+                Map.of()));
+        EntryLines.write(headerOnly, new Entry.End(14));
+        Path noPoll = Files.writeString(dir.resolve("nopoll.rec"), headerOnly, StandardCharsets.UTF_8);
+        run = MainRun.of("--export-world", noPoll.toString(), "--out", dir.resolve("nopoll.world").toString());
+        assertEquals(2, run.exitCode(), "bad input");
+        assertEquals(List.of("wss: " + noPoll + " holds no poll (recorded with NoopPropagationModel): nothing to replay or export;"
+                + " a recording of a simulator model has one per poll interval"), run.stderr().lines().toList());
+        assertFalse(Files.exists(dir.resolve("nopoll.world")), "no world written");
+
         run = MainRun.of("--out", out.toString());
         assertEquals(2, run.exitCode());
         assertTrue(run.stderr().startsWith("wss: --out is where --export-world writes"), run.stderr());

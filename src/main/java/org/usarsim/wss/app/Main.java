@@ -53,8 +53,13 @@ public final class Main {
     private Main() {
     }
 
+    /**
+     * The process: {@link #run}, then exit with its code. The log is not handed back to
+     * java.util.logging's own two-line format when the run returns: a line written as the process
+     * ends keeps the server's one format (issue 36, item 13).
+     */
     public static void main(String[] args) {
-        System.exit(run(System.out, System.err, args));
+        System.exit(run(System.out, System.err, false, args));
     }
 
     /**
@@ -64,6 +69,11 @@ public final class Main {
      * signal handlers are put back as they were before it returns.
      */
     public static int run(PrintStream out, PrintStream err, String... args) {
+        return run(out, err, true, args);
+    }
+
+    /** As above; the root logger is put back as it was only when {@code restoreLogging}. */
+    private static int run(PrintStream out, PrintStream err, boolean restoreLogging, String... args) {
         LogSetup.Saved logging = LogSetup.save();
         try {
             return parseAndRun(out, err, args);
@@ -71,7 +81,9 @@ public final class Main {
             err.println("wss: " + e.getMessage());
             return e.code;
         } finally {
-            logging.restore();
+            if (restoreLogging) {
+                logging.restore();
+            }
         }
     }
 

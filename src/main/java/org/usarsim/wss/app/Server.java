@@ -102,7 +102,7 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog, recorder);
     }
 
-    /** A recording's settings: every setting the model declares with this run's value, then the five wss.shaping* keys. */
+    /** A recording's settings: every setting the model declares with this run's value, then the six wss.shaping* keys. */
     private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
@@ -113,6 +113,7 @@ final class Server implements AutoCloseable {
         settings.put(ShapingConfig.DELAY_MS, String.valueOf(shaping.delayMs()));
         settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
         settings.put(ShapingConfig.LOSS, shaping.loss().toString());
+        settings.put(ShapingConfig.QUEUE_MS, String.valueOf(shaping.queueMs()));
         return settings;
     }
 
@@ -137,37 +138,44 @@ final class Server implements AutoCloseable {
     }
 
     /**
-     * Binds the control port and starts the model (configured before). On failure nothing listens
-     * (the hub closes what it opened) and the event log and the recording are closed.
+     * Binds the control port and starts the model (configured before); once both are done, the log
+     * says where the run is recorded. On failure nothing listens (the hub closes what it opened),
+     * the event log is closed and the recording's file deleted: a run that did not start is not
+     * recorded (docs/replay.md, "The file").
      */
     void start() throws StartFailure {
         try {
             hub.start();
-            // A team must be able to tell from the log that wss.shaping took effect.
-            ShapingConfig shaping = config.shaping();
-            java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
-                    ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
-                            + (shaping.airtime() ? "shared" : "not shared") + ", queue " + shaping.queueMs() + " ms"
-                    : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
         } catch (IOException e) {
-            closeRecords();
+            endRecords(false);
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"
                     + config.controlPort() + ": " + e.getMessage());
         } catch (ModelStartException | RuntimeException e) {
-            closeRecords();
+            endRecords(false);
             throw new StartFailure(model.name() + " did not start: " + e.getMessage(), e instanceof ModelInputException);
         }
+        if (recorder != null) {
+            recorder.started();
+        }
+        // A team must be able to tell from the log that wss.shaping took effect.
+        ShapingConfig shaping = config.shaping();
+        java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
+                ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
+                        + (shaping.airtime() ? "shared" : "not shared") + ", queue " + shaping.queueMs() + " ms"
+                : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
     }
 
-    /** Closes the event log and the recording (what this run writes besides its sockets). */
-    private void closeRecords() {
+    /** Closes the event log and the recording (what this run writes besides its sockets); the recording's file is deleted unless {@code kept}. */
+    private void endRecords(boolean kept) {
         try {
             if (eventLog != null) {
                 eventLog.close();
             }
         } finally {
-            if (recorder != null) {
+            if (recorder != null && kept) {
                 recorder.close();
+            } else if (recorder != null) {
+                recorder.discard();
             }
         }
     }
@@ -183,7 +191,7 @@ final class Server implements AutoCloseable {
         try {
             hub.close();
         } finally {
-            closeRecords();
+            endRecords(true);
         }
     }
 }

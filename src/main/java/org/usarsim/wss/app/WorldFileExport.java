@@ -15,20 +15,23 @@ import org.usarsim.wss.recording.WorldExport;
 /**
  * {@code --export-world RUN.rec [--out FILE]}: the recording as a world file (docs/replay.md), to
  * standard output or to the file. A recording cut short, or with lines skipped, is exported all
- * the same, with a warning on standard error.
+ * the same, with a warning on standard error; one with no poll (no robot's position) is refused.
  */
 final class WorldFileExport {
 
     private WorldFileExport() {
     }
 
-    /** Writes the world file: {@link Main#OK}; a recording that cannot be read, or a file that cannot be written, is bad input. */
+    /**
+     * Writes the world file: {@link Main#OK}; a recording that cannot be read or holds no poll (refused
+     * as the replay refuses it), or a file that cannot be written, is bad input.
+     */
     static int run(PrintStream out, PrintStream err, Options.ExportWorld options) throws RunFailure {
         Path recordingFile = options.recording();
         Path to = options.out();
         Recording recording;
         try {
-            recording = RecordingReader.read(recordingFile);
+            recording = RecordingReader.readPolled(recordingFile);
         } catch (RecordingException e) {
             throw RunFailure.badInput(e.getMessage());
         }

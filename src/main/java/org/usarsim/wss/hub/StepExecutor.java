@@ -165,8 +165,17 @@ final class StepExecutor implements ChangeApplier.FollowUps {
         return given > 0;
     }
 
-    /** The end: the core closes, every port stops and every link closes. */
+    /**
+     * The end: the core closes, every port stops and every link closes; returns once every event
+     * so far is delivered (the robots deregistered, the connections terminated), even those another
+     * thread was delivering, so that the hub's last line comes after them.
+     */
     void close() {
         run((hub, now, out) -> hub.close(out));
+        long last;
+        synchronized (lock) {
+            last = outbox.append(List.of());
+        }
+        outbox.deliverThrough(last);
     }
 }

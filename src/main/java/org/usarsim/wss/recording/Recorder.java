@@ -60,6 +60,8 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     private final Path file;
+    /** The file asked for: {@link #file} unless that one existed. */
+    private final Path asked;
     private final LongSupplier nanos;
     private final long startNanos;
     private final AtomicInteger queuedPolls = new AtomicInteger();
@@ -72,7 +74,13 @@ public final class Recorder implements WssEventListener, AutoCloseable {
      * behind a queue of {@code capacity} events, its times from {@code nanos} (nanoseconds) from now on.
      */
     Recorder(Path file, Writer out, LongSupplier nanos, int capacity) {
+        this(file, file, out, nanos, capacity);
+    }
+
+    /** As above, {@code file} written where {@code asked} existed. */
+    private Recorder(Path file, Path asked, Writer out, LongSupplier nanos, int capacity) {
         this.file = file;
+        this.asked = asked;
         this.nanos = nanos;
         this.startNanos = nanos.getAsLong();
         this.writer = new QueuedWriter<>("wss-recorder", LOG, "the recording " + file, out, capacity, new QueuedWriter.Format<>() {
@@ -97,6 +105,8 @@ public final class Recorder implements WssEventListener, AutoCloseable {
      * Starts recording to {@code asked} (its folder created if missing; an existing file is kept and
      * the start time put in the new one's name, {@link #freeName}), gzip when its name ends in
      * {@code .gz}, with the header written: this WSS's version, the start, the model and the settings.
+     * Says nothing yet: {@link #started} says where once the run has started, {@link #discard} removes
+     * the file of a run that did not start.
      *
      * @throws IOException when the file cannot be created or written
      */
@@ -136,9 +146,26 @@ public final class Recorder implements WssEventListener, AutoCloseable {
             Files.deleteIfExists(file); // created here, and not a recording
             throw e;
         }
+        return new Recorder(file, asked, out, nanos, capacity);
+    }
+
+    /** The run started: the log says where it is recorded (and when the file asked for existed, that it is kept). */
+    public void started() {
         LOG.info("recording the run to " + file.toAbsolutePath()
                 + (file.equals(asked) ? "" : " (" + asked.getFileName() + " exists: it is kept)"));
-        return new Recorder(file, out, nanos, capacity);
+    }
+
+    /**
+     * The run did not start: closes the recording as {@link #close} does and deletes its file, which
+     * recorded no run (docs/replay.md, "The file"). A file that cannot be deleted is said.
+     */
+    public void discard() {
+        writer.close();
+        try {
+            Files.deleteIfExists(file);
+        } catch (IOException e) {
+            LOG.warning("the recording " + file + " of a run that did not start cannot be deleted: " + e);
+        }
     }
 
     /**

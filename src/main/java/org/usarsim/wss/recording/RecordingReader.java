@@ -57,6 +57,21 @@ public final class RecordingReader {
         return new RecordingReader(file).readAll();
     }
 
+    /**
+     * The recording in {@code file}, refused when it holds no poll (a run of a model with no
+     * simulator): what the replay and {@code --export-world} read, with the same words.
+     *
+     * @throws RecordingException as {@link #read}, and when it holds no poll
+     */
+    public static Recording readPolled(Path file) throws RecordingException {
+        Recording recording = read(file);
+        if (recording.polls().isEmpty()) {
+            throw new RecordingException(file + " holds no poll (recorded with " + recording.header().model()
+                    + "): nothing to replay or export; a recording of a simulator model has one per poll interval");
+        }
+        return recording;
+    }
+
     private Recording readAll() throws RecordingException {
         Bytes bytes;
         try {

@@ -95,15 +95,11 @@ public final class ReplayPropagationModel extends PollingModel {
         }
         Recording recording;
         try {
-            recording = RecordingReader.read(Path.of(file));
+            recording = RecordingReader.readPolled(Path.of(file));
         } catch (RecordingException e) {
             throw new ModelInputException(e.getMessage(), e);
         } catch (InvalidPathException e) {
             throw new ModelInputException("replay.file = '" + file + "' is not a path: " + e.getMessage(), e);
-        }
-        if (recording.polls().isEmpty()) {
-            throw new ModelInputException(file + " holds no poll (recorded with " + recording.header().model()
-                    + "): nothing to replay; a recording of a simulator model has one per poll interval");
         }
         long startMillis = Math.round(values.getDouble("replay.start", 0) * 1000);
         if (startMillis > recording.durationMillis()) {

@@ -79,6 +79,44 @@ class HubCoreTest {
                 core.admit(port, port.epoch(), LOOPBACK, false, now, new Changes()).refusal(), "the model's answer counts");
     }
 
+    /**
+     * Issue 36, item 10: a poll that finds the pair broken again while the connections the break
+     * closed are still ending changes nothing, so the model tells no second break (the recording
+     * had two {@code break} lines where the log said "broken" once).
+     */
+    @Test
+    void aBreakAgainWhileTheBrokenLinksStillEndChangesNothing() {
+        WssPort port = registeredPort();
+        FakeConnection link = new FakeConnection(50001);
+        assertNull(core.commit(port, port.epoch(), LOOPBACK, true, link));
+        assertTrue(core.breakPair(AB, now, new Changes()));
+        assertTrue(port.hasLinks(), "the link the break closed has not ended yet");
+
+        Changes again = new Changes();
+        assertFalse(core.breakPair(AB, now, again), "nothing changed: the pair was broken, its port stopped, its link told");
+        assertTrue(again.events().isEmpty(), again.events().toString());
+        assertTrue(again.portActions().isEmpty());
+    }
+
+    /**
+     * Issue 36, item 13: the stop says every connection terminated and every robot deregistered,
+     * itself, so that they come before the hub's "WSS stopped"; a link that ends later says nothing.
+     */
+    @Test
+    void theStopTerminatesTheConnectionsAndDeregistersEveryRobot() {
+        WssPort port = registeredPort();
+        FakeConnection link = new FakeConnection(50001);
+        assertNull(core.commit(port, port.epoch(), LOOPBACK, true, link));
+        Changes stopped = new Changes();
+        core.close(stopped);
+        assertEquals(List.of(new HubEvent.Terminated(port.key), new HubEvent.Deregistered("A"), new HubEvent.Deregistered("B")),
+                stopped.events().stream().filter(e -> e instanceof HubEvent.Terminated || e instanceof HubEvent.Deregistered).toList());
+        assertEquals(List.of(new Changes.Close(link, CloseReason.SERVER_STOPPED)), stopped.closes());
+        Changes ended = new Changes();
+        core.linkEnded(port, link, true, now, ended);
+        assertTrue(ended.events().stream().noneMatch(e -> e instanceof HubEvent.Terminated), "said once, at the stop");
+    }
+
     @Test
     void aForceWinsOverTheModelAndItsReleaseGivesThePairBack() {
         WssPort port = registeredPort();

@@ -300,7 +300,7 @@ public final class HubCore {
      */
     public void linkEnded(WssPort port, Connection link, boolean wasEstablished, long nowNs, Changes out) {
         port.removeLink(link);
-        if (wasEstablished) {
+        if (wasEstablished && !closed) { // closed: said by close
             out.add(new HubEvent.Terminated(port.key));
         }
         forgetting.linkEnded(port, nowNs, out);
@@ -325,13 +325,16 @@ public final class HubCore {
     }
     // ---- the model's verdicts ----
 
-    /** The model broke the pair. @return whether anything changed (the pair, a port, a connection) */
+    /**
+     * The model broke the pair. @return whether anything changed (the pair, a port). The links a
+     * break closes are those of a pair that was not broken: a pair broken again (the next poll)
+     * while they still end is no change (issue 36, item 10: it was told, and recorded, twice).
+     */
     public boolean breakPair(RobotPair pair, long nowNs, Changes out) {
         boolean changed = pairs.broke(pair, nowNs, out);
         // Forced up: the break is only remembered, for the release.
         for (WssPort port : pairs.forced(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
             changed |= listening.stopListening(port, out);
-            changed |= port.hasLinks();
             out.close(port.links(), CloseReason.OUT_OF_RANGE);
         }
         return changed;
@@ -390,12 +393,24 @@ public final class HubCore {
 
     // ---- the end ----
 
-    /** The hub stops: every port is given back and every connection closed. */
+    /**
+     * The hub stops: every port is given back, every connection closed and said terminated, then
+     * every robot deregistered, all here, so that they are told before the hub says it stopped
+     * (issue 36, item 13); a link that ends after this says nothing more ({@link #linkEnded}).
+     */
     public void close(Changes out) {
         closed = true;
         for (WssPort port : ports.all()) {
             PortForgetting.giveBack(port, out);
+            for (Connection link : port.links()) {
+                if (link.isEstablished()) {
+                    out.add(new HubEvent.Terminated(port.key));
+                }
+            }
             out.close(port.links(), CloseReason.SERVER_STOPPED);
+        }
+        for (String name : new java.util.TreeSet<>(robots.keySet())) {
+            out.add(new HubEvent.Deregistered(name));
         }
         ports.clear();
         robots.clear();

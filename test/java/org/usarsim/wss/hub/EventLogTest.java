@@ -138,13 +138,15 @@ class EventLogTest {
     }
 
     @Test
-    void aFixedUdpPortsCountsAreOneLineADirection() throws Exception {
+    void aFixedUdpPortsCountsAreOneLineADirectionSayingItsPort() throws Exception {
         CsvEventLog log = CsvEventLog.create(dir);
-        log.udpCounted("Scout", "Base", 1200, 1_680_000, 3, 2, 14);
+        log.udpCounted("Scout", "Base", 17400, 1200, 1_680_000, 3, 2, 14);
+        log.udpCounted("Scout", "Base", 17401, 5, 50, 0, 0, 0);
         log.close();
         List<String> lines = Files.readAllLines(log.file());
-        assertEquals(1, lines.size(), lines.toString());
-        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,1200,1680000,3,2,14"), lines.get(0));
+        assertEquals(2, lines.size(), lines.toString());
+        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,17400,1200,1680000,3,2,14"), lines.get(0));
+        assertTrue(lines.get(1).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,17401,5,50,0,0,0"), lines.get(1));
     }
 
     @Test

@@ -200,8 +200,9 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     @Override
-    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
-        event("UDP", from, to, datagrams, bytes, droppedBroken, droppedQueue, lost);
+    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost) {
+        event("UDP", from, to, fixedPort, datagrams, bytes, droppedBroken, droppedQueue, lost);
     }
 
     @Override

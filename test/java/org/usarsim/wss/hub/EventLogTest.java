@@ -238,4 +238,18 @@ class EventLogTest {
         CsvEventLog.appendField(obeyed, "E\u001B[2J\u202Eevil\u0085");
         assertEquals("E\\u001B[2J\\u202Eevil\\u0085", obeyed.toString(), "ESC, a bidi override and C1 escaped as in the log");
     }
+
+    /** Issue 36: a backslash of a name is itself escaped, so that a name with ESC and one with the text of its escape differ. */
+    @Test
+    void aBackslashIsDoubledSoNoTwoNamesAreWrittenAlike() {
+        StringBuilder escape = new StringBuilder();
+        CsvEventLog.appendField(escape, "a\u001Bb");
+        StringBuilder text = new StringBuilder();
+        CsvEventLog.appendField(text, "a\\u001Bb");
+        assertEquals("a\\u001Bb", escape.toString(), "ESC as the log writes it");
+        assertEquals("a\\\\u001Bb", text.toString(), "a backslash, then text");
+        StringBuilder both = new StringBuilder();
+        CsvEventLog.appendField(both, "\\,\u001B");
+        assertEquals("\"\\\\,\\u001B\"", both.toString(), "quoted as before, the backslash doubled inside");
+    }
 }

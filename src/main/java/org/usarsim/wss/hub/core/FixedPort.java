@@ -11,7 +11,7 @@ import java.util.regex.Pattern;
  * {@code number} on the WSS is {@code key.from()}'s way to {@code key.to()}'s {@code key.targetPort()},
  * by TCP (a stream forwarded as a DNS'd port's) or UDP (datagrams relayed, per sender).
  * {@code wss.fixed} writes them {@code [tcp|udp] FROM->TO:PORT@NUMBER}, comma-separated; the
- * grammar exactly (docs/fixed-ports.md, "The grammar of wss.fixed"): the transport word in any case
+ * grammar exactly (docs/fixed-ports.md, "The grammar of wss.fixed and wss.robot.*"): the transport word in any case
  * and followed by spaces or tabs; spaces and tabs allowed around each item and around {@code ->},
  * {@code :} and {@code @}; FROM and TO robot names (no whitespace, braces, {@code :}, {@code ,},
  * or {@code ->}); PORT and NUMBER decimal digits, 1 to 65535.

@@ -66,6 +66,72 @@ class FixedPortsConfigTest {
         assertEquals("tcp Scout->Base:1883@" + tcp, setup.ports().get(0).toString());
     }
 
+    /**
+     * Issue 36, the grammar of wss.fixed as docs/fixed-ports.md writes it, the accepted side: the
+     * transport in any case, spaces and tabs around the items and the separators, a name with '-'
+     * or '>' (not "->"), even first. N stands for a free number.
+     */
+    @ParameterizedTest(name = "''{0}''")
+    @CsvSource(delimiter = '|', quoteCharacter = '"', value = {
+        "UDP A->B:7400@N|udp A->B:7400@N",
+        "Udp A->B:7400@N|udp A->B:7400@N",
+        "TCP A->B:7400@N|tcp A->B:7400@N",
+        "udp\\tA->B:7400@N|udp A->B:7400@N",
+        "\\t udp  A -> B : 7400 @ N \\t|udp A->B:7400@N",
+        "A\\t->\\tB\\t:\\t80\\t@\\tN|tcp A->B:80@N",
+        "-x->B:80@N|tcp -x->B:80@N",
+        "A-->B:80@N|tcp A-->B:80@N",
+        ">y->A-:80@N|tcp >y->A-:80@N",
+        "A->B:08080@N|tcp A->B:8080@N",
+    })
+    void theGrammarAcceptsWhatTheDocsSay(String given, String expected) throws Exception {
+        String number = String.valueOf(free());
+        FixedSetup setup = config("wss.robot.A", "", "wss.robot.B", "", "wss.robot.-x", "", "wss.robot.A-", "", "wss.robot.>y", "",
+                "wss.fixed", given.replace("\\t", "\t").replace("N", number)).hubConfig().fixed();
+        assertEquals(expected.replace("N", number), setup.ports().get(0).toString());
+    }
+
+    /** The refused side: whitespace inside a part, other whitespace than spaces and tabs, a name with "->", glued words. */
+    @ParameterizedTest(name = "''{0}''")
+    @CsvSource(delimiter = '|', quoteCharacter = '"', value = {
+        "A - > B:80@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B->C:80@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B:80 80@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B:80@N extra|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "udp\\fA->B:80@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B:80\\f@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B:80@\\u000BN|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "udpA->B:80@N|udpA is not declared",
+        "udp tcp A->B:80@N|is not [tcp|udp] FROM->TO:PORT@NUMBER",
+        "A->B:+80@N|+80 is not a port number",
+        "A->B:0x50@N|0x50 is not a port number",
+    })
+    void theGrammarRefusesWhatTheDocsDoNotSay(String given, String why) {
+        String value = given.replace("\\t", "\t").replace("\\f", "\f").replace("\\u000B", "\u000B").replace("N", String.valueOf(free()));
+        String message = refused("wss.robot.A", "", "wss.robot.B", "", "wss.robot.C", "", "wss.fixed", value);
+        assertTrue(message.contains(why), message);
+    }
+
+    /**
+     * Issue 36: an IPv6 address (written as numbers, as every address setting takes it) declares
+     * a robot when the WSS ports can hear and reach it: on the wildcard; refused when they listen on
+     * one address of the other family, where its fixed ports would never work.
+     */
+    @Test
+    void anIpv6RobotIsDeclaredWhereTheWssPortsCanReachIt() throws Exception {
+        String message = refused("wss.robot.A", "::1");
+        assertTrue(message.contains("wss.robot.A = '::1' is an IPv6 address, but the WSS ports listen on the IPv4 address"
+                + " wss.bindAddress = 127.0.0.1"), message);
+        FixedSetup setup = FixedPorts.setup(java.util.Map.of("wss.robot.A", "::1", "wss.robot.B", " 127.0.0.1 "), "", 60, 50000,
+                InetAddress.getByName("0.0.0.0"));
+        assertTrue(setup.robots().contains(new DeclaredRobot("A", InetAddress.getByName("::1"))), setup.robots().toString());
+        assertTrue(setup.robots().contains(new DeclaredRobot("B", InetAddress.getByName("127.0.0.1"))), setup.robots().toString());
+        IllegalArgumentException ipv4 = assertThrows(IllegalArgumentException.class, () -> FixedPorts.setup(
+                java.util.Map.of("wss.robot.B", "127.0.0.1"), "", 60, 50000, InetAddress.getByName("::1")));
+        assertTrue(ipv4.getMessage().contains("is an IPv4 address, but the WSS ports listen on the IPv6 address"), ipv4.getMessage());
+        assertEquals(1, FixedPorts.setup(java.util.Map.of("wss.robot.A", "::1"), "", 60, 50000, InetAddress.getByName("::")).robots().size());
+    }
+
     @Test
     void aTcpAndAUdpPortMayShareANumber() throws Exception {
         int number = free();

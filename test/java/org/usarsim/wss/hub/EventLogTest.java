@@ -138,13 +138,15 @@ class EventLogTest {
     }
 
     @Test
-    void aFixedUdpPortsCountsAreOneLineADirection() throws Exception {
+    void aFixedUdpPortsCountsAreOneLineADirectionSayingItsPort() throws Exception {
         CsvEventLog log = CsvEventLog.create(dir);
-        log.udpCounted("Scout", "Base", 1200, 1_680_000, 3, 2, 14);
+        log.udpCounted("Scout", "Base", 17400, 1200, 1_680_000, 3, 2, 14);
+        log.udpCounted("Scout", "Base", 17401, 5, 50, 0, 0, 0);
         log.close();
         List<String> lines = Files.readAllLines(log.file());
-        assertEquals(1, lines.size(), lines.toString());
-        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,1200,1680000,3,2,14"), lines.get(0));
+        assertEquals(2, lines.size(), lines.toString());
+        assertTrue(lines.get(0).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,17400,1200,1680000,3,2,14"), lines.get(0));
+        assertTrue(lines.get(1).matches("UDP,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},Scout,Base,17401,5,50,0,0,0"), lines.get(1));
     }
 
     @Test
@@ -235,5 +237,19 @@ class EventLogTest {
         StringBuilder obeyed = new StringBuilder();
         CsvEventLog.appendField(obeyed, "E\u001B[2J\u202Eevil\u0085");
         assertEquals("E\\u001B[2J\\u202Eevil\\u0085", obeyed.toString(), "ESC, a bidi override and C1 escaped as in the log");
+    }
+
+    /** Issue 36: a backslash of a name is itself escaped, so that a name with ESC and one with the text of its escape differ. */
+    @Test
+    void aBackslashIsDoubledSoNoTwoNamesAreWrittenAlike() {
+        StringBuilder escape = new StringBuilder();
+        CsvEventLog.appendField(escape, "a\u001Bb");
+        StringBuilder text = new StringBuilder();
+        CsvEventLog.appendField(text, "a\\u001Bb");
+        assertEquals("a\\u001Bb", escape.toString(), "ESC as the log writes it");
+        assertEquals("a\\\\u001Bb", text.toString(), "a backslash, then text");
+        StringBuilder both = new StringBuilder();
+        CsvEventLog.appendField(both, "\\,\u001B");
+        assertEquals("\"\\\\,\\u001B\"", both.toString(), "quoted as before, the backslash doubled inside");
     }
 }

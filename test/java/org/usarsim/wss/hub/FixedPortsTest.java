@@ -102,7 +102,8 @@ class FixedPortsTest {
                     DatagramSocket second = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
                 test.hub.addListener(new org.usarsim.wss.model.WssEventListener() {
                     @Override
-                    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+                    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken,
+                            long droppedQueue, long lost) {
                         if (from.equals("Scout")) {
                             reported.add(new long[] {datagrams, bytes, droppedQueue, lost, droppedBroken});
                         }
@@ -144,6 +145,46 @@ class FixedPortsTest {
                 Wait.until("the event log's listeners told, within a second or so", () -> reported.stream().mapToLong(r -> r[4]).sum() == 1
                         && reported.stream().mapToLong(r -> r[0]).sum() == 2);
             }
+        }
+    }
+
+    /**
+     * Issue 36: two fixed UDP ports of one pair, ten datagrams to the first: the listeners (the event
+     * log, the recording) are told ten datagrams, each report naming the port they went through, and
+     * the table says ten. Before, each relay reported the pair's counts: twenty, and no port.
+     */
+    @Test
+    void twoFixedUdpPortsOfAPairEachReportTheirOwnDatagrams() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0));
+                DatagramSocket baseToo = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int first = Sockets.freeUdp();
+            int second = Sockets.freeUdp();
+            while (second == first) {
+                second = Sockets.freeUdp();
+            }
+            java.util.List<String> reports = new java.util.concurrent.CopyOnWriteArrayList<>();
+            try (TestHub test = hub(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), first),
+                    new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", baseToo.getLocalPort()), second));
+                    DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                test.hub.addListener(new org.usarsim.wss.model.WssEventListener() {
+                    @Override
+                    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken,
+                            long droppedQueue, long lost) {
+                        reports.add(from + "," + to + "," + fixedPort + "," + datagrams + "," + bytes);
+                    }
+                });
+                base.setSoTimeout(5000);
+                for (int i = 0; i < 10; i++) {
+                    scout.send(new DatagramPacket(new byte[2], 2, LOCAL, first));
+                    base.receive(new DatagramPacket(new byte[10], 10));
+                }
+                Wait.until("the table says ten", () -> udp(test, "Scout").datagrams() == 10);
+                Wait.until("ten datagrams reported", () -> reports.stream().mapToLong(r -> Long.parseLong(r.split(",")[3])).sum() >= 10);
+                assertEquals(10, udp(test, "Scout").datagrams());
+                assertEquals(10, reports.stream().mapToLong(r -> Long.parseLong(r.split(",")[3])).sum(), reports.toString());
+                assertTrue(reports.stream().allMatch(r -> r.startsWith("Scout,Base," + first + ",")), reports.toString());
+            }
+            assertEquals(10, reports.stream().mapToLong(r -> Long.parseLong(r.split(",")[3])).sum(), "none more at the stop: " + reports);
         }
     }
 

@@ -46,7 +46,7 @@ class EntryLinesTest {
                 new Entry.Force(701, "Alpha", "B c", false),
                 new Entry.Release(800, "Alpha", "B c"),
                 new Entry.Rate(900, "Alpha", "B c", 54_000_000),
-                new Entry.Udp(920, "B c", "Alpha", 1200, 1_680_000, 3, 2, 14),
+                new Entry.Udp(920, "B c", "Alpha", 17400, 1200, 1_680_000, 3, 2, 14),
                 new Entry.Dropped(950, 12),
                 new Entry.Left(1000, "Alpha"),
                 new Entry.End(1001));
@@ -72,6 +72,20 @@ class EntryLinesTest {
         EntryLines.PairRow infinite = assertInstanceOf(EntryLines.PairRow.class, group.get(7));
         assertEquals(Double.POSITIVE_INFINITY, infinite.pair().strength());
         assertEquals(Double.NaN, infinite.pair().obstacles());
+    }
+
+    /** Issue 36: a udp line says its fixed port; a line of a recording made before (no port) is still read, its port not known. */
+    @Test
+    void aUdpLineSaysItsPortAndAnOlderOneWithoutIsStillRead() {
+        StringBuilder text = new StringBuilder();
+        EntryLines.write(text, new Entry.Udp(920, "Scout", "Base", 17400, 10, 20, 0, 0, 0));
+        assertEquals("920 udp Scout Base 17400 10 20 0 0 0\n", text.toString());
+        assertEquals(new EntryLines.Whole(new Entry.Udp(920, "Scout", "Base", Entry.Udp.NO_PORT, 10, 20, 0, 0, 0)),
+                EntryLines.read("920 udp Scout Base 10 20 0 0 0"));
+        for (String line : List.of("920 udp Scout Base 0 10 20 0 0 0", "920 udp Scout Base 65536 10 20 0 0 0", "920 udp Scout Base 10 20 0 0",
+                "920 udp Scout Base 1 10 20 0 0 0 0")) {
+            assertThrows(IllegalArgumentException.class, () -> EntryLines.read(line), line);
+        }
     }
 
     @Test

@@ -43,7 +43,15 @@ final class FixedPorts {
     static FixedSetup setup(Map<String, String> robots, String fixed, int udpIdleSeconds, int controlPort, InetAddress bindAddress) {
         List<DeclaredRobot> declared = new ArrayList<>();
         for (Map.Entry<String, String> entry : robots.entrySet()) {
-            declared.add(robot(entry.getKey(), entry.getValue()));
+            DeclaredRobot robot = robot(entry.getKey(), entry.getValue());
+            if (!reachable(robot.address(), bindAddress)) {
+                throw new IllegalArgumentException(entry.getKey() + " = '" + entry.getValue() + "' is an "
+                        + family(robot.address()) + " address, but the WSS ports listen on the " + family(bindAddress)
+                        + " address wss.bindAddress = " + bindAddress.getHostAddress()
+                        + " (its fixed ports could neither hear it nor reach it: give an " + family(bindAddress)
+                        + " address, or set wss.bindAddress to the wildcard 0.0.0.0)");
+            }
+            declared.add(robot);
         }
         List<FixedPort> ports;
         try {
@@ -89,6 +97,19 @@ final class FixedPorts {
                     + " empty: " + LOCAL + ")");
         }
         return new DeclaredRobot(name, one.get(0));
+    }
+
+    /**
+     * Whether the WSS ports on {@code bindAddress} can hear a robot at {@code address} and reach it:
+     * on the wildcard (0.0.0.0 or ::, both families), always; on one address, when it is of the
+     * robot's family (IPv4 or IPv6).
+     */
+    private static boolean reachable(InetAddress address, InetAddress bindAddress) {
+        return bindAddress.isAnyLocalAddress() || family(address).equals(family(bindAddress));
+    }
+
+    private static String family(InetAddress address) {
+        return address instanceof java.net.Inet6Address ? "IPv6" : "IPv4";
     }
 
     /**

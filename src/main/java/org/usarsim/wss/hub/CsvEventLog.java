@@ -31,7 +31,7 @@ import org.usarsim.wss.protocol.Strengths;
  * After a batch in which events were dropped it writes {@code DROPPED,t,n} (n events not written
  * since the previous such line; docs/headless.md). {@link #close} writes everything queued first.
  * A field that needs it (a name with a comma, a quote or a LF) is quoted as RFC 4180 says, its
- * control and format characters escaped as in the log ({@code \u001B}).
+ * control and format characters escaped as in the log ({@code \u001B}) and its backslashes doubled.
  * The queue and its thread are {@link QueuedWriter}'s, as the recording's.
  */
 public final class CsvEventLog implements WssEventListener, AutoCloseable {
@@ -135,10 +135,13 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
      * LF (a robot name may: {@code INIT {Robot a,b}}); then between double quotes, each double quote
      * in it doubled. A name never breaks the line into more fields or more lines. Before that, the
      * characters a terminal or a viewer would obey (ESC, the bidirectional overrides...) are
-     * escaped as the log escapes them ({@link LogText}), so that {@code cat} of the file shows them.
+     * escaped as the log escapes them ({@link LogText}), so that {@code cat} of the file shows them,
+     * after each backslash of the name itself is doubled: {@code \\} is a backslash, {@code \}{@code uXXXX}
+     * one escaped character, so a name {@code a<ESC>b} ({@code a\}{@code u001Bb}) and a name
+     * {@code a\}{@code u001Bb} ({@code a\\u001Bb}) are never written alike (issue 36).
      */
     static void appendField(StringBuilder text, String raw) {
-        String field = LogText.escape(raw);
+        String field = LogText.escape(raw.indexOf('\\') < 0 ? raw : raw.replace("\\", "\\\\"));
         boolean quote = false;
         for (int i = 0; i < field.length() && !quote; i++) {
             char c = field.charAt(i);
@@ -200,8 +203,9 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     @Override
-    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
-        event("UDP", from, to, datagrams, bytes, droppedBroken, droppedQueue, lost);
+    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost) {
+        event("UDP", from, to, fixedPort, datagrams, bytes, droppedBroken, droppedQueue, lost);
     }
 
     @Override

@@ -137,8 +137,9 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
-    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
-        each(l -> l.udpCounted(from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
+    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost) {
+        each(l -> l.udpCounted(from, to, fixedPort, datagrams, bytes, droppedBroken, droppedQueue, lost));
     }
 
     /** Called per forwarded chunk: a plain loop, so that no lambda is made per chunk. */

@@ -91,7 +91,7 @@ final class FixedPortsStart {
             relay = new UdpRelay(port, config.bindAddress(), pair.target(), source,
                     new UdpRelay.Pair(pair.up(), pair.down(), pair.stats().udpFrom(port.key().from()), pair.stats().udpFrom(port.key().to())),
                     airtime, TimeUnit.SECONDS.toNanos(config.fixed().udpIdleSeconds()), clock,
-                    (from, to, udp) -> events.udpCounted(from, to, udp.datagrams(), udp.bytes(), udp.droppedBroken(), udp.droppedQueue(),
+                    (from, to, udp) -> events.udpCounted(from, to, port.number(), udp.datagrams(), udp.bytes(), udp.droppedBroken(), udp.droppedQueue(),
                             udp.lost()));
         } catch (IOException e) {
             throw new IOException("cannot listen on fixed port " + port + ": " + e.getMessage(), e);

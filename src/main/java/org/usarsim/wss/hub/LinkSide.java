@@ -104,8 +104,14 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     @Override
-    public void established(Link link) {
-        executor.announceDelivered(new HubEvent.Established(link.port().key));
+    public boolean established(Link link, Runnable opened) {
+        return executor.announceDeliveredIf(core -> {
+            boolean still = core.established(link.port(), link);
+            if (still) {
+                opened.run(); // under the lock: counted before any step after this one, and before the listeners hear of it
+            }
+            return still;
+        }, new HubEvent.Established(link.port().key));
     }
 
     @Override

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
+import java.util.function.Predicate;
 import java.util.function.ToLongFunction;
 import org.usarsim.wss.hub.core.Changes;
 import org.usarsim.wss.hub.core.HubClock;
@@ -126,13 +127,22 @@ final class StepExecutor implements ChangeApplier.FollowUps {
         outbox.deliver();
     }
 
-    /** As {@link #announce}, returning once the event is delivered (a link's establishment: its data follows it). */
-    void announceDelivered(HubEvent event) {
+    /**
+     * As {@link #announce}, if the core says {@code still} under the lock (a link's establishment:
+     * not once a step closed it), returning once the event is delivered (its data follows it).
+     *
+     * @return whether it was announced
+     */
+    boolean announceDeliveredIf(Predicate<HubCore> still, HubEvent event) {
         long last;
         synchronized (lock) {
+            if (!still.test(core)) {
+                return false;
+            }
             last = outbox.append(List.of(event));
         }
         outbox.deliverThrough(last);
+        return true;
     }
 
     @Override

@@ -33,11 +33,14 @@ public interface WssEventListener {
     }
 
     /**
-     * A fixed UDP port's datagrams from {@code from} to {@code to} since its last such call (at most
-     * one a second, none for a second with nothing): sent (and their bytes), dropped because the pair
-     * was broken, dropped because its shaped queue was full, lost to the signal (docs/fixed-ports.md).
+     * The datagrams of the fixed UDP port {@code fixedPort} (its number on the WSS) from {@code from}
+     * to {@code to} since its last such call (at most one a second, none for a second with nothing):
+     * sent (and their bytes), dropped because the pair was broken, dropped because its shaped queue
+     * was full, lost to the signal (docs/fixed-ports.md). Each fixed port says its own: two fixed UDP
+     * ports of one pair make two calls, each with its port's datagrams only.
      */
-    default void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
+    default void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost) {
     }
 
     /** A DNS gave connections from {@code from} to {@code to}'s {@code targetPort} their own WSS port. */

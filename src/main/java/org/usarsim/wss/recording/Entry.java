@@ -63,11 +63,16 @@ public sealed interface Entry {
     }
 
     /**
-     * A fixed UDP port's datagrams one way since its last such entry (docs/fixed-ports.md): sent,
+     * A fixed UDP port's datagrams one way since its last such entry (docs/fixed-ports.md): the
+     * port's number on the WSS ({@link #NO_PORT} in a recording made before lines said it), sent,
      * their bytes, dropped because the pair was broken, dropped by its shaped queue, lost to the signal.
      */
-    record Udp(long millis, String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost)
+    record Udp(long millis, String from, String to, int port, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost)
             implements Entry {
+
+        /** The port of a line written before a {@code udp} line said its port (its 7 fields): not known. */
+        public static final int NO_PORT = 0;
     }
 
     /** Entries the recorder could not queue since the last such line (its queue was full). */

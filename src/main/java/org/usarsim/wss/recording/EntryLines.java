@@ -83,7 +83,8 @@ public final class EntryLines {
         } else if (entry instanceof Entry.Rate r) {
             words(out, t, "rate", escape(r.from()), escape(r.to()), Long.toString(r.bitsPerSecond()));
         } else if (entry instanceof Entry.Udp u) {
-            words(out, t, "udp", escape(u.from()), escape(u.to()), Long.toString(u.datagrams()), Long.toString(u.bytes()),
+            words(out, t, "udp", escape(u.from()), escape(u.to()), Integer.toString(u.port()), Long.toString(u.datagrams()),
+                    Long.toString(u.bytes()),
                     Long.toString(u.droppedBroken()), Long.toString(u.droppedQueue()), Long.toString(u.lost()));
         } else if (entry instanceof Entry.Dropped d) {
             words(out, t, "dropped", Long.toString(d.count()));
@@ -299,9 +300,13 @@ public final class EntryLines {
                 yield new Whole(new Entry.Rate(t, unescape(f[2]), unescape(f[3]), whole(f[4])));
             }
             case "udp" -> {
-                fields(f, 9);
-                yield new Whole(new Entry.Udp(t, unescape(f[2]), unescape(f[3]), whole(f[4]), whole(f[5]), whole(f[6]), whole(f[7]),
-                        whole(f[8])));
+                if (f.length == 9) { // written before the line said its port (issue 36): FROM TO and the five counts
+                    yield new Whole(new Entry.Udp(t, unescape(f[2]), unescape(f[3]), Entry.Udp.NO_PORT, whole(f[4]), whole(f[5]),
+                            whole(f[6]), whole(f[7]), whole(f[8])));
+                }
+                fields(f, 10);
+                yield new Whole(new Entry.Udp(t, unescape(f[2]), unescape(f[3]), port(f[4]), whole(f[5]), whole(f[6]), whole(f[7]),
+                        whole(f[8]), whole(f[9])));
             }
             case "dropped" -> {
                 fields(f, 3);
@@ -343,6 +348,15 @@ public final class EntryLines {
         long value = whole(f[index]);
         if (value > 1_000_000) {
             throw new IllegalArgumentException("a " + f[1] + " line of over a million rows: " + f[index]);
+        }
+        return (int) value;
+    }
+
+    /** A fixed port's number, 1 to 65535. */
+    private static int port(String text) {
+        long value = whole(text);
+        if (value < 1 || value > 65535) {
+            throw new IllegalArgumentException("not a port number from 1 to 65535: " + text);
         }
         return (int) value;
     }

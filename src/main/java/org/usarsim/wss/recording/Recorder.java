@@ -277,8 +277,9 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     @Override
-    public void udpCounted(String from, String to, long datagrams, long bytes, long droppedBroken, long droppedQueue, long lost) {
-        offer(new Entry.Udp(millis(), from, to, datagrams, bytes, droppedBroken, droppedQueue, lost));
+    public void udpCounted(String from, String to, int fixedPort, long datagrams, long bytes, long droppedBroken, long droppedQueue,
+            long lost) {
+        offer(new Entry.Udp(millis(), from, to, fixedPort, datagrams, bytes, droppedBroken, droppedQueue, lost));
     }
 
     /** A poll: its kicks, its walls when they changed and the poll itself, at the time it is offered. */

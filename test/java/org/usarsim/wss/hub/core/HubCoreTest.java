@@ -117,6 +117,38 @@ class HubCoreTest {
         assertTrue(ended.events().stream().noneMatch(e -> e instanceof HubEvent.Terminated), "said once, at the stop");
     }
 
+    /**
+     * Issue 36: a FORCE down answered while a link was connecting to its target. The link was
+     * committed before the force, so the force's step closes it; once that step has run, the link
+     * is not announced established (no CON_ESTABLISHED after FORCED ... DOWN), whatever comes after
+     * (an UP of the storm: the port listens again, with a new epoch). A connection the old listener
+     * accepted before the force, handed over after it, is refused at admission, and stays refused
+     * after the UP. A link committed with no force in between is established.
+     */
+    @Test
+    void aLinkAForceDownClosedBeforeItReachedItsTargetIsNeverEstablishedNorIsAConnectionAcceptedBeforeIt() {
+        WssPort port = registeredPort();
+        int before = port.epoch();
+        FakeConnection connecting = new FakeConnection(50001);
+        assertNull(core.commit(port, before, LOOPBACK, true, connecting));
+        assertTrue(core.established(port, connecting), "not forced: it is established once it reaches its target");
+
+        Changes down = new Changes();
+        core.force(AB, Force.DOWN, now, down);
+        assertEquals(List.of(new Changes.Close(connecting, CloseReason.FORCED)), down.closes());
+        assertFalse(core.established(port, connecting), "closed by the force's step, before its socket is");
+        assertNotNull(core.admit(port, before, LOOPBACK, true, now, new Changes()).refusal(), "accepted before the force, refused after it");
+
+        core.force(AB, Force.UP, now, new Changes());
+        assertFalse(core.established(port, connecting), "the UP that follows does not revive it");
+        assertNotNull(core.admit(port, before, LOOPBACK, true, now, new Changes()).refusal(), "nor the old listener's connection");
+        FakeConnection after = new FakeConnection(50002);
+        assertNull(core.commit(port, port.epoch(), LOOPBACK, true, after));
+        assertTrue(core.established(port, after));
+        core.linkEnded(port, connecting, false, now, new Changes());
+        assertFalse(core.established(port, connecting), "ended: no longer the port's");
+    }
+
     @Test
     void aForceWinsOverTheModelAndItsReleaseGivesThePairBack() {
         WssPort port = registeredPort();

@@ -35,7 +35,11 @@ import org.usarsim.wss.shaping.ShapingConfig;
 class LinkClockTest {
 
     private final List<AutoCloseable> opened = new ArrayList<>();
+    private final org.usarsim.wss.hub.core.PairStats stats = CoreFixtures.stats("A", "B", 0);
     private final AtomicBoolean ended = new AtomicBoolean();
+    /** What the hub answers a link that reached its target: false, a step closed it meanwhile. */
+    private volatile boolean establish = true;
+    private final AtomicBoolean endedEstablished = new AtomicBoolean();
 
     @AfterEach
     void close() {
@@ -67,6 +71,29 @@ class LinkClockTest {
         Wait.until("the link closed", ended::get);
     }
 
+    /**
+     * Issue 36: a link the hub does not announce (a FORCE down's step closed it while it connected
+     * to its target) forwards nothing and ends as never established, uncounted.
+     */
+    @Test
+    void aLinkTheHubDoesNotAnnounceForwardsNothingAndEndsUnestablished() throws Exception {
+        establish = false;
+        Robots robots = link(null);
+        robots.source.getOutputStream().write(7);
+        Wait.until("the link ended", ended::get);
+        assertEquals(false, endedEstablished.get(), "never established: no CON_TERMINATED either");
+        assertEquals(-1, readOrEnd(robots.target), "nothing forwarded to the target");
+        assertEquals(0, stats.connections(), "not counted as a connection");
+    }
+
+    private static int readOrEnd(Socket socket) throws IOException {
+        try {
+            return socket.getInputStream().read();
+        } catch (java.net.SocketException e) {
+            return -1; // reset: ended all the same
+        }
+    }
+
     /** The two robots' sockets, each at its end of a link. */
     private record Robots(Socket source, Socket target) {
     }
@@ -81,7 +108,7 @@ class LinkClockTest {
         WssPort port = CoreFixtures.port("A", "B", 5000, ((InetSocketAddress) wssPort.getLocalAddress()).getPort());
         Link link = new Link(new Hub(), port, accepted, (InetSocketAddress) targetListener.getLocalAddress(), 65536,
                 SocketBuffers.of(0), new WssEventListener() {
-                }, CoreFixtures.stats("A", "B", 0), new LeapingClock(), shaping);
+                }, stats, new LeapingClock(), shaping);
         opened.add(link::close);
         link.start();
         Socket target = open(targetListener.accept().socket());
@@ -118,11 +145,16 @@ class LinkClockTest {
         }
 
         @Override
-        public void established(Link link) {
+        public boolean established(Link link, Runnable opened) {
+            if (establish) {
+                opened.run();
+            }
+            return establish;
         }
 
         @Override
         public void linkEnded(Link link, boolean wasEstablished) {
+            endedEstablished.set(wasEstablished);
             ended.set(true);
         }
 

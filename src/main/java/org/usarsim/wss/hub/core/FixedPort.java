@@ -10,7 +10,11 @@ import java.util.regex.Pattern;
  * A WSS port nobody asked a DNS for (docs/fixed-ports.md): made at Start and kept until Stop,
  * {@code number} on the WSS is {@code key.from()}'s way to {@code key.to()}'s {@code key.targetPort()},
  * by TCP (a stream forwarded as a DNS'd port's) or UDP (datagrams relayed, per sender).
- * {@code wss.fixed} writes them {@code [tcp|udp] FROM->TO:PORT@NUMBER}, comma-separated.
+ * {@code wss.fixed} writes them {@code [tcp|udp] FROM->TO:PORT@NUMBER}, comma-separated; the
+ * grammar exactly (docs/fixed-ports.md, "The grammar of wss.fixed and wss.robot.*"): the transport word in any case
+ * and followed by spaces or tabs; spaces and tabs allowed around each item and around {@code ->},
+ * {@code :} and {@code @}; FROM and TO robot names (no whitespace, braces, {@code :}, {@code ,},
+ * or {@code ->}); PORT and NUMBER decimal digits, 1 to 65535.
  */
 public record FixedPort(Transport transport, PortKey key, int number) {
 
@@ -28,7 +32,13 @@ public record FixedPort(Transport transport, PortKey key, int number) {
     public static final String WORDS = "a comma-separated list of fixed ports [tcp|udp] FROM->TO:PORT@NUMBER"
             + " (Scout->Base:1883@11883, udp Scout->Base:7400@17400; tcp if not said)";
 
-    private static final Pattern ITEM = Pattern.compile("(?:(\\S+)\\s+)?([^\\s{}:,>-][^\\s{}:,]*?)\\s*->\\s*([^\\s{}:,]+)\\s*:\\s*(\\S+?)\\s*@\\s*(\\S+)");
+    /** A robot name as wss.robot.NAME allows it: no whitespace, brace, ':' or ',', and no "->" (a '-' is never followed by '>'). */
+    private static final String NAME = "((?:[^\\p{javaWhitespace}{}:,\\-]|-(?!>))+)";
+    /** Spaces and tabs: the only whitespace an item may hold (a line break, a form feed... is refused). */
+    private static final String WS = "[ \\t]*";
+    private static final String WORD = "[^\\p{javaWhitespace}]+";
+    private static final Pattern ITEM = Pattern.compile(WS + "(?:(" + WORD + ")[ \\t]+)?" + NAME + WS + "->" + WS + NAME + WS + ":" + WS
+            + "([^\\p{javaWhitespace}@]+)" + WS + "@" + WS + "(" + WORD + ")" + WS);
 
     public FixedPort {
         if (number < 1 || number > 65535 || key.targetPort() < 1 || key.targetPort() > 65535) {
@@ -48,7 +58,7 @@ public record FixedPort(Transport transport, PortKey key, int number) {
         }
         for (String raw : text.split(",", -1)) {
             String item = raw.strip();
-            Matcher m = ITEM.matcher(item);
+            Matcher m = ITEM.matcher(raw);
             if (!m.matches()) {
                 throw new IllegalArgumentException("'" + item + "' is not [tcp|udp] FROM->TO:PORT@NUMBER");
             }

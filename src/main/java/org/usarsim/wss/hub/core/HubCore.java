@@ -162,7 +162,7 @@ public final class HubCore {
     public void kick(String name, long nowNs, Changes out) {
         if (declared.contains(name)) { // declared: it stays, its ports too; its connections close
             for (WssPort port : ports.of(name)) {
-                out.close(port.links(), CloseReason.KICKED);
+                port.closeLinks(CloseReason.KICKED, out);
             }
             out.add(new HubEvent.Said(Level.INFO, "declared robots kicked", "kicked out " + name + "'s connections (a declared robot: it stays)"));
             return;
@@ -172,7 +172,7 @@ public final class HubCore {
             out.add(new HubEvent.Deregistered(name));
         }
         for (WssPort port : ports.of(name)) {
-            out.close(port.links(), CloseReason.KICKED);
+            port.closeLinks(CloseReason.KICKED, out);
             forgetting.forget(port, out);
         }
         pairs.kicked(name, nowNs);
@@ -288,6 +288,15 @@ public final class HubCore {
         return admissions.commit(port, epoch, peer, allowed, link);
     }
 
+    /**
+     * The link reached its target: whether it is announced established (and forwards). Not once a
+     * step closed it (a FORCE down, a break, a kick, the stop answered while it was connecting to
+     * its target), so that no CON_ESTABLISHED follows the event that closed it (issue 36).
+     */
+    public boolean established(WssPort port, Connection link) {
+        return port.carries(link);
+    }
+
     /** A link whose thread could not start: it never was. */
     public void uncommit(WssPort port, Connection link) {
         port.removeLink(link);
@@ -335,7 +344,7 @@ public final class HubCore {
         // Forced up: the break is only remembered, for the release.
         for (WssPort port : pairs.forced(pair) == Force.UP ? List.<WssPort>of() : ports.between(pair)) {
             changed |= listening.stopListening(port, out);
-            out.close(port.links(), CloseReason.OUT_OF_RANGE);
+            port.closeLinks(CloseReason.OUT_OF_RANGE, out);
         }
         return changed;
     }
@@ -407,7 +416,7 @@ public final class HubCore {
                     out.add(new HubEvent.Terminated(port.key));
                 }
             }
-            out.close(port.links(), CloseReason.SERVER_STOPPED);
+            port.closeLinks(CloseReason.SERVER_STOPPED, out);
         }
         for (String name : new java.util.TreeSet<>(robots.keySet())) {
             out.add(new HubEvent.Deregistered(name));

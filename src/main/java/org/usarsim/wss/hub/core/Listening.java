@@ -28,7 +28,7 @@ final class Listening {
     void followVerdict(WssPort port, boolean talks, CloseReason reason, Changes out) {
         if (!talks) {
             stopListening(port, out);
-            out.close(port.links(), reason);
+            port.closeLinks(reason, out);
         } else {
             listenIfItShould(port, true, out);
         }

@@ -15,6 +15,8 @@ public final class WssPort {
     public final PortKey key;
     public final int number;
     private final Set<Connection> links = new HashSet<>();
+    /** Those of its links a step closed: done, though their sockets close after the step. */
+    private final Set<Connection> cut = new HashSet<>();
     private boolean listening;
     private int epoch;
 
@@ -55,6 +57,21 @@ public final class WssPort {
 
     void removeLink(Connection link) {
         links.remove(link);
+        cut.remove(link);
+    }
+
+    /**
+     * Closes its links, saying why: from this step on they are done, even before the applier
+     * closes their sockets, so that none of them is announced established after it (issue 36).
+     */
+    void closeLinks(CloseReason reason, Changes out) {
+        cut.addAll(links);
+        out.close(links(), reason);
+    }
+
+    /** Whether the link is committed to this port and no step has closed it since. */
+    boolean carries(Connection link) {
+        return links.contains(link) && !cut.contains(link);
     }
 
     boolean hasLinks() {

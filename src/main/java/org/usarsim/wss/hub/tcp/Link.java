@@ -175,10 +175,10 @@ public final class Link implements Runnable, Connection {
                 closeReason.compareAndSet(null, CloseReason.TARGET_REFUSED);
                 return;
             }
+            if (!hub.established(this, this::opened)) { // closed by a step (a FORCE down, say) before it could be announced
+                return;
+            }
             established = true;
-            this.established = true;
-            stats.opened();
-            hub.established(this);
             forward();
         } catch (IOException | CancelledKeyException | ClosedSelectorException e) {
             // A reset or an error on a socket, or a close from another thread: the link is over.
@@ -193,6 +193,12 @@ public final class Link implements Runnable, Connection {
             Closing.quietly(selector);
             hub.linkEnded(this, established);
         }
+    }
+
+    /** Established: listed so, and counted, before the listeners hear of it. */
+    private void opened() {
+        established = true;
+        stats.opened();
     }
 
     private boolean connect() {

@@ -12,8 +12,13 @@ public interface LinkHub extends SocketRules {
     /** A listener of the port's {@code epoch} accepted a connection: forward it, or close it and say why. */
     void accepted(WssPort port, int epoch, SocketChannel socket);
 
-    /** The link reached its target; returns once that is delivered to the listeners, so its data follows it. */
-    void established(Link link);
+    /**
+     * The link reached its target: runs {@code opened} and announces it, returning once that is
+     * delivered to the listeners, so its data follows it, true; or false, announcing nothing and
+     * not running {@code opened}, when a step closed the link meanwhile (a FORCE down answered
+     * while it connected): it then ends without having been established.
+     */
+    boolean established(Link link, Runnable opened);
 
     /** The link's thread is ending. */
     void linkEnded(Link link, boolean wasEstablished);

@@ -44,7 +44,11 @@ public final class UdpRelay implements AutoCloseable {
         void counted(String from, String to, UdpCounts.Reading since);
     }
 
-    /** The pair's side of the relay: conditions and counters each way, from the hub's core. */
+    /**
+     * The pair's side of the relay: conditions and counters each way, from the hub's core. The
+     * relay counts its own port's datagrams ({@link UdpCounts#of}), added to these: what it
+     * reports is its port's alone, however many fixed UDP ports the pair has.
+     */
     public record Pair(LiveCondition up, LiveCondition down, UdpCounts upCounts, UdpCounts downCounts) {
     }
 
@@ -53,6 +57,9 @@ public final class UdpRelay implements AutoCloseable {
     private final InetAddress source;
     private final InetAddress bindAddress;
     private final Pair pair;
+    /** This port's counts each way (each added to the pair's): what it reports. */
+    private final UdpCounts upCounts;
+    private final UdpCounts downCounts;
     private final HubClock clock;
     private final Selector selector;
     private final DatagramChannel front;
@@ -84,6 +91,8 @@ public final class UdpRelay implements AutoCloseable {
         this.source = source;
         this.bindAddress = bindAddress;
         this.pair = pair;
+        this.upCounts = UdpCounts.of(pair.upCounts());
+        this.downCounts = UdpCounts.of(pair.downCounts());
         this.clock = clock;
         this.sessions = new UdpSessions<>(idleNs);
         long now = clock.nanoTime();
@@ -189,8 +198,8 @@ public final class UdpRelay implements AutoCloseable {
 
     /** The counts since the last report, each way that has any. */
     private void reportCounts() {
-        UdpCounts.Reading up = pair.upCounts().read();
-        UdpCounts.Reading down = pair.downCounts().read();
+        UdpCounts.Reading up = upCounts.read();
+        UdpCounts.Reading down = downCounts.read();
         UdpCounts.Reading upSince = since(up, reportedUp);
         UdpCounts.Reading downSince = since(down, reportedDown);
         reportedUp = up;
@@ -248,7 +257,7 @@ public final class UdpRelay implements AutoCloseable {
         }
         PairCondition condition = pair.up().get();
         if (!condition.passes()) {
-            pair.upCounts().droppedBroken();
+            upCounts.droppedBroken();
             return;
         }
         UdpSessions.Session<DatagramChannel> session;
@@ -282,14 +291,14 @@ public final class UdpRelay implements AutoCloseable {
         }
         forward.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
         if (!forward.offer(data, session, now)) {
-            pair.upCounts().droppedQueue();
+            upCounts.droppedQueue();
         }
     }
 
     private void sendToTarget(UdpSessions.Session<DatagramChannel> session, byte[] data) {
         try {
             session.socket().write(ByteBuffer.wrap(data));
-            pair.upCounts().sent(data.length);
+            upCounts.sent(data.length);
         } catch (IOException e) { // the target refuses (its port unreachable): lost, as UDP's is
             LOG.fine("fixed UDP port " + port.number() + ": not sent to " + target + ": " + e);
         }
@@ -297,13 +306,13 @@ public final class UdpRelay implements AutoCloseable {
 
     private void sendToSender(InetSocketAddress sender, byte[] data) throws IOException {
         front.send(ByteBuffer.wrap(data), sender);
-        pair.downCounts().sent(data.length);
+        downCounts.sent(data.length);
     }
 
     private void fromTarget(UdpSessions.Session<DatagramChannel> session, byte[] data, long now) throws IOException {
         PairCondition condition = pair.down().get();
         if (!condition.passes()) {
-            pair.downCounts().droppedBroken();
+            downCounts.droppedBroken();
             return;
         }
         synchronized (sessions) {
@@ -315,7 +324,7 @@ public final class UdpRelay implements AutoCloseable {
         }
         back.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
         if (!back.offer(data, session.sender(), now)) {
-            pair.downCounts().droppedQueue();
+            downCounts.droppedQueue();
         }
     }
 
@@ -326,9 +335,9 @@ public final class UdpRelay implements AutoCloseable {
         for (DatagramFlow.Datagram<InetSocketAddress> datagram : back.due(now)) {
             sendToSender(datagram.to(), datagram.data());
         }
-        pair.upCounts().lost(forward.lost() - lostForward);
+        upCounts.lost(forward.lost() - lostForward);
         lostForward = forward.lost();
-        pair.downCounts().lost(back.lost() - lostBack);
+        downCounts.lost(back.lost() - lostBack);
         lostBack = back.lost();
         List<UdpSessions.Session<DatagramChannel>> expired;
         synchronized (sessions) {

@@ -273,12 +273,7 @@ public final class HubCore {
 
     // ---- connections on WSS ports ----
 
-    /**
-     * Whether a connection that a listener of {@code epoch} accepted on the port may be forwarded:
-     * asked before the hub opens the link's sockets (a refused one opens nothing).
-     *
-     * @param allowed the model's {@code connectionIsPossibleForPair(from, to)}
-     */
+    /** Whether a connection a listener of {@code epoch} accepted may be forwarded ({@code allowed}: the model's say); before its sockets open. */
     public Admission admit(WssPort port, int epoch, InetAddress peer, boolean allowed, long nowNs, Changes out) {
         return admissions.admit(port, epoch, peer, allowed, nowNs, out);
     }
@@ -411,12 +406,7 @@ public final class HubCore {
         closed = true;
         for (WssPort port : ports.all()) {
             PortForgetting.giveBack(port, out);
-            for (Connection link : port.links()) {
-                if (link.isEstablished()) {
-                    out.add(new HubEvent.Terminated(port.key));
-                }
-            }
-            port.closeLinks(CloseReason.SERVER_STOPPED, out);
+            port.closeAtStop(out);
         }
         for (String name : new java.util.TreeSet<>(robots.keySet())) {
             out.add(new HubEvent.Deregistered(name));

@@ -69,6 +69,16 @@ public final class WssPort {
         out.close(links(), reason);
     }
 
+    /** The hub stops: each established link said terminated, then every link closed. */
+    void closeAtStop(Changes out) {
+        for (Connection link : links) {
+            if (link.isEstablished()) {
+                out.add(new HubEvent.Terminated(key));
+            }
+        }
+        closeLinks(CloseReason.SERVER_STOPPED, out);
+    }
+
     /** Whether the link is committed to this port and no step has closed it since. */
     boolean carries(Connection link) {
         return links.contains(link) && !cut.contains(link);

@@ -160,15 +160,6 @@ public final class TinyRosbridge implements AutoCloseable {
                 + "]}}";
     }
 
-    /** A {@code /NAME/odom} frame ({@code nav_msgs/Odometry}, ROS 1) at (x, y, 0) in {@code world}, stamped {@code seconds}. */
-    public static String odometry(String robot, double x, double y, double seconds) {
-        long nanos = Math.round(seconds * 1e9);
-        return "{\"op\":\"publish\",\"topic\":\"\\/" + robot + "\\/odom\",\"msg\":{\"header\":{\"seq\":0,\"stamp\":{\"secs\":"
-                + nanos / 1_000_000_000L + ",\"nsecs\":" + nanos % 1_000_000_000L + "},\"frame_id\":\"world\"},\"child_frame_id\":\""
-                + robot + "\\/base_link\",\"pose\":{\"pose\":{\"position\":{\"x\":" + x + ",\"y\":" + y + ",\"z\":0.0},"
-                + "\"orientation\":{\"x\":0.0,\"y\":0.0,\"z\":0.0,\"w\":1.0}}}}}";
-    }
-
     /** Sends the text to every client, one frame. */
     public void publish(String text) {
         publish(text, 1);

@@ -457,6 +457,67 @@ class DistanceModelDialogTest {
 
     // ---- where the positions come from ----
 
+    /** The title of the group holding a field. */
+    private String groupTitle(String key) {
+        JTextField field = field(key);
+        return Gui.onEdt(() -> {
+            for (java.awt.Container parent = field.getParent(); parent != null; parent = parent.getParent()) {
+                if (parent instanceof javax.swing.JComponent group && group.getBorder() instanceof javax.swing.border.CompoundBorder border
+                        && border.getOutsideBorder() instanceof javax.swing.border.TitledBorder titled) {
+                    return titled.getTitle();
+                }
+            }
+            return null;
+        });
+    }
+
+    private boolean labelEnabled(String key) {
+        JTextField field = field(key);
+        return Gui.onEdt(() -> Gui.all(dialog, JLabel.class).stream().filter(l -> l.getLabelFor() == field).findFirst().orElseThrow()
+                .isEnabled());
+    }
+
+    @Test
+    void readOnlyTellsWhichSourceOfPositionsRuns() throws Exception {
+        for (String source : List.of("usarsim", "rosbridge")) {
+            preferences.store(OBSTACLE_MODEL, Map.of("positions", source));
+            open(new ObstaclePropagationModel(), false);
+            boolean usarsim = source.equals("usarsim");
+            String used = usarsim ? "usarsim.host" : "rosbridge.url";
+            String unused = usarsim ? "rosbridge.url" : "usarsim.host";
+            assertEquals(usarsim ? "USARSim Connection" : "rosbridge", groupTitle(used), "the source that runs, " + source);
+            assertEquals(usarsim ? "rosbridge (not used)" : "USARSim Connection (not used)", groupTitle(unused),
+                    "the source that does not, " + source);
+            for (String key : usarsim ? USARSIM_FIELDS : ROSBRIDGE_FIELDS) {
+                assertTrue(labelEnabled(key), key + "'s label, used, " + source);
+                assertEquals(DialogParts.READ_ONLY_TEXT, Gui.onEdt(field(key)::getDisabledTextColor), key + ", used, " + source);
+            }
+            List<String> notUsed = new java.util.ArrayList<>(usarsim ? ROSBRIDGE_FIELDS : USARSIM_FIELDS);
+            if (usarsim) {
+                notUsed.add("rosbridge.map");
+            }
+            for (String key : notUsed) {
+                assertFalse(labelEnabled(key), key + "'s label, not used, " + source);
+                assertNotEquals(DialogParts.READ_ONLY_TEXT, Gui.onEdt(field(key)::getDisabledTextColor), key + ", not used, " + source);
+            }
+            assertTrue(labelEnabled("distance.cutoff") && labelEnabled("positions.interval"), "the groups both use, " + source);
+            Gui.run(() -> dialog.dispose());
+        }
+    }
+
+    @Test
+    void anEditableDialogsGroupTitleFollowsPositions() {
+        open(new DistanceOnlyPropagationModel(), true);
+        assertEquals("rosbridge (not used)", groupTitle("rosbridge.url"));
+        assertEquals("USARSim Connection", groupTitle("usarsim.host"));
+        type("positions", "rosbridge");
+        assertEquals("rosbridge", groupTitle("rosbridge.url"));
+        assertEquals("USARSim Connection (not used)", groupTitle("usarsim.host"));
+        type("positions", "ros");
+        assertEquals("rosbridge", groupTitle("rosbridge.url"), "while it names neither");
+        assertEquals("USARSim Connection", groupTitle("usarsim.host"), "while it names neither");
+    }
+
     private static final List<String> USARSIM_FIELDS = List.of("usarsim.host", "usarsim.port", "usarsim.timeout");
     private static final List<String> ROSBRIDGE_FIELDS = List.of("rosbridge.url", "rosbridge.topic", "rosbridge.type",
             "rosbridge.frame", "rosbridge.names", "rosbridge.stale", "rosbridge.grace", "rosbridge.maxMessage");

@@ -18,6 +18,7 @@ final class LabelPlacer {
     private final List<Rectangle2D> taken = new ArrayList<>();
     private final List<Rectangle2D> names = new ArrayList<>();
     private final List<Rectangle2D> placed = new ArrayList<>();
+    private final List<String> texts = new ArrayList<>();
     private int leftOut;
 
     /** Places labels inside {@code within}: the canvas. */
@@ -33,15 +34,16 @@ final class LabelPlacer {
 
     /**
      * The first box of {@code width} x {@code height} whose top left is one of {@code corners}
-     * (in order of preference), lies inside the canvas and overlaps no box taken, then taken; null
-     * when every one is cut or overlaps.
+     * (in order of preference), lies inside the canvas and overlaps no box taken, then taken for
+     * {@code text}; null when every one is cut or overlaps.
      */
-    Rectangle2D place(List<Point2D> corners, double width, double height) {
+    Rectangle2D place(List<Point2D> corners, double width, double height, String text) {
         for (Point2D corner : corners) {
             Rectangle2D box = new Rectangle2D.Double(corner.getX(), corner.getY(), width, height);
             if (within.contains(box) && taken.stream().noneMatch(box::intersects)) {
                 taken.add(box);
                 placed.add(box);
+                texts.add(text);
                 return box;
             }
         }
@@ -62,6 +64,11 @@ final class LabelPlacer {
     /** The labels' boxes {@link #place} found a free place for, in order. */
     List<Rectangle2D> placed() {
         return List.copyOf(placed);
+    }
+
+    /** The texts of the labels {@link #place} found a free place for, in the order of {@link #placed}. */
+    List<String> texts() {
+        return List.copyOf(texts);
     }
 
     /** How many labels {@link #place} left out for want of a free place. */

@@ -123,7 +123,7 @@ final class MapPainter {
         double above = at.getY() - DOT / 2.0 - metrics.getAscent() - metrics.getHeight() - 2;
         Rectangle2D box = labels.place(List.of(new Point2D.Double(at.getX() + DOT - 2, top),
                 new Point2D.Double(at.getX() - DOT - width, top), new Point2D.Double(at.getX() + DOT - 2, above),
-                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight());
+                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight(), label);
         if (box != null) {
             label(g, label, box.getX() + 2, box.getY() + metrics.getAscent());
         }
@@ -154,7 +154,7 @@ final class MapPainter {
                 g.setFont(font.deriveFont(Font.PLAIN, 10f));
                 FontMetrics metrics = g.getFontMetrics();
                 Rectangle2D box = labels.place(LabelPlacer.alongLine(a, b, metrics.stringWidth(text) + 4,
-                        metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight());
+                        metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight(), text);
                 if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
                     label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
                 }
@@ -246,14 +246,17 @@ final class MapPainter {
 
     /**
      * The text at the middle of a pair's line: the model's strength ("-71.3 dBm", none when it
-     * has none) and with links shaped the rate of a pair that is up ("54 Mbit/s").
+     * has none), then with links shaped the rate of a pair that is up ("54 Mbit/s"), or the state
+     * of a pair that is not ("broken", "forced down"), as the Link statistics' State says it.
      */
     static String lineLabel(MapData.Line line) {
         List<String> parts = new ArrayList<>();
         if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
             parts.add(String.format(Locale.ROOT, "%.1f dBm", line.strength()));
         }
-        if (line.state().isUp() && line.rate() > 0) {
+        if (!line.state().isUp()) {
+            parts.add(line.state().text());
+        } else if (line.rate() > 0) {
             parts.add(Bitrate.format(line.rate()));
         }
         return String.join(", ", parts);

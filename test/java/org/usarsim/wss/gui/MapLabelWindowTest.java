@@ -33,7 +33,10 @@ import org.usarsim.wss.model.WssEventListener;
 @Timeout(60)
 class MapLabelWindowTest {
 
-    /** Scout 60 m east of Base, beyond the cutoff: the pair is broken. */
+    /** How far east of Base each robot is, in metres (Scout 60, Relay halfway). */
+    private static final java.util.Map<String, Integer> EAST = java.util.Map.of("Base", 0, "Relay", 30, "Scout", 60);
+
+    /** Scout 60 m east of Base, Relay halfway, every pair beyond the cutoff: broken. */
     static final class OutOfRangeModel implements PropagationModel {
         private volatile boolean active;
 
@@ -77,7 +80,7 @@ class MapLabelWindowTest {
 
         @Override
         public Optional<Position> positionOf(String robot) {
-            return Optional.of(new Position(robot.equals("Base") ? 0 : 60, 0, 0));
+            return Optional.of(new Position(EAST.getOrDefault(robot, 60), 0, 0));
         }
 
         @Override
@@ -98,6 +101,51 @@ class MapLabelWindowTest {
         if (window != null) {
             window.close();
         }
+    }
+
+    @Test
+    void noLabelLiesOverARobotsDot() throws Exception {
+        JFrame frame = openAndStart();
+        int port = window.servers.running().port();
+        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot relay = new TestRobot(port, "127.0.0.3");
+                TestRobot scout = new TestRobot(port, "127.0.0.4")) {
+            base.initAccepting("Base");
+            relay.initAccepting("Relay");
+            scout.initAccepting("Scout");
+            MapPanel map = showMap(frame);
+            // Base - Scout's label would go at the middle of its line, where Relay's dot is.
+            until("the map draws the three pairs' labels", () -> {
+                map.canvas().repaint();
+                return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 3;
+            });
+            List<String> over = onEdt(() -> {
+                List<String> found = new java.util.ArrayList<>();
+                for (String robot : List.of("Base", "Relay", "Scout")) {
+                    java.awt.geom.Rectangle2D dot = MapPainter.dotBox(map.screenOf(robot));
+                    map.placedLabels().placed().stream().filter(dot::intersects).forEach(box -> found.add(robot + "'s dot under " + box));
+                }
+                return found;
+            });
+            org.junit.jupiter.api.Assertions.assertEquals(List.of(), over);
+        }
+    }
+
+    private JFrame openAndStart() throws Exception {
+        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(OutOfRangeModel::new)),
+                "OutOfRangeModel");
+        JFrame frame = window.frame;
+        JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));
+        run(start::doClick);
+        until("the server runs", () -> start.getText().equals("Stop"));
+        return frame;
+    }
+
+    private static MapPanel showMap(JFrame frame) {
+        run(() -> {
+            JTabbedPane tabs = find(frame.getContentPane(), JTabbedPane.class, "tabs");
+            tabs.setSelectedIndex(tabs.indexOfTab("Map"));
+        });
+        return onEdt(() -> all(frame.getContentPane(), MapPanel.class).get(0));
     }
 
     @Test

@@ -26,6 +26,11 @@ final class LabelPlacer {
         this.within = within;
     }
 
+    /** Takes a box no label may lie over that is not a name: a robot's dot. */
+    void block(Rectangle2D box) {
+        taken.add(box);
+    }
+
     /** Takes a box that is drawn whatever: a robot's name. */
     void take(Rectangle2D box) {
         taken.add(box);

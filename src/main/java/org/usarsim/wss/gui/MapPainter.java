@@ -20,7 +20,7 @@ import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * One painting of the {@link MapPanel}'s map: the grid, the walls, the selected robot's range, the
- * pairs' lines with their labels (never over a robot's name, nor over another label: a
+ * pairs' lines with their labels (never over a robot's name or dot, nor over another label: a
  * {@link LabelPlacer}), the robots, the legend and the scale, from the {@link MapData} and the
  * {@link MapTransform} it is given. Event thread.
  */
@@ -129,14 +129,21 @@ final class MapPainter {
         }
     }
 
-    /** The robots' names' boxes, taken first: a pair's label never lies over a name. */
+    /** The robots' names' and dots' boxes, taken first: a pair's label never lies over a name or a dot. */
     private void nameBoxes(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
         FontMetrics metrics = g.getFontMetrics(font.deriveFont(Font.BOLD, 12f));
         for (MapData.Robot robot : shown.robots()) {
             if (robot.position() != null) {
-                labels.take(nameBox(t.toScreen(robot.position().x(), robot.position().y()), robot.name(), metrics));
+                Point2D at = t.toScreen(robot.position().x(), robot.position().y());
+                labels.take(nameBox(at, robot.name(), metrics));
+                labels.block(dotBox(at));
             }
         }
+    }
+
+    /** The square a robot's dot is drawn in. */
+    static Rectangle2D dotBox(Point2D at) {
+        return new Rectangle2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT);
     }
 
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {

@@ -33,10 +33,7 @@ import org.usarsim.wss.model.WssEventListener;
 @Timeout(60)
 class MapLabelWindowTest {
 
-    /** How far east of Base each robot is, in metres (Scout 60, Relay halfway). */
-    private static final java.util.Map<String, Integer> EAST = java.util.Map.of("Base", 0, "Relay", 30, "Scout", 60);
-
-    /** Scout 60 m east of Base, Relay halfway, every pair beyond the cutoff: broken. */
+    /** Every pair beyond the cutoff, broken; by default Scout 60 m east of Base, Relay halfway. */
     static final class OutOfRangeModel implements PropagationModel {
         private volatile boolean active;
 
@@ -78,9 +75,21 @@ class MapLabelWindowTest {
             return false;
         }
 
+        /** Each robot's place, x and y in metres. */
+        private final java.util.Map<String, List<Integer>> at;
+
+        OutOfRangeModel() {
+            this(java.util.Map.of("Base", List.of(0, 0), "Relay", List.of(30, 0), "Scout", List.of(60, 0)));
+        }
+
+        OutOfRangeModel(java.util.Map<String, List<Integer>> at) {
+            this.at = at;
+        }
+
         @Override
         public Optional<Position> positionOf(String robot) {
-            return Optional.of(new Position(EAST.getOrDefault(robot, 60), 0, 0));
+            List<Integer> xy = at.getOrDefault(robot, List.of(60, 0));
+            return Optional.of(new Position(xy.get(0), xy.get(1), 0));
         }
 
         @Override
@@ -130,8 +139,59 @@ class MapLabelWindowTest {
         }
     }
 
+    @Test
+    void aLabelKeepsOffTheOtherPairsLines() throws Exception {
+        // Alpha - Delta east-west, Bravo - Charlie north-south a little east of its middle: Alpha - Delta's label, beside
+        // its middle, would be crossed by Bravo - Charlie's line.
+        java.util.Map<String, List<Integer>> cross = java.util.Map.of("Alpha", List.of(0, 0), "Bravo", List.of(33, -30),
+                "Charlie", List.of(33, 30), "Delta", List.of(60, 0));
+        JFrame frame = openAndStart(() -> new OutOfRangeModel(cross));
+        int port = window.servers.running().port();
+        List<TestRobot> robots = new java.util.ArrayList<>();
+        try {
+            int address = 2;
+            for (String name : List.of("Alpha", "Bravo", "Charlie", "Delta")) {
+                TestRobot robot = new TestRobot(port, "127.0.0." + address++);
+                robots.add(robot);
+                robot.initAccepting(name);
+            }
+            MapPanel map = showMap(frame);
+            until("the map draws the six pairs' labels", () -> {
+                map.canvas().repaint();
+                return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 6;
+            });
+            List<String> crossed = onEdt(() -> {
+                List<java.awt.geom.Line2D> lines = new java.util.ArrayList<>();
+                List<String> names = List.of("Alpha", "Bravo", "Charlie", "Delta");
+                for (int i = 0; i < names.size(); i++) {
+                    for (int j = i + 1; j < names.size(); j++) {
+                        lines.add(new java.awt.geom.Line2D.Double(map.screenOf(names.get(i)), map.screenOf(names.get(j))));
+                    }
+                }
+                List<String> found = new java.util.ArrayList<>();
+                for (java.awt.geom.Rectangle2D box : map.placedLabels().placed()) {
+                    // Its own line may touch it; no other may cross it.
+                    long crossing = lines.stream().filter(line -> line.intersects(box)).count();
+                    if (crossing > 1) {
+                        found.add(box + " crossed by " + crossing + " lines");
+                    }
+                }
+                return found;
+            });
+            org.junit.jupiter.api.Assertions.assertEquals(List.of(), crossed);
+        } finally {
+            for (TestRobot robot : robots) {
+                robot.close();
+            }
+        }
+    }
+
     private JFrame openAndStart() throws Exception {
-        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(OutOfRangeModel::new)),
+        return openAndStart(OutOfRangeModel::new);
+    }
+
+    private JFrame openAndStart(java.util.function.Supplier<PropagationModel> model) throws Exception {
+        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(model)),
                 "OutOfRangeModel");
         JFrame frame = window.frame;
         JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));

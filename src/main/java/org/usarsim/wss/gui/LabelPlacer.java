@@ -1,5 +1,6 @@
 package org.usarsim.wss.gui;
 
+import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.util.ArrayList;
@@ -19,6 +20,7 @@ final class LabelPlacer {
     private final List<Rectangle2D> names = new ArrayList<>();
     private final List<Rectangle2D> placed = new ArrayList<>();
     private final List<String> texts = new ArrayList<>();
+    private final List<Line2D> lines = new ArrayList<>();
     private int leftOut;
 
     /** Places labels inside {@code within}: the canvas. */
@@ -37,23 +39,41 @@ final class LabelPlacer {
         names.add(box);
     }
 
+    /** A pair's line: labels other than its own keep off it where they can. */
+    void line(Line2D segment) {
+        lines.add(segment);
+    }
+
     /**
      * The first box of {@code width} x {@code height} whose top left is one of {@code corners}
-     * (in order of preference), lies inside the canvas and overlaps no box taken, then taken for
-     * {@code text}; null when every one is cut or overlaps.
+     * (in order of preference), lies inside the canvas, overlaps no box taken and is crossed by no
+     * line but {@code own} (the label's own line, or null); failing that, the first that only lies
+     * inside and overlaps nothing (the map draws labels over the lines, on a light patch). Taken
+     * for {@code text}; null when every one is cut or overlaps.
      */
-    Rectangle2D place(List<Point2D> corners, double width, double height, String text) {
+    Rectangle2D place(List<Point2D> corners, double width, double height, String text, Line2D own) {
+        Rectangle2D crossed = null;
         for (Point2D corner : corners) {
             Rectangle2D box = new Rectangle2D.Double(corner.getX(), corner.getY(), width, height);
             if (within.contains(box) && taken.stream().noneMatch(box::intersects)) {
-                taken.add(box);
-                placed.add(box);
-                texts.add(text);
-                return box;
+                if (lines.stream().noneMatch(line -> line != own && line.intersects(box))) {
+                    return take(box, text);
+                }
+                crossed = crossed == null ? box : crossed;
             }
+        }
+        if (crossed != null) {
+            return take(crossed, text);
         }
         leftOut++;
         return null;
+    }
+
+    private Rectangle2D take(Rectangle2D box, String text) {
+        taken.add(box);
+        placed.add(box);
+        texts.add(text);
+        return box;
     }
 
     /** The boxes taken so far, in order. */

@@ -12,8 +12,10 @@ import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.shaping.Bitrate;
@@ -123,7 +125,7 @@ final class MapPainter {
         double above = at.getY() - DOT / 2.0 - metrics.getAscent() - metrics.getHeight() - 2;
         Rectangle2D box = labels.place(List.of(new Point2D.Double(at.getX() + DOT - 2, top),
                 new Point2D.Double(at.getX() - DOT - width, top), new Point2D.Double(at.getX() + DOT - 2, above),
-                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight(), label);
+                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight(), label, null);
         if (box != null) {
             label(g, label, box.getX() + 2, box.getY() + metrics.getAscent());
         }
@@ -146,27 +148,36 @@ final class MapPainter {
         return new Rectangle2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT);
     }
 
+    /** The lines first, then their labels, over every line (on their light patch) and off the others' lines where they can be. */
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
+        Map<MapData.Line, Line2D> drawn = new LinkedHashMap<>();
         for (MapData.Line line : shown.lines()) {
             Point2D a = screenOf(t, shown, line.first());
             Point2D b = screenOf(t, shown, line.second());
             if (a == null || b == null) {
                 continue;
             }
+            Line2D segment = new Line2D.Double(a, b);
             g.setColor(MapColours.of(line, shown.cutoff()));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
-            g.draw(new Line2D.Double(a, b));
+            g.draw(segment);
+            labels.line(segment);
+            drawn.put(line, segment);
+        }
+        g.setFont(font.deriveFont(Font.PLAIN, 10f));
+        FontMetrics metrics = g.getFontMetrics();
+        drawn.forEach((line, segment) -> {
             String text = lineLabel(line);
             if (!text.isEmpty()) {
-                g.setFont(font.deriveFont(Font.PLAIN, 10f));
-                FontMetrics metrics = g.getFontMetrics();
-                Rectangle2D box = labels.place(LabelPlacer.alongLine(a, b, metrics.stringWidth(text) + 4,
-                        metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight(), text);
+                double width = metrics.stringWidth(text) + 4;
+                Rectangle2D box = labels.place(LabelPlacer.alongLine(segment.getP1(), segment.getP2(), width, metrics.getHeight()), width,
+                        metrics.getHeight(), text, segment);
                 if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
+                    g.setColor(MapColours.of(line, shown.cutoff()));
                     label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
                 }
             }
-        }
+        });
     }
 
     /** Text in the current colour and font on a light patch, legible over lines and walls. */

@@ -77,19 +77,30 @@ class MapLabelWindowTest {
 
         /** Each robot's place, x and y in metres. */
         private final java.util.Map<String, List<Integer>> at;
+        private final List<org.usarsim.wss.model.Wall> walls;
 
         OutOfRangeModel() {
             this(java.util.Map.of("Base", List.of(0, 0), "Relay", List.of(30, 0), "Scout", List.of(60, 0)));
         }
 
         OutOfRangeModel(java.util.Map<String, List<Integer>> at) {
+            this(at, List.of());
+        }
+
+        OutOfRangeModel(java.util.Map<String, List<Integer>> at, List<org.usarsim.wss.model.Wall> walls) {
             this.at = at;
+            this.walls = walls;
         }
 
         @Override
         public Optional<Position> positionOf(String robot) {
             List<Integer> xy = at.getOrDefault(robot, List.of(60, 0));
             return Optional.of(new Position(xy.get(0), xy.get(1), 0));
+        }
+
+        @Override
+        public List<org.usarsim.wss.model.Wall> walls() {
+            return walls;
         }
 
         @Override
@@ -183,6 +194,49 @@ class MapLabelWindowTest {
             for (TestRobot robot : robots) {
                 robot.close();
             }
+        }
+    }
+
+    @Test
+    void aWallThroughARobotsNameDoesNotStrikeItThrough() throws Exception {
+        // Base and Scout 60 m apart, a wall along y = 0.8 m: through Base's name, drawn right of its dot and above it.
+        java.util.Map<String, List<Integer>> apart = java.util.Map.of("Base", List.of(0, 0), "Scout", List.of(60, 0));
+        List<org.usarsim.wss.model.Wall> wall = List.of(new org.usarsim.wss.model.Wall(-10, 0.8, 70, 0.8));
+        JFrame frame = openAndStart(() -> new OutOfRangeModel(apart, wall));
+        int port = window.servers.running().port();
+        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
+            base.initAccepting("Base");
+            scout.initAccepting("Scout");
+            MapPanel map = showMap(frame);
+            until("the map draws both names", () -> {
+                map.canvas().repaint();
+                return map.placedLabels().names().size() == 2 && map.data().walls().size() == 1;
+            });
+            String struck = onEdt(() -> {
+                javax.swing.JComponent canvas = map.canvas();
+                java.awt.image.BufferedImage image = new java.awt.image.BufferedImage(canvas.getWidth(), canvas.getHeight(),
+                        java.awt.image.BufferedImage.TYPE_INT_RGB);
+                java.awt.Graphics2D g = image.createGraphics();
+                canvas.paint(g);
+                g.dispose();
+                java.awt.geom.Rectangle2D name = map.placedLabels().names().get(0);
+                java.awt.geom.Point2D wallAt = map.transform().toScreen(0, 0.8);
+                if (wallAt.getY() < name.getMinY() || wallAt.getY() > name.getMaxY()) {
+                    return "the wall (y " + wallAt.getY() + ") misses the name " + name;
+                }
+                int wallPixels = 0;
+                for (int x = (int) name.getMinX(); x < name.getMaxX(); x++) {
+                    for (int y = (int) name.getMinY(); y < name.getMaxY(); y++) {
+                        java.awt.Color pixel = new java.awt.Color(image.getRGB(x, y));
+                        if (Math.abs(pixel.getRed() - MapPainter.WALL.getRed()) < 24 && Math.abs(pixel.getGreen() - MapPainter.WALL.getGreen()) < 24
+                                && Math.abs(pixel.getBlue() - MapPainter.WALL.getBlue()) < 24) {
+                            wallPixels++;
+                        }
+                    }
+                }
+                return wallPixels == 0 ? "" : wallPixels + " pixels of the wall's colour in the name's box " + name;
+            });
+            org.junit.jupiter.api.Assertions.assertEquals("", struck);
         }
     }
 

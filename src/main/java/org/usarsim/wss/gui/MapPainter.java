@@ -29,7 +29,7 @@ import org.usarsim.wss.shaping.Bitrate;
 final class MapPainter {
 
     private static final int DOT = MapPanel.DOT;
-    private static final Color WALL = new Color(0x40, 0x40, 0x48);
+    static final Color WALL = new Color(0x40, 0x40, 0x48);
     private static final Color ROBOT = new Color(0x1F, 0x4E, 0x9A);
     private static final Color SELECTED = new Color(0xD0, 0x40, 0x20);
     private static final Color RANGE = new Color(0x1F, 0x4E, 0x9A);
@@ -206,7 +206,8 @@ final class MapPainter {
             boolean isSelected = robot.name().equals(selected);
             g.setColor(isSelected ? SELECTED : ROBOT);
             g.fill(new Ellipse2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT));
-            g.drawString(robot.name(), (float) at.getX() + DOT, (float) at.getY() - DOT / 2f);
+            // On a light patch, as the labels: a wall or a line under the name does not strike it through.
+            label(g, robot.name(), at.getX() + DOT, at.getY() - DOT / 2.0);
         }
     }
 

@@ -21,60 +21,20 @@ import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.RobotLinkModel;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StubModel;
 
 /**
- * Issue 36, item 5 (the last part), read off the real window's map under a display: a broken
- * pair's label says "broken" after its strength (docs/gui.md: a pair that is not up says its
- * state), as the map painted it.
+ * Issue 36, item 5, read off the real window's map under a display, as the map painted it: a
+ * broken pair's label says "broken" after its strength (docs/gui.md: a pair that is not up says
+ * its state); no label lies over a robot's dot; a label keeps off the other pairs' lines; a wall
+ * through a robot's name does not strike it through.
  */
 @Tag("slow")
 @Timeout(60)
 class MapLabelWindowTest {
 
     /** Every pair beyond the cutoff, broken; by default Scout 60 m east of Base, Relay halfway. */
-    static final class OutOfRangeModel implements PropagationModel {
-        private volatile boolean active;
-
-        @Override
-        public String name() {
-            return "OutOfRangeModel";
-        }
-
-        @Override
-        public void setRobotLinkModel(RobotLinkModel linkModel) {
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-        }
-
-        @Override
-        public void start() {
-            active = true;
-        }
-
-        @Override
-        public void shutdown() {
-            active = false;
-        }
-
-        @Override
-        public boolean isActive() {
-            return active;
-        }
-
-        @Override
-        public double getSignalStrengthForPair(String from, String to) {
-            return -94.1;
-        }
-
-        @Override
-        public boolean connectionIsPossibleForPair(String from, String to) {
-            return false;
-        }
-
+    static final class OutOfRangeModel extends StubModel {
         /** Each robot's place, x and y in metres. */
         private final java.util.Map<String, List<Integer>> at;
         private final List<org.usarsim.wss.model.Wall> walls;
@@ -90,6 +50,21 @@ class MapLabelWindowTest {
         OutOfRangeModel(java.util.Map<String, List<Integer>> at, List<org.usarsim.wss.model.Wall> walls) {
             this.at = at;
             this.walls = walls;
+        }
+
+        @Override
+        public String name() {
+            return "OutOfRangeModel";
+        }
+
+        @Override
+        public double getSignalStrengthForPair(String from, String to) {
+            return -94.1;
+        }
+
+        @Override
+        public boolean connectionIsPossibleForPair(String from, String to) {
+            return false;
         }
 
         @Override

@@ -126,6 +126,37 @@ class MapLabelWindowTest {
     }
 
     @Test
+    void theOuterPairOfThreeInALineIsDrawnAroundTheMiddleOne() throws Exception {
+        JFrame frame = openAndStart();
+        int port = window.servers.running().port();
+        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot relay = new TestRobot(port, "127.0.0.3");
+                TestRobot scout = new TestRobot(port, "127.0.0.4")) {
+            base.initAccepting("Base");
+            relay.initAccepting("Relay");
+            scout.initAccepting("Scout");
+            MapPanel map = showMap(frame);
+            until("the map draws the three pairs' lines", () -> {
+                map.canvas().repaint();
+                return map.placedLabels().lines().size() == 3;
+            });
+            // Each line as drawn touches two dots, its ends': Base - Scout's does not run through Relay's, under the two shorter lines.
+            List<String> through = onEdt(() -> {
+                List<String> found = new java.util.ArrayList<>();
+                for (java.awt.Shape line : map.placedLabels().lines()) {
+                    java.awt.Shape outline = new java.awt.BasicStroke(1).createStrokedShape(line);
+                    List<String> dots = List.of("Base", "Relay", "Scout").stream()
+                            .filter(robot -> outline.intersects(MapPainter.dotBox(map.screenOf(robot)))).toList();
+                    if (dots.size() > 2) {
+                        found.add(line + " through " + dots);
+                    }
+                }
+                return found;
+            });
+            org.junit.jupiter.api.Assertions.assertEquals(List.of(), through);
+        }
+    }
+
+    @Test
     void aLabelKeepsOffTheOtherPairsLines() throws Exception {
         // Alpha - Delta east-west, Bravo - Charlie north-south a little east of its middle: Alpha - Delta's label, beside
         // its middle, would be crossed by Bravo - Charlie's line.

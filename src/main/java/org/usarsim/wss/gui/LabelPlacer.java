@@ -1,5 +1,7 @@
 package org.usarsim.wss.gui;
 
+import java.awt.BasicStroke;
+import java.awt.Shape;
 import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
 import java.awt.geom.Rectangle2D;
@@ -20,7 +22,9 @@ final class LabelPlacer {
     private final List<Rectangle2D> names = new ArrayList<>();
     private final List<Rectangle2D> placed = new ArrayList<>();
     private final List<String> texts = new ArrayList<>();
-    private final List<Line2D> lines = new ArrayList<>();
+    /** The pairs' lines as drawn (a segment, or a curve around a robot in the way) and the outline each covers. */
+    private final List<Shape> lines = new ArrayList<>();
+    private final List<Shape> outlines = new ArrayList<>();
     private int leftOut;
 
     /** Places labels inside {@code within}: the canvas. */
@@ -39,9 +43,24 @@ final class LabelPlacer {
         names.add(box);
     }
 
-    /** A pair's line: labels other than its own keep off it where they can. */
-    void line(Line2D segment) {
-        lines.add(segment);
+    /** A pair's line as drawn, a segment or a curve: labels other than its own keep off it where they can. */
+    void line(Shape drawn) {
+        lines.add(drawn);
+        outlines.add(drawn instanceof Line2D ? drawn : new BasicStroke(1).createStrokedShape(drawn));
+    }
+
+    /** The pairs' lines as drawn, in order. */
+    List<Shape> lines() {
+        return List.copyOf(lines);
+    }
+
+    private boolean crossed(Rectangle2D box, Shape own) {
+        for (int i = 0; i < lines.size(); i++) {
+            if (lines.get(i) != own && outlines.get(i).intersects(box)) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -51,12 +70,12 @@ final class LabelPlacer {
      * inside and overlaps nothing (the map draws labels over the lines, on a light patch). Taken
      * for {@code text}; null when every one is cut or overlaps.
      */
-    Rectangle2D place(List<Point2D> corners, double width, double height, String text, Line2D own) {
+    Rectangle2D place(List<Point2D> corners, double width, double height, String text, Shape own) {
         Rectangle2D crossed = null;
         for (Point2D corner : corners) {
             Rectangle2D box = new Rectangle2D.Double(corner.getX(), corner.getY(), width, height);
             if (within.contains(box) && taken.stream().noneMatch(box::intersects)) {
-                if (lines.stream().noneMatch(line -> line != own && line.intersects(box))) {
+                if (!crossed(box, own)) {
                     return take(box, text);
                 }
                 crossed = crossed == null ? box : crossed;
@@ -106,10 +125,19 @@ final class LabelPlacer {
      * middle first, then beside points a third and two thirds along, each above and below.
      */
     static List<Point2D> alongLine(Point2D a, Point2D b, double width, double height) {
+        return alongCurve(a, new Point2D.Double((a.getX() + b.getX()) / 2, (a.getY() + b.getY()) / 2), b, width, height);
+    }
+
+    /**
+     * As {@link #alongLine}, along the quadratic curve from {@code a} to {@code b} with control
+     * point {@code control} (a straight line when it is the middle).
+     */
+    static List<Point2D> alongCurve(Point2D a, Point2D control, Point2D b, double width, double height) {
         List<Point2D> corners = new ArrayList<>();
         for (double along : new double[] {0.5, 1 / 3.0, 2 / 3.0, 0.25, 0.75}) {
-            double x = a.getX() + (b.getX() - a.getX()) * along;
-            double y = a.getY() + (b.getY() - a.getY()) * along;
+            double u = 1 - along;
+            double x = u * u * a.getX() + 2 * u * along * control.getX() + along * along * b.getX();
+            double y = u * u * a.getY() + 2 * u * along * control.getY() + along * along * b.getY();
             corners.add(new Point2D.Double(x + 4, y - 4 - height));
             corners.add(new Point2D.Double(x + 4, y + 4));
             corners.add(new Point2D.Double(x - 4 - width, y - 4 - height));

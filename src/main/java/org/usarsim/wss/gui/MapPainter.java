@@ -6,10 +6,12 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Shape;
 import java.awt.Stroke;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
+import java.awt.geom.QuadCurve2D;
 import java.awt.geom.Rectangle2D;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -148,36 +150,74 @@ final class MapPainter {
         return new Rectangle2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT);
     }
 
-    /** The lines first, then their labels, over every line (on their light patch) and off the others' lines where they can be. */
+    /**
+     * The lines first, then their labels, over every line (on their light patch) and off the
+     * others' lines where they can be. A line that would run through another robot's dot (three
+     * robots in a line) is drawn as a curve bowed around it, its label along the curve.
+     */
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
-        Map<MapData.Line, Line2D> drawn = new LinkedHashMap<>();
+        Map<MapData.Line, List<Point2D>> drawn = new LinkedHashMap<>();
         for (MapData.Line line : shown.lines()) {
             Point2D a = screenOf(t, shown, line.first());
             Point2D b = screenOf(t, shown, line.second());
             if (a == null || b == null) {
                 continue;
             }
-            Line2D segment = new Line2D.Double(a, b);
+            Point2D control = control(a, b, t, shown, line);
+            Shape path = control == null ? new Line2D.Double(a, b) : new QuadCurve2D.Double(a.getX(), a.getY(), control.getX(),
+                    control.getY(), b.getX(), b.getY());
             g.setColor(MapColours.of(line, shown.cutoff()));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
-            g.draw(segment);
-            labels.line(segment);
-            drawn.put(line, segment);
+            g.draw(path);
+            labels.line(path);
+            drawn.put(line, List.of(a, control == null ? middle(a, b) : control, b));
         }
+        List<Shape> paths = labels.lines();
         g.setFont(font.deriveFont(Font.PLAIN, 10f));
         FontMetrics metrics = g.getFontMetrics();
-        drawn.forEach((line, segment) -> {
-            String text = lineLabel(line);
+        int i = 0;
+        for (Map.Entry<MapData.Line, List<Point2D>> entry : drawn.entrySet()) {
+            Shape own = paths.get(i++);
+            String text = lineLabel(entry.getKey());
             if (!text.isEmpty()) {
+                List<Point2D> abc = entry.getValue();
                 double width = metrics.stringWidth(text) + 4;
-                Rectangle2D box = labels.place(LabelPlacer.alongLine(segment.getP1(), segment.getP2(), width, metrics.getHeight()), width,
-                        metrics.getHeight(), text, segment);
+                Rectangle2D box = labels.place(LabelPlacer.alongCurve(abc.get(0), abc.get(1), abc.get(2), width, metrics.getHeight()),
+                        width, metrics.getHeight(), text, own);
                 if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
-                    g.setColor(MapColours.of(line, shown.cutoff()));
+                    g.setColor(MapColours.of(entry.getKey(), shown.cutoff()));
                     label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
                 }
             }
-        });
+        }
+    }
+
+    /** How far a line bowed around a robot in its way passes from the straight one, at most, in pixels. */
+    private static final double BOW = 4 * DOT;
+
+    /**
+     * The control point of the curve the pair's line is drawn as when another robot's dot lies on
+     * the straight line between the two (so that the line is not hidden under the two shorter
+     * ones, nor its label left floating): to the left of a to b, bowing the curve's middle half
+     * of {@link #BOW} (or a fifth of its length) off the straight line; null when none is in the way.
+     */
+    private static Point2D control(Point2D a, Point2D b, MapTransform t, MapData shown, MapData.Line line) {
+        Line2D straight = new Line2D.Double(a, b);
+        boolean inTheWay = shown.robots().stream().filter(robot -> robot.position() != null)
+                .filter(robot -> !robot.name().equals(line.first()) && !robot.name().equals(line.second()))
+                .anyMatch(robot -> straight.ptSegDist(t.toScreen(robot.position().x(), robot.position().y())) < DOT);
+        double length = a.distance(b);
+        if (!inTheWay || length == 0) {
+            return null;
+        }
+        // The curve's middle is half as far off the straight line as its control point.
+        double off = 2 * Math.min(BOW, length / 5);
+        Point2D middle = middle(a, b);
+        return new Point2D.Double(middle.getX() + (a.getY() - b.getY()) / length * off, middle.getY() + (b.getX() - a.getX()) / length * off);
+    }
+
+    private static Point2D middle(Point2D a, Point2D b) {
+        return new Point2D.Double((a.getX() + b.getX()) / 2, (a.getY() + b.getY()) / 2);
     }
 
     /** Text in the current colour and font on a light patch, legible over lines and walls. */

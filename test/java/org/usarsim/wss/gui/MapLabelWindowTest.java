@@ -85,6 +85,7 @@ class MapLabelWindowTest {
     }
 
     private OpenWindow window;
+    private final List<TestRobot> robots = new java.util.ArrayList<>();
 
     @BeforeAll
     static void display() {
@@ -93,6 +94,9 @@ class MapLabelWindowTest {
 
     @AfterEach
     void close() throws Exception {
+        for (TestRobot robot : robots) {
+            robot.close();
+        }
         if (window != null) {
             window.close();
         }
@@ -100,60 +104,46 @@ class MapLabelWindowTest {
 
     @Test
     void noLabelLiesOverARobotsDot() throws Exception {
-        JFrame frame = openAndStart();
-        int port = window.servers.running().port();
-        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot relay = new TestRobot(port, "127.0.0.3");
-                TestRobot scout = new TestRobot(port, "127.0.0.4")) {
-            base.initAccepting("Base");
-            relay.initAccepting("Relay");
-            scout.initAccepting("Scout");
-            MapPanel map = showMap(frame);
-            // Base - Scout's label would go at the middle of its line, where Relay's dot is.
-            until("the map draws the three pairs' labels", () -> {
-                map.canvas().repaint();
-                return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 3;
-            });
-            List<String> over = onEdt(() -> {
-                List<String> found = new java.util.ArrayList<>();
-                for (String robot : List.of("Base", "Relay", "Scout")) {
-                    java.awt.geom.Rectangle2D dot = MapPainter.dotBox(map.screenOf(robot));
-                    map.placedLabels().placed().stream().filter(dot::intersects).forEach(box -> found.add(robot + "'s dot under " + box));
-                }
-                return found;
-            });
-            org.junit.jupiter.api.Assertions.assertEquals(List.of(), over);
-        }
+        openAndStart(OutOfRangeModel::new);
+        MapPanel map = mapOf("Base", "Relay", "Scout");
+        // Base - Scout's label would go at the middle of its line, where Relay's dot is.
+        until("the map draws the three pairs' labels", () -> {
+            map.canvas().repaint();
+            return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 3;
+        });
+        List<String> over = onEdt(() -> {
+            List<String> found = new java.util.ArrayList<>();
+            for (String robot : List.of("Base", "Relay", "Scout")) {
+                java.awt.geom.Rectangle2D dot = MapPainter.dotBox(map.screenOf(robot));
+                map.placedLabels().placed().stream().filter(dot::intersects).forEach(box -> found.add(robot + "'s dot under " + box));
+            }
+            return found;
+        });
+        org.junit.jupiter.api.Assertions.assertEquals(List.of(), over);
     }
 
     @Test
     void theOuterPairOfThreeInALineIsDrawnAroundTheMiddleOne() throws Exception {
-        JFrame frame = openAndStart();
-        int port = window.servers.running().port();
-        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot relay = new TestRobot(port, "127.0.0.3");
-                TestRobot scout = new TestRobot(port, "127.0.0.4")) {
-            base.initAccepting("Base");
-            relay.initAccepting("Relay");
-            scout.initAccepting("Scout");
-            MapPanel map = showMap(frame);
-            until("the map draws the three pairs' lines", () -> {
-                map.canvas().repaint();
-                return map.placedLabels().lines().size() == 3;
-            });
-            // Each line as drawn touches two dots, its ends': Base - Scout's does not run through Relay's, under the two shorter lines.
-            List<String> through = onEdt(() -> {
-                List<String> found = new java.util.ArrayList<>();
-                for (java.awt.Shape line : map.placedLabels().lines()) {
-                    java.awt.Shape outline = new java.awt.BasicStroke(1).createStrokedShape(line);
-                    List<String> dots = List.of("Base", "Relay", "Scout").stream()
-                            .filter(robot -> outline.intersects(MapPainter.dotBox(map.screenOf(robot)))).toList();
-                    if (dots.size() > 2) {
-                        found.add(line + " through " + dots);
-                    }
+        openAndStart(OutOfRangeModel::new);
+        MapPanel map = mapOf("Base", "Relay", "Scout");
+        until("the map draws the three pairs' lines", () -> {
+            map.canvas().repaint();
+            return map.placedLabels().lines().size() == 3;
+        });
+        // Each line as drawn touches two dots, its ends': Base - Scout's does not run through Relay's, under the two shorter lines.
+        List<String> through = onEdt(() -> {
+            List<String> found = new java.util.ArrayList<>();
+            for (java.awt.Shape line : map.placedLabels().lines()) {
+                java.awt.Shape outline = new java.awt.BasicStroke(1).createStrokedShape(line);
+                List<String> dots = List.of("Base", "Relay", "Scout").stream()
+                        .filter(robot -> outline.intersects(MapPainter.dotBox(map.screenOf(robot)))).toList();
+                if (dots.size() > 2) {
+                    found.add(line + " through " + dots);
                 }
-                return found;
-            });
-            org.junit.jupiter.api.Assertions.assertEquals(List.of(), through);
-        }
+            }
+            return found;
+        });
+        org.junit.jupiter.api.Assertions.assertEquals(List.of(), through);
     }
 
     @Test
@@ -162,45 +152,31 @@ class MapLabelWindowTest {
         // its middle, would be crossed by Bravo - Charlie's line.
         java.util.Map<String, List<Integer>> cross = java.util.Map.of("Alpha", List.of(0, 0), "Bravo", List.of(33, -30),
                 "Charlie", List.of(33, 30), "Delta", List.of(60, 0));
-        JFrame frame = openAndStart(() -> new OutOfRangeModel(cross));
-        int port = window.servers.running().port();
-        List<TestRobot> robots = new java.util.ArrayList<>();
-        try {
-            int address = 2;
-            for (String name : List.of("Alpha", "Bravo", "Charlie", "Delta")) {
-                TestRobot robot = new TestRobot(port, "127.0.0." + address++);
-                robots.add(robot);
-                robot.initAccepting(name);
-            }
-            MapPanel map = showMap(frame);
-            until("the map draws the six pairs' labels", () -> {
-                map.canvas().repaint();
-                return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 6;
-            });
-            List<String> crossed = onEdt(() -> {
-                List<java.awt.geom.Line2D> lines = new java.util.ArrayList<>();
-                List<String> names = List.of("Alpha", "Bravo", "Charlie", "Delta");
-                for (int i = 0; i < names.size(); i++) {
-                    for (int j = i + 1; j < names.size(); j++) {
-                        lines.add(new java.awt.geom.Line2D.Double(map.screenOf(names.get(i)), map.screenOf(names.get(j))));
-                    }
+        openAndStart(() -> new OutOfRangeModel(cross));
+        MapPanel map = mapOf("Alpha", "Bravo", "Charlie", "Delta");
+        until("the map draws the six pairs' labels", () -> {
+            map.canvas().repaint();
+            return map.placedLabels().texts().size() + map.placedLabels().leftOut() == 6;
+        });
+        List<String> crossed = onEdt(() -> {
+            List<java.awt.geom.Line2D> lines = new java.util.ArrayList<>();
+            List<String> names = List.of("Alpha", "Bravo", "Charlie", "Delta");
+            for (int i = 0; i < names.size(); i++) {
+                for (int j = i + 1; j < names.size(); j++) {
+                    lines.add(new java.awt.geom.Line2D.Double(map.screenOf(names.get(i)), map.screenOf(names.get(j))));
                 }
-                List<String> found = new java.util.ArrayList<>();
-                for (java.awt.geom.Rectangle2D box : map.placedLabels().placed()) {
-                    // Its own line may touch it; no other may cross it.
-                    long crossing = lines.stream().filter(line -> line.intersects(box)).count();
-                    if (crossing > 1) {
-                        found.add(box + " crossed by " + crossing + " lines");
-                    }
-                }
-                return found;
-            });
-            org.junit.jupiter.api.Assertions.assertEquals(List.of(), crossed);
-        } finally {
-            for (TestRobot robot : robots) {
-                robot.close();
             }
-        }
+            List<String> found = new java.util.ArrayList<>();
+            for (java.awt.geom.Rectangle2D box : map.placedLabels().placed()) {
+                // Its own line may touch it; no other may cross it.
+                long crossing = lines.stream().filter(line -> line.intersects(box)).count();
+                if (crossing > 1) {
+                    found.add(box + " crossed by " + crossing + " lines");
+                }
+            }
+            return found;
+        });
+        org.junit.jupiter.api.Assertions.assertEquals(List.of(), crossed);
     }
 
     @Test
@@ -208,56 +184,57 @@ class MapLabelWindowTest {
         // Base and Scout 60 m apart, a wall along y = 0.8 m: through Base's name, drawn right of its dot and above it.
         java.util.Map<String, List<Integer>> apart = java.util.Map.of("Base", List.of(0, 0), "Scout", List.of(60, 0));
         List<org.usarsim.wss.model.Wall> wall = List.of(new org.usarsim.wss.model.Wall(-10, 0.8, 70, 0.8));
-        JFrame frame = openAndStart(() -> new OutOfRangeModel(apart, wall));
-        int port = window.servers.running().port();
-        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
-            base.initAccepting("Base");
-            scout.initAccepting("Scout");
-            MapPanel map = showMap(frame);
-            until("the map draws both names", () -> {
-                map.canvas().repaint();
-                return map.placedLabels().names().size() == 2 && map.data().walls().size() == 1;
-            });
-            String struck = onEdt(() -> {
-                javax.swing.JComponent canvas = map.canvas();
-                java.awt.image.BufferedImage image = new java.awt.image.BufferedImage(canvas.getWidth(), canvas.getHeight(),
-                        java.awt.image.BufferedImage.TYPE_INT_RGB);
-                java.awt.Graphics2D g = image.createGraphics();
-                canvas.paint(g);
-                g.dispose();
-                java.awt.geom.Rectangle2D name = map.placedLabels().names().get(0);
-                java.awt.geom.Point2D wallAt = map.transform().toScreen(0, 0.8);
-                if (wallAt.getY() < name.getMinY() || wallAt.getY() > name.getMaxY()) {
-                    return "the wall (y " + wallAt.getY() + ") misses the name " + name;
-                }
-                int wallPixels = 0;
-                for (int x = (int) name.getMinX(); x < name.getMaxX(); x++) {
-                    for (int y = (int) name.getMinY(); y < name.getMaxY(); y++) {
-                        java.awt.Color pixel = new java.awt.Color(image.getRGB(x, y));
-                        if (Math.abs(pixel.getRed() - MapPainter.WALL.getRed()) < 24 && Math.abs(pixel.getGreen() - MapPainter.WALL.getGreen()) < 24
-                                && Math.abs(pixel.getBlue() - MapPainter.WALL.getBlue()) < 24) {
-                            wallPixels++;
-                        }
+        openAndStart(() -> new OutOfRangeModel(apart, wall));
+        MapPanel map = mapOf("Base", "Scout");
+        until("the map draws both names", () -> {
+            map.canvas().repaint();
+            return map.placedLabels().names().size() == 2 && map.data().walls().size() == 1;
+        });
+        String struck = onEdt(() -> {
+            javax.swing.JComponent canvas = map.canvas();
+            java.awt.image.BufferedImage image = new java.awt.image.BufferedImage(canvas.getWidth(), canvas.getHeight(),
+                    java.awt.image.BufferedImage.TYPE_INT_RGB);
+            java.awt.Graphics2D g = image.createGraphics();
+            canvas.paint(g);
+            g.dispose();
+            java.awt.geom.Rectangle2D name = map.placedLabels().names().get(0);
+            java.awt.geom.Point2D wallAt = map.transform().toScreen(0, 0.8);
+            if (wallAt.getY() < name.getMinY() || wallAt.getY() > name.getMaxY()) {
+                return "the wall (y " + wallAt.getY() + ") misses the name " + name;
+            }
+            int wallPixels = 0;
+            for (int x = (int) name.getMinX(); x < name.getMaxX(); x++) {
+                for (int y = (int) name.getMinY(); y < name.getMaxY(); y++) {
+                    java.awt.Color pixel = new java.awt.Color(image.getRGB(x, y));
+                    if (Math.abs(pixel.getRed() - MapPainter.WALL.getRed()) < 24 && Math.abs(pixel.getGreen() - MapPainter.WALL.getGreen()) < 24
+                            && Math.abs(pixel.getBlue() - MapPainter.WALL.getBlue()) < 24) {
+                        wallPixels++;
                     }
                 }
-                return wallPixels == 0 ? "" : wallPixels + " pixels of the wall's colour in the name's box " + name;
-            });
-            org.junit.jupiter.api.Assertions.assertEquals("", struck);
+            }
+            return wallPixels == 0 ? "" : wallPixels + " pixels of the wall's colour in the name's box " + name;
+        });
+        org.junit.jupiter.api.Assertions.assertEquals("", struck);
+    }
+
+    /** Registers robots of these names, each from an address of its own, and shows the map. */
+    private MapPanel mapOf(String... names) throws Exception {
+        int port = window.servers.running().port();
+        for (String name : names) {
+            TestRobot robot = new TestRobot(port, "127.0.0." + (2 + robots.size()));
+            robots.add(robot);
+            robot.initAccepting(name);
         }
+        return showMap(window.frame);
     }
 
-    private JFrame openAndStart() throws Exception {
-        return openAndStart(OutOfRangeModel::new);
-    }
-
-    private JFrame openAndStart(java.util.function.Supplier<PropagationModel> model) throws Exception {
+    private void openAndStart(java.util.function.Supplier<PropagationModel> model) throws Exception {
         window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(model)),
                 "OutOfRangeModel");
         JFrame frame = window.frame;
         JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));
         run(start::doClick);
         until("the server runs", () -> start.getText().equals("Stop"));
-        return frame;
     }
 
     private static MapPanel showMap(JFrame frame) {
@@ -270,25 +247,11 @@ class MapLabelWindowTest {
 
     @Test
     void aBrokenPairsLabelSaysBroken() throws Exception {
-        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(OutOfRangeModel::new)),
-                "OutOfRangeModel");
-        JFrame frame = window.frame;
-        JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));
-        run(start::doClick);
-        until("the server runs", () -> start.getText().equals("Stop"));
-        int port = window.servers.running().port();
-        try (TestRobot base = new TestRobot(port, "127.0.0.2"); TestRobot scout = new TestRobot(port, "127.0.0.3")) {
-            base.initAccepting("Base");
-            scout.initAccepting("Scout");
-            MapPanel map = onEdt(() -> all(frame.getContentPane(), MapPanel.class).get(0));
-            run(() -> {
-                JTabbedPane tabs = find(frame.getContentPane(), JTabbedPane.class, "tabs");
-                tabs.setSelectedIndex(tabs.indexOfTab("Map"));
-            });
-            until("the map draws the pair's label, saying its state: " + onEdt(() -> map.placedLabels().texts()), () -> {
-                map.canvas().repaint(); // painted anew at the next turn of the event thread
-                return map.placedLabels().texts().contains("-94.1 dBm, broken");
-            });
-        }
+        openAndStart(OutOfRangeModel::new);
+        MapPanel map = mapOf("Base", "Scout");
+        until("the map draws the pair's label, saying its state", () -> {
+            map.canvas().repaint(); // painted anew at the next turn of the event thread
+            return map.placedLabels().texts().contains("-94.1 dBm, broken");
+        });
     }
 }

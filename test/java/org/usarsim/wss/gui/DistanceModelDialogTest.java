@@ -108,6 +108,28 @@ class DistanceModelDialogTest {
         return Gui.onEdt(() -> Gui.find(dialog, JLabel.class, name).getText());
     }
 
+    /** The note beside the cutoff distance, as plain text (its tooltip, which says it in full). */
+    private String note() {
+        JLabel note = Gui.onEdt(() -> Gui.find(dialog, JLabel.class, DistanceModelDialog.RANGE_NOTE));
+        return Gui.onEdt(() -> note.getToolTipText() != null ? note.getToolTipText() : note.getText());
+    }
+
+    /**
+     * Whether a label shows its whole text in the room it has: a plain text no wider, an HTML one
+     * wrapped within its width to no more lines than its height holds. Event thread.
+     */
+    static boolean whole(JLabel label) {
+        java.awt.Insets insets = label.getInsets();
+        int width = label.getWidth() - insets.left - insets.right;
+        int height = label.getHeight() - insets.top - insets.bottom;
+        javax.swing.text.View html = (javax.swing.text.View) label.getClientProperty(javax.swing.plaf.basic.BasicHTML.propertyKey);
+        if (html == null) {
+            return label.getFontMetrics(label.getFont()).stringWidth(label.getText()) <= width;
+        }
+        html.setSize(width, height);
+        return html.getMinimumSpan(javax.swing.text.View.X_AXIS) <= width && html.getPreferredSpan(javax.swing.text.View.Y_AXIS) <= height;
+    }
+
     private void waitClosed() {
         Gui.until("the dialog is closed", () -> !dialog.isDisplayable());
     }
@@ -243,7 +265,7 @@ class DistanceModelDialogTest {
             type("distance.pd0", bad[1]);
             type(DistanceModelDialog.CUTOFF_DISTANCE, bad[2]);
             assertEquals("1", text("distance.n"), "N is not touched: " + what);
-            assertEquals("no N > 0 gives this distance: " + bad[3], label(DistanceModelDialog.RANGE_NOTE), what);
+            assertEquals("no N > 0 gives this distance: " + bad[3], note(), what);
             assertEquals(DistanceModelDialog.INVALID, Gui.onEdt(field(DistanceModelDialog.CUTOFF_DISTANCE)::getBackground), what);
             // in full under the groups at once, as the note beside the field is cut short
             assertTrue(label(DistanceModelDialog.MESSAGE).contains("Cutoff distance (m): '" + bad[2] + "': no N > 0 gives this distance: "
@@ -263,6 +285,19 @@ class DistanceModelDialogTest {
         click(DistanceModelDialog.OK);
         waitClosed();
         assertEquals("2", preferences.load(DISTANCE_MODEL).get("distance.n"));
+    }
+
+    @Test
+    void theObstacleDialogsNoteOnARefusedDistanceShowsWholeAndIsItsTooltip() {
+        open(new ObstaclePropagationModel(), true);
+        type("distance.cutoff", "-93");
+        type("distance.pd0", "-49.67");
+        type(DistanceModelDialog.CUTOFF_DISTANCE, "1.5");
+        String why = "no N > 0 gives this distance: with Cutoff below Pd0 it must be beyond d0 (2 m)";
+        assertEquals(why, note(), "the tooltip says it whole");
+        JLabel note = Gui.onEdt(() -> Gui.find(dialog, JLabel.class, DistanceModelDialog.RANGE_NOTE));
+        assertTrue(Gui.onEdt(() -> note.getText().contains(why)), Gui.onEdt(note::getText));
+        assertTrue(Gui.onEdt(() -> whole(note)), "shown whole in " + Gui.onEdt(note::getSize));
     }
 
     @Test
@@ -421,6 +456,67 @@ class DistanceModelDialogTest {
     }
 
     // ---- where the positions come from ----
+
+    /** The title of the group holding a field. */
+    private String groupTitle(String key) {
+        JTextField field = field(key);
+        return Gui.onEdt(() -> {
+            for (java.awt.Container parent = field.getParent(); parent != null; parent = parent.getParent()) {
+                if (parent instanceof javax.swing.JComponent group && group.getBorder() instanceof javax.swing.border.CompoundBorder border
+                        && border.getOutsideBorder() instanceof javax.swing.border.TitledBorder titled) {
+                    return titled.getTitle();
+                }
+            }
+            return null;
+        });
+    }
+
+    private boolean labelEnabled(String key) {
+        JTextField field = field(key);
+        return Gui.onEdt(() -> Gui.all(dialog, JLabel.class).stream().filter(l -> l.getLabelFor() == field).findFirst().orElseThrow()
+                .isEnabled());
+    }
+
+    @Test
+    void readOnlyTellsWhichSourceOfPositionsRuns() throws Exception {
+        for (String source : List.of("usarsim", "rosbridge")) {
+            preferences.store(OBSTACLE_MODEL, Map.of("positions", source));
+            open(new ObstaclePropagationModel(), false);
+            boolean usarsim = source.equals("usarsim");
+            String used = usarsim ? "usarsim.host" : "rosbridge.url";
+            String unused = usarsim ? "rosbridge.url" : "usarsim.host";
+            assertEquals(usarsim ? "USARSim Connection" : "rosbridge", groupTitle(used), "the source that runs, " + source);
+            assertEquals(usarsim ? "rosbridge (not used)" : "USARSim Connection (not used)", groupTitle(unused),
+                    "the source that does not, " + source);
+            for (String key : usarsim ? USARSIM_FIELDS : ROSBRIDGE_FIELDS) {
+                assertTrue(labelEnabled(key), key + "'s label, used, " + source);
+                assertEquals(DialogParts.READ_ONLY_TEXT, Gui.onEdt(field(key)::getDisabledTextColor), key + ", used, " + source);
+            }
+            List<String> notUsed = new java.util.ArrayList<>(usarsim ? ROSBRIDGE_FIELDS : USARSIM_FIELDS);
+            if (usarsim) {
+                notUsed.add("rosbridge.map");
+            }
+            for (String key : notUsed) {
+                assertFalse(labelEnabled(key), key + "'s label, not used, " + source);
+                assertNotEquals(DialogParts.READ_ONLY_TEXT, Gui.onEdt(field(key)::getDisabledTextColor), key + ", not used, " + source);
+            }
+            assertTrue(labelEnabled("distance.cutoff") && labelEnabled("positions.interval"), "the groups both use, " + source);
+            Gui.run(() -> dialog.dispose());
+        }
+    }
+
+    @Test
+    void anEditableDialogsGroupTitleFollowsPositions() {
+        open(new DistanceOnlyPropagationModel(), true);
+        assertEquals("rosbridge (not used)", groupTitle("rosbridge.url"));
+        assertEquals("USARSim Connection", groupTitle("usarsim.host"));
+        type("positions", "rosbridge");
+        assertEquals("rosbridge", groupTitle("rosbridge.url"));
+        assertEquals("USARSim Connection (not used)", groupTitle("usarsim.host"));
+        type("positions", "ros");
+        assertEquals("rosbridge", groupTitle("rosbridge.url"), "while it names neither");
+        assertEquals("USARSim Connection", groupTitle("usarsim.host"), "while it names neither");
+    }
 
     private static final List<String> USARSIM_FIELDS = List.of("usarsim.host", "usarsim.port", "usarsim.timeout");
     private static final List<String> ROSBRIDGE_FIELDS = List.of("rosbridge.url", "rosbridge.topic", "rosbridge.type",

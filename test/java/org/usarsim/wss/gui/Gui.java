@@ -153,7 +153,9 @@ public final class Gui {
         return onEdt(() -> {
             Window dialog = showing(title).get(0);
             javax.swing.JOptionPane pane = all(dialog, javax.swing.JOptionPane.class).get(0);
-            String message = String.valueOf(pane.getMessage());
+            // A text (the About box) or a wrapped message's area (an error).
+            String message = pane.getMessage() instanceof javax.swing.text.JTextComponent text ? text.getText()
+                    : String.valueOf(pane.getMessage());
             all(pane, javax.swing.JButton.class).get(0).doClick();
             return message;
         });

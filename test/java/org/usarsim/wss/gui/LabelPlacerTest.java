@@ -25,8 +25,8 @@ class LabelPlacerTest {
         Point2D b = new Point2D.Double(500, 300);
         // A robot's name where the first label would go: above the middle, right of it.
         placer.take(new Rectangle2D.Double(310, 280, 60, 15));
-        Rectangle2D first = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H);
-        Rectangle2D second = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H); // the same pair's other way, or a pair on the same line
+        Rectangle2D first = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H, "label", null);
+        Rectangle2D second = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H, "label", null); // the same pair's other way, or a pair on the same line
         assertNotNull(first);
         assertNotNull(second);
         List<Rectangle2D> boxes = placer.taken();
@@ -42,7 +42,7 @@ class LabelPlacerTest {
     void aLabelWithNoFreePlaceIsLeftOut() {
         LabelPlacer placer = new LabelPlacer(CANVAS);
         placer.take(new Rectangle2D.Double(-1000, -1000, 3000, 3000));
-        assertNull(placer.place(LabelPlacer.alongLine(new Point2D.Double(0, 0), new Point2D.Double(100, 0), W, H), W, H));
+        assertNull(placer.place(LabelPlacer.alongLine(new Point2D.Double(0, 0), new Point2D.Double(100, 0), W, H), W, H, "label", null));
         assertEquals(1, placer.taken().size());
     }
 
@@ -52,12 +52,12 @@ class LabelPlacerTest {
         // A line along the left edge: every place left of it lies partly off the canvas.
         Point2D a = new Point2D.Double(10, 100);
         Point2D b = new Point2D.Double(10, 400);
-        Rectangle2D box = placer.place(List.of(new Point2D.Double(10 - 4 - W, 200), new Point2D.Double(14, 200)), W, H);
+        Rectangle2D box = placer.place(List.of(new Point2D.Double(10 - 4 - W, 200), new Point2D.Double(14, 200)), W, H, "label", null);
         assertEquals(new Rectangle2D.Double(14, 200, W, H), box, "the second place: the first is cut by the edge");
-        Rectangle2D beside = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H);
+        Rectangle2D beside = placer.place(LabelPlacer.alongLine(a, b, W, H), W, H, "label", null);
         assertNotNull(beside, "right of the line there is room");
         assertTrue(CANVAS.contains(beside), beside + " inside the canvas");
-        assertNull(placer.place(List.of(new Point2D.Double(-5, 300), new Point2D.Double(750, 300)), W, H), "no place inside: left out");
+        assertNull(placer.place(List.of(new Point2D.Double(-5, 300), new Point2D.Double(750, 300)), W, H, "label", null), "no place inside: left out");
         assertEquals(1, placer.leftOut());
     }
 }

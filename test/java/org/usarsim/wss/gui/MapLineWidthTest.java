@@ -52,10 +52,12 @@ class MapLineWidthTest {
     }
 
     @Test
-    void theLabelSaysTheStrengthAndTheRateOfAPairThatIsUp() {
+    void theLabelSaysTheStrengthAndTheRateOfAPairThatIsUpOrTheStateOfOneThatIsNot() {
         assertEquals("-71.3 dBm, 54 Mbit/s", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 54_000_000)));
         assertEquals("-71.3 dBm", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, -71.26, 0)), "not shaped");
-        assertEquals("-95.0 dBm", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.BROKEN, -95, 6_000_000)));
+        assertEquals("-95.0 dBm, broken", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.BROKEN, -95, 6_000_000)));
+        assertEquals("-60.0 dBm, forced down", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.FORCED_DOWN, -60, 0)));
+        assertEquals("broken", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.BROKEN, Double.NaN, 0)));
         assertEquals("1.5 Mbit/s", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.FORCED_UP, Double.NaN, 1_500_000)));
         assertEquals("", MapPainter.lineLabel(new MapData.Line("A", "B", PairState.UP, Double.POSITIVE_INFINITY, 0)));
     }

@@ -65,12 +65,16 @@ final class CutoffDistance {
         rangeNote.setName(DistanceModelDialog.RANGE_NOTE);
         panel.add(label, FieldGrid.cell(0, 0, 0));
         panel.add(distance, FieldGrid.cell(1, 0, 6));
-        // The note takes the rest of the row and never widens it: a long one is cut, not the field.
+        // The note takes the rest of the row and never widens it: two lines high, a long one wraps
+        // within its width (the longest, "no N > 0 gives this distance: with Cutoff below Pd0 it
+        // must be beyond d0 (2 m)", on two lines), its whole text also its tooltip.
         GridBagConstraints note = FieldGrid.cell(2, 0, 18);
         note.gridwidth = 3;
         note.weightx = 1;
         note.fill = GridBagConstraints.HORIZONTAL;
-        rangeNote.setPreferredSize(new Dimension(1, rangeNote.getPreferredSize().height));
+        rangeNote.setVerticalAlignment(javax.swing.SwingConstants.TOP);
+        int lineHeight = rangeNote.getFontMetrics(rangeNote.getFont()).getHeight();
+        rangeNote.setPreferredSize(new Dimension(1, 2 * lineHeight + 2));
         rangeNote.setMinimumSize(rangeNote.getPreferredSize());
         panel.add(rangeNote, note);
         FieldGrid.keepWidth(distance);
@@ -180,9 +184,13 @@ final class CutoffDistance {
         distance.setBackground(invalid ? DialogParts.INVALID : distance.isEnabled() ? normalBackground : DialogParts.readOnlyBackground());
     }
 
-    /** Beside the distance: why there is none, or what is wrong with the one typed (in red). */
+    /** Beside the distance: why there is none, or what is wrong with the one typed (in red), wrapped; its tooltip says it too. */
     private void note(String text, boolean isProblem) {
-        rangeNote.setText(text);
+        if (text.isBlank()) {
+            rangeNote.setText(text);
+        } else {
+            DialogParts.showMessage(rangeNote, text); // wrapped within the note's width
+        }
         rangeNote.setToolTipText(text.isBlank() ? null : text);
         rangeNote.setForeground(isProblem ? DialogParts.MESSAGE_COLOR : UIManager.getColor("Label.foreground"));
     }

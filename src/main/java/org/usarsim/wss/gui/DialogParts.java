@@ -185,6 +185,23 @@ final class DialogParts {
         field.setBackground(readOnlyBackground());
     }
 
+    /** The look and feel's pale text of a disabled field: a read-only value that is not used. */
+    static Color unusedText() {
+        Color pale = javax.swing.UIManager.getColor("TextField.inactiveForeground");
+        return pale != null ? pale : Color.GRAY;
+    }
+
+    /** Gives a group made by {@link #titled} a new title. */
+    static void retitle(JPanel group, String title) {
+        javax.swing.border.TitledBorder border = (javax.swing.border.TitledBorder)
+                ((javax.swing.border.CompoundBorder) group.getBorder()).getOutsideBorder();
+        if (!title.equals(border.getTitle())) {
+            border.setTitle(title);
+            group.revalidate();
+            group.repaint();
+        }
+    }
+
     /** The look and feel's grey of a field that cannot be edited. */
     static Color readOnlyBackground() {
         Color grey = javax.swing.UIManager.getColor("TextField.inactiveBackground");

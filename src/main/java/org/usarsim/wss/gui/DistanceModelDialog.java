@@ -67,6 +67,10 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
     private static final String WALLS = "obstacle.walls";
     private static final String MAP = "rosbridge.map";
+    /** The titles of the groups of the two sources; the one {@code positions} does not name adds {@link #NOT_USED}. */
+    static final String USARSIM_TITLE = "USARSim Connection";
+    static final String ROSBRIDGE_TITLE = "rosbridge";
+    static final String NOT_USED = " (not used)";
     /** The fields of one source of positions: greyed while {@code positions} names the other. */
     private static final List<String> USARSIM_KEYS = List.of(HOST, PORT, TIMEOUT);
     private static final List<String> ROSBRIDGE_KEYS = List.of(URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE, MAP);
@@ -77,6 +81,9 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private final Map<String, JLabel> labels = new LinkedHashMap<>();
     private final FieldGrid grid = new FieldGrid();
     private final CutoffDistance distance;
+    /** The groups of the two sources of positions, whose titles say which one is not used. */
+    private final JPanel usarsimGroup;
+    private final JPanel rosbridgeGroup;
 
     /** True while the dialog itself sets a field's text, so that its listener does not recompute. */
     private boolean updating;
@@ -90,9 +97,9 @@ final class DistanceModelDialog extends ModelSettingsDialog {
         this.distance = new CutoffDistance(this::parameter, n -> set(N, n), message);
         boolean obstacles = model.dialogLayout() == DialogLayout.DISTANCE_AND_OBSTACLES;
 
-        List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL),
-                group("USARSim Connection", HOST, PORT, TIMEOUT),
-                group("rosbridge", URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE),
+        usarsimGroup = group(USARSIM_TITLE, HOST, PORT, TIMEOUT);
+        rosbridgeGroup = group(ROSBRIDGE_TITLE, URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE);
+        List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL), usarsimGroup, rosbridgeGroup,
                 group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), distance.panel(grid, obstacles),
                 group("Link Stability", MARGIN, HOLD_TIME)));
         if (obstacles) {
@@ -102,11 +109,11 @@ final class DistanceModelDialog extends ModelSettingsDialog {
 
         fields.keySet().forEach(key -> set(key, values.get(key)));
         distance.parametersChanged();
-        followPositions();
         if (!editable) {
             fields.values().forEach(field -> DialogParts.readOnly(field.field()));
             distance.readOnly();
         }
+        followPositions();
         DialogParts.layOut(this, owner, groups, message, DialogParts.buttons(this, editable, this::ok));
     }
 
@@ -185,30 +192,34 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     // ---- where the positions come from ----
 
     /**
-     * Greys (disables) the fields, and their labels, of the source of positions that
-     * {@code positions} does not name: the rosbridge ones (with the Obstacles group's Map topic)
-     * while it says usarsim, the USARSim Connection ones while it says rosbridge; both stay
-     * editable while it names neither (a value being typed). Greyed fields keep their values, which
-     * OK still checks and stores.
+     * Marks the source of positions that {@code positions} does not name as not used: its group's
+     * title says "(not used)" and its labels are greyed, and so are its fields (the rosbridge ones
+     * with the Obstacles group's Map topic while it says usarsim, the USARSim Connection ones while
+     * it says rosbridge; none while it names neither, a value being typed). Read-only (the server
+     * runs), where every field is disabled, the used source's values stay dark and the unused
+     * one's take the look's pale disabled text, so that one can tell which source runs. Greyed
+     * fields keep their values, which OK still checks and stores.
      */
     private void followPositions() {
-        if (!editable) {
-            return; // every field is read-only already
-        }
         String positions = fields.get(POSITIONS).text();
-        enable(USARSIM_KEYS, !positions.equals(SimulatorModel.ROSBRIDGE));
-        enable(ROSBRIDGE_KEYS, !positions.equals(SimulatorModel.USARSIM));
+        source(USARSIM_KEYS, usarsimGroup, USARSIM_TITLE, !positions.equals(SimulatorModel.ROSBRIDGE));
+        source(ROSBRIDGE_KEYS, rosbridgeGroup, ROSBRIDGE_TITLE, !positions.equals(SimulatorModel.USARSIM));
     }
 
-    private void enable(List<String> keys, boolean enabled) {
+    private void source(List<String> keys, JPanel group, String title, boolean used) {
         for (String key : keys) {
             CheckedField field = fields.get(key);
             if (field != null) { // the Map topic: the Obstacles group only
-                field.field().setEnabled(enabled);
-                labels.get(key).setEnabled(enabled);
-                field.mark();
+                labels.get(key).setEnabled(used);
+                if (editable) {
+                    field.field().setEnabled(used);
+                    field.mark();
+                } else {
+                    field.field().setDisabledTextColor(used ? DialogParts.READ_ONLY_TEXT : DialogParts.unusedText());
+                }
             }
         }
+        DialogParts.retitle(group, used ? title : title + NOT_USED);
     }
 
     // ---- OK ----

@@ -9,7 +9,6 @@ import javax.swing.JButton;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
-import javax.swing.JTable;
 import javax.swing.JTextField;
 import javax.swing.event.DocumentEvent;
 import javax.swing.event.DocumentListener;
@@ -26,18 +25,14 @@ import javax.swing.table.TableRowSorter;
 class FilteredTablePanel<T> extends JPanel {
 
     private final RowsModel<T> model;
-    private final JTable table;
+    private final SidewaysTable table;
+    /** The column that grows to its widest cell, or -1. */
+    private int fitted = -1;
 
     FilteredTablePanel(String title, String name, List<RowsModel.Column<T>> columns) {
         super(new BorderLayout(0, 4));
         model = new RowsModel<>(columns);
-        table = new JTable(model) {
-            /** Fills the width while every column fits at its least; scrolls sideways when they do not, none cut. */
-            @Override
-            public boolean getScrollableTracksViewportWidth() {
-                return getParent() == null || minimumWidth() <= getParent().getWidth();
-            }
-        };
+        table = new SidewaysTable(model);
         table.setName(name);
         table.setTableHeader(new JTableHeader(table.getColumnModel()) {
             /** As tall as its tallest header: the look measures only the first column's, one line. */
@@ -119,41 +114,14 @@ class FilteredTablePanel<T> extends JPanel {
         });
     }
 
-    /**
-     * Event thread: each column at least as wide as its header (with room for the sort arrow) and
-     * as its sample, the widest text it is meant to show whole, in order ("Explorer1234" for a
-     * name of 12 characters): the table never cuts them, and scrolls sideways when the window is
-     * too narrow for all.
-     */
+    /** Event thread: each column's least width ({@link SidewaysTable#leastWidths}). */
     void leastWidths(String... samples) {
-        leastWidths(table, samples);
+        table.leastWidths(samples);
     }
 
-    /** As {@link #leastWidths(String...)}, for any table. */
-    static void leastWidths(JTable table, String... samples) {
-        java.awt.FontMetrics metrics = table.getFontMetrics(table.getFont());
-        javax.swing.table.TableColumnModel columns = table.getColumnModel();
-        for (int i = 0; i < columns.getColumnCount(); i++) {
-            int header = table.getTableHeader().getDefaultRenderer()
-                    .getTableCellRendererComponent(table, null, false, false, -1, i).getPreferredSize().width + SORT_ARROW;
-            int content = i < samples.length ? metrics.stringWidth(samples[i]) + CELL_PADDING : 0;
-            javax.swing.table.TableColumn column = columns.getColumn(i);
-            column.setMinWidth(Math.max(header, content));
-            column.setPreferredWidth(Math.max(column.getPreferredWidth(), column.getMinWidth()));
-        }
-    }
-
-    /** Room in a header for the arrow of a sorted column. */
-    private static final int SORT_ARROW = 14;
-    /** Room in a cell beside its text: the renderer's border and the grid. */
-    private static final int CELL_PADDING = 10;
-
-    private int minimumWidth() {
-        int sum = 0;
-        for (int i = 0; i < table.getColumnModel().getColumnCount(); i++) {
-            sum += table.getColumnModel().getColumn(i).getMinWidth();
-        }
-        return sum;
+    /** Event thread: after each change of rows, the column of model index {@code column} as wide as its widest cell. */
+    void fitsContent(int column) {
+        this.fitted = column;
     }
 
     /** A header's text as the header shows it: a {@code \n} puts the rest on a second line. */
@@ -182,5 +150,8 @@ class FilteredTablePanel<T> extends JPanel {
     /** Event thread. */
     void show(List<T> rows) {
         model.setRows(rows);
+        if (fitted >= 0) {
+            table.fitToContent(fitted);
+        }
     }
 }

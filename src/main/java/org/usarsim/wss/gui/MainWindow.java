@@ -268,10 +268,11 @@ public final class MainWindow {
         }.execute();
     }
 
-    /** Says why in the log and in a message dialog; the window stays usable. */
+    /** Says why in the log and in a message dialog, wrapped to a readable width; the window stays usable. */
     private void failed(String message) {
         LOG.warning(message);
-        SwingUtilities.invokeLater(() -> JOptionPane.showMessageDialog(frame, message, TITLE, JOptionPane.ERROR_MESSAGE));
+        SwingUtilities.invokeLater(() -> JOptionPane.showMessageDialog(frame, WrappedMessage.of(message), TITLE,
+                JOptionPane.ERROR_MESSAGE));
     }
 
     /** The model's replay controls, or null when it replays nothing (or fails to say). */

@@ -6,28 +6,32 @@ import java.awt.Font;
 import java.awt.FontMetrics;
 import java.awt.Graphics2D;
 import java.awt.RenderingHints;
+import java.awt.Shape;
 import java.awt.Stroke;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Line2D;
 import java.awt.geom.Point2D;
+import java.awt.geom.QuadCurve2D;
 import java.awt.geom.Rectangle2D;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.shaping.Bitrate;
 
 /**
  * One painting of the {@link MapPanel}'s map: the grid, the walls, the selected robot's range, the
- * pairs' lines with their labels (never over a robot's name, nor over another label: a
+ * pairs' lines with their labels (never over a robot's name or dot, nor over another label: a
  * {@link LabelPlacer}), the robots, the legend and the scale, from the {@link MapData} and the
  * {@link MapTransform} it is given. Event thread.
  */
 final class MapPainter {
 
     private static final int DOT = MapPanel.DOT;
-    private static final Color WALL = new Color(0x40, 0x40, 0x48);
+    static final Color WALL = new Color(0x40, 0x40, 0x48);
     private static final Color ROBOT = new Color(0x1F, 0x4E, 0x9A);
     private static final Color SELECTED = new Color(0xD0, 0x40, 0x20);
     private static final Color RANGE = new Color(0x1F, 0x4E, 0x9A);
@@ -123,43 +127,97 @@ final class MapPainter {
         double above = at.getY() - DOT / 2.0 - metrics.getAscent() - metrics.getHeight() - 2;
         Rectangle2D box = labels.place(List.of(new Point2D.Double(at.getX() + DOT - 2, top),
                 new Point2D.Double(at.getX() - DOT - width, top), new Point2D.Double(at.getX() + DOT - 2, above),
-                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight());
+                new Point2D.Double(at.getX() - DOT - width, above)), width, metrics.getHeight(), label, null);
         if (box != null) {
             label(g, label, box.getX() + 2, box.getY() + metrics.getAscent());
         }
     }
 
-    /** The robots' names' boxes, taken first: a pair's label never lies over a name. */
+    /** The robots' names' and dots' boxes, taken first: a pair's label never lies over a name or a dot. */
     private void nameBoxes(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
         FontMetrics metrics = g.getFontMetrics(font.deriveFont(Font.BOLD, 12f));
         for (MapData.Robot robot : shown.robots()) {
             if (robot.position() != null) {
-                labels.take(nameBox(t.toScreen(robot.position().x(), robot.position().y()), robot.name(), metrics));
+                Point2D at = t.toScreen(robot.position().x(), robot.position().y());
+                labels.take(nameBox(at, robot.name(), metrics));
+                labels.block(dotBox(at));
             }
         }
     }
 
+    /** The square a robot's dot is drawn in. */
+    static Rectangle2D dotBox(Point2D at) {
+        return new Rectangle2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT);
+    }
+
+    /**
+     * The lines first, then their labels, over every line (on their light patch) and off the
+     * others' lines where they can be. A line that would run through another robot's dot (three
+     * robots in a line) is drawn as a curve bowed around it, its label along the curve.
+     */
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
+        Map<MapData.Line, List<Point2D>> drawn = new LinkedHashMap<>();
         for (MapData.Line line : shown.lines()) {
             Point2D a = screenOf(t, shown, line.first());
             Point2D b = screenOf(t, shown, line.second());
             if (a == null || b == null) {
                 continue;
             }
+            Point2D control = control(a, b, t, shown, line);
+            Shape path = control == null ? new Line2D.Double(a, b) : new QuadCurve2D.Double(a.getX(), a.getY(), control.getX(),
+                    control.getY(), b.getX(), b.getY());
             g.setColor(MapColours.of(line, shown.cutoff()));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
-            g.draw(new Line2D.Double(a, b));
-            String text = lineLabel(line);
+            g.draw(path);
+            labels.line(path);
+            drawn.put(line, List.of(a, control == null ? middle(a, b) : control, b));
+        }
+        List<Shape> paths = labels.lines();
+        g.setFont(font.deriveFont(Font.PLAIN, 10f));
+        FontMetrics metrics = g.getFontMetrics();
+        int i = 0;
+        for (Map.Entry<MapData.Line, List<Point2D>> entry : drawn.entrySet()) {
+            Shape own = paths.get(i++);
+            String text = lineLabel(entry.getKey());
             if (!text.isEmpty()) {
-                g.setFont(font.deriveFont(Font.PLAIN, 10f));
-                FontMetrics metrics = g.getFontMetrics();
-                Rectangle2D box = labels.place(LabelPlacer.alongLine(a, b, metrics.stringWidth(text) + 4,
-                        metrics.getHeight()), metrics.stringWidth(text) + 4, metrics.getHeight());
+                List<Point2D> abc = entry.getValue();
+                double width = metrics.stringWidth(text) + 4;
+                Rectangle2D box = labels.place(LabelPlacer.alongCurve(abc.get(0), abc.get(1), abc.get(2), width, metrics.getHeight()),
+                        width, metrics.getHeight(), text, own);
                 if (box != null) { // no free place: left out, not drawn over another (the Link statistics have it)
+                    g.setColor(MapColours.of(entry.getKey(), shown.cutoff()));
                     label(g, text, box.getX() + 2, box.getY() + metrics.getAscent());
                 }
             }
         }
+    }
+
+    /** How far a line bowed around a robot in its way passes from the straight one, at most, in pixels. */
+    private static final double BOW = 4 * DOT;
+
+    /**
+     * The control point of the curve the pair's line is drawn as when another robot's dot lies on
+     * the straight line between the two (so that the line is not hidden under the two shorter
+     * ones, nor its label left floating): to the left of a to b, bowing the curve's middle half
+     * of {@link #BOW} (or a fifth of its length) off the straight line; null when none is in the way.
+     */
+    private static Point2D control(Point2D a, Point2D b, MapTransform t, MapData shown, MapData.Line line) {
+        Line2D straight = new Line2D.Double(a, b);
+        boolean inTheWay = shown.robots().stream().filter(robot -> robot.position() != null)
+                .filter(robot -> !robot.name().equals(line.first()) && !robot.name().equals(line.second()))
+                .anyMatch(robot -> straight.ptSegDist(t.toScreen(robot.position().x(), robot.position().y())) < DOT);
+        double length = a.distance(b);
+        if (!inTheWay || length == 0) {
+            return null;
+        }
+        // The curve's middle is half as far off the straight line as its control point.
+        double off = 2 * Math.min(BOW, length / 5);
+        Point2D middle = middle(a, b);
+        return new Point2D.Double(middle.getX() + (a.getY() - b.getY()) / length * off, middle.getY() + (b.getX() - a.getX()) / length * off);
+    }
+
+    private static Point2D middle(Point2D a, Point2D b) {
+        return new Point2D.Double((a.getX() + b.getX()) / 2, (a.getY() + b.getY()) / 2);
     }
 
     /** Text in the current colour and font on a light patch, legible over lines and walls. */
@@ -188,7 +246,8 @@ final class MapPainter {
             boolean isSelected = robot.name().equals(selected);
             g.setColor(isSelected ? SELECTED : ROBOT);
             g.fill(new Ellipse2D.Double(at.getX() - DOT / 2.0, at.getY() - DOT / 2.0, DOT, DOT));
-            g.drawString(robot.name(), (float) at.getX() + DOT, (float) at.getY() - DOT / 2f);
+            // On a light patch, as the labels: a wall or a line under the name does not strike it through.
+            label(g, robot.name(), at.getX() + DOT, at.getY() - DOT / 2.0);
         }
     }
 
@@ -246,14 +305,17 @@ final class MapPainter {
 
     /**
      * The text at the middle of a pair's line: the model's strength ("-71.3 dBm", none when it
-     * has none) and with links shaped the rate of a pair that is up ("54 Mbit/s").
+     * has none), then with links shaped the rate of a pair that is up ("54 Mbit/s"), or the state
+     * of a pair that is not ("broken", "forced down"), as the Link statistics' State says it.
      */
     static String lineLabel(MapData.Line line) {
         List<String> parts = new ArrayList<>();
         if (!Double.isNaN(line.strength()) && !Double.isInfinite(line.strength())) {
             parts.add(String.format(Locale.ROOT, "%.1f dBm", line.strength()));
         }
-        if (line.state().isUp() && line.rate() > 0) {
+        if (!line.state().isUp()) {
+            parts.add(line.state().text());
+        } else if (line.rate() > 0) {
             parts.add(Bitrate.format(line.rate()));
         }
         return String.join(", ", parts);

@@ -6,7 +6,6 @@ import java.util.stream.Collectors;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JScrollPane;
-import javax.swing.JTable;
 import org.usarsim.wss.hub.HubSnapshot.RobotEntry;
 
 /**
@@ -22,20 +21,22 @@ final class RobotsPanel extends JPanel {
                     robot -> robot.ports().stream().map(String::valueOf).collect(Collectors.joining(","))),
             new RowsModel.Column<>("Airtime", AirtimeCell.class, robot -> new AirtimeCell(robot.airtime()))));
 
+    /** The ports' column, by model index. */
+    private static final int PORTS_COLUMN = 2;
+
+    private final SidewaysTable table;
+
     RobotsPanel() {
         super(new BorderLayout(0, 4));
-        JTable table = new JTable(model);
+        table = new SidewaysTable(model);
         table.setName("robots");
         table.setRowSorter(model.sorter());
         table.setFillsViewportHeight(true);
-        FilteredTablePanel.leastWidths(table, StatsPanel.NAME, "127.0.0.1", "65535,65535");
+        table.leastWidths(StatsPanel.NAME, "127.0.0.1", "65535,65535");
         // As wide as its columns need, no wider (Swing's default is 450 px): at the size the window
         // opens, the ports and connections beside it get the rest and show every column whole.
-        int width = 0;
-        for (int column = 0; column < table.getColumnCount(); column++) {
-            width += table.getColumnModel().getColumn(column).getMinWidth();
-        }
-        table.setPreferredScrollableViewportSize(new java.awt.Dimension(width, table.getPreferredScrollableViewportSize().height));
+        table.setPreferredScrollableViewportSize(new java.awt.Dimension(table.leastWidth(),
+                table.getPreferredScrollableViewportSize().height));
         add(new JLabel("Connected Robots"), BorderLayout.NORTH);
         add(new JScrollPane(table), BorderLayout.CENTER);
     }
@@ -43,5 +44,7 @@ final class RobotsPanel extends JPanel {
     /** Event thread. */
     void show(List<RobotEntry> robots) {
         model.setRows(robots);
+        // A robot accepting on many ports: the column grows (and the table scrolls sideways) rather than cut them.
+        table.fitToContent(PORTS_COLUMN);
     }
 }

@@ -15,6 +15,8 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
     static final String NAME = "Explorer1234";
     /** The widest byte count shown whole: 10 digits, grouped. */
     static final String BYTES = "9,999,999,999";
+    /** The UDP counts' column, by model index. */
+    private static final int UDP_COLUMN = 15;
 
     StatsPanel(ForceMenu forceMenu) {
         super("Link statistics", "stats", List.of(
@@ -49,6 +51,8 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
         // Names of 12 characters, byte counts of 10 digits grouped, the longest state and close reason: whole.
         leastWidths(NAME, NAME, "forced down", "-100.0", "100.0", BYTES, BYTES, "99,999,999", "99,999,999", "54 Mbit/s",
                 "54 Mbit/s", "999", "999", "999", "100.0", "0/0/0/0 | 0/0/0/0", "target refused");
+        // Counts of any size: the column grows to its widest (and the table scrolls sideways) rather than cut them.
+        fitsContent(UDP_COLUMN);
         onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
                 .show(click.getComponent(), click.getX(), click.getY()));
     }

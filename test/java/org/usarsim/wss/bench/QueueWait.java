@@ -38,7 +38,10 @@ import org.usarsim.wss.shaping.Bitrate;
  * 10.213.27.1 and .2; the WSS listens on .1); tbf on that veth, its sender the same. The veth
  * needs root, {@code ip} and {@code tc}, and is removed after each run. The WSS runs use
  * {@code wss.force.up=A:B:RATE:2}; {@code -Dwss.bench.properties="wss.shaping.queueMs=100"}
- * sets another queue.
+ * sets another queue. The sender's settings (issue 36, item 17): {@code -Dwss.bench.sndbufs=0,65536}
+ * the send buffers to measure, one table each (0: the OS's; these two by default);
+ * {@code -Dwss.bench.notsentLowat=16384} the namespace's {@code net.ipv4.tcp_notsent_lowat}
+ * (never the host's; the veth columns only, as with {@code -Dwss.bench.vethOnly=true}).
  *
  * <pre>
  * java -cp target/classes:target/test-classes org.usarsim.wss.bench.QueueWait [1M 6M 24M]
@@ -52,6 +55,10 @@ public final class QueueWait {
     private static final String NAMESPACE = "wssq-bench";
     private static final String HOST = "10.213.27.1";
     private static final String PEER = "10.213.27.2";
+    /** The namespace's net.ipv4.tcp_notsent_lowat, or null for the kernel's default (no limit). */
+    private static final String NOT_SENT_LOWAT = System.getProperty("wss.bench.notsentLowat");
+    /** Only the veth's columns: the loopback WSS's sender is on the host, where the namespace's sysctl does not reach. */
+    private static final boolean VETH_ONLY = Boolean.getBoolean("wss.bench.vethOnly") || NOT_SENT_LOWAT != null;
 
     private QueueWait() {
     }
@@ -78,8 +85,8 @@ public final class QueueWait {
         }
         List<String> rates = args.length == 0 ? List.of("1M", "6M", "24M") : List.of(args);
         boolean veth = vethPossible();
-        for (int sendBuffer : new int[] {0, 64 * 1024}) {
-            table(rates, veth, sendBuffer);
+        for (String sendBuffer : System.getProperty("wss.bench.sndbufs", "0,65536").split(",")) {
+            table(rates, veth, Integer.parseInt(sendBuffer.strip()));
         }
         System.exit(0);
     }
@@ -116,7 +123,8 @@ public final class QueueWait {
     private static void table(List<String> rates, boolean veth, int sendBuffer) throws Exception {
         System.out.printf("%n## Queue: a 64-byte message behind a saturating stream (%d markers, 2 s apart, after 4 s; the sender's"
                 + " send buffer %s; its congestion control %s; load average %s)%n%n", MARKERS,
-                sendBuffer == 0 ? "the OS's" : sendBuffer + " bytes",
+                (sendBuffer == 0 ? "the OS's" : sendBuffer + " bytes")
+                        + (NOT_SENT_LOWAT == null ? "" : ", its namespace's tcp_notsent_lowat " + NOT_SENT_LOWAT),
                 Files.readString(Path.of("/proc/sys/net/ipv4/tcp_congestion_control")).strip(),
                 Files.readString(Path.of("/proc/loadavg")).strip());
         System.out.println("Each wait in seconds, and in brackets the part the sender's own kernel held ahead of the marker"
@@ -129,8 +137,8 @@ public final class QueueWait {
         System.out.println("|---|---|---|---|---|---|---|---|");
         for (String rate : rates) {
             long bits = Bitrate.parse(rate);
-            Wait[] loopback = throughWss(rate, sendBuffer);
-            Wait[] tbfLoopback = veth ? throughTbfOnLoopback(rate, sendBuffer) : null;
+            Wait[] loopback = VETH_ONLY ? new Wait[0] : throughWss(rate, sendBuffer);
+            Wait[] tbfLoopback = veth && !VETH_ONLY ? throughTbfOnLoopback(rate, sendBuffer) : new Wait[0];
             Wait[] acrossVeth = veth ? throughWssAcrossVeth(rate, sendBuffer) : null;
             Wait[] viaTbf = veth ? throughTbf(rate, sendBuffer) : null;
             System.out.printf(Locale.ROOT, "| %s | %s | %s | %s | %s | %s | %s | %s |%n", Bitrate.format(bits), seconds(loopback),
@@ -153,7 +161,8 @@ public final class QueueWait {
 
     /** The ratio of the medians of two columns' waits, if every marker of both arrived. */
     private static String ratio(Wait[] wss, Wait[] tbf) {
-        if (!Arrays.stream(wss).allMatch(Wait::arrived) || !Arrays.stream(tbf).allMatch(Wait::arrived)) {
+        if (wss.length == 0 || tbf.length == 0 || !Arrays.stream(wss).allMatch(Wait::arrived)
+                || !Arrays.stream(tbf).allMatch(Wait::arrived)) {
             return "";
         }
         return String.format(Locale.ROOT, "**%.2f**", (double) median(wss, Wait::nanos) / median(tbf, Wait::nanos));
@@ -271,6 +280,9 @@ public final class QueueWait {
                 run("ip", "netns", "exec", NAMESPACE, "ip", "addr", "add", PEER + "/30", "dev", "wssq1");
                 run("ip", "netns", "exec", NAMESPACE, "ip", "link", "set", "wssq1", "up");
                 run("ip", "netns", "exec", NAMESPACE, "ip", "link", "set", "lo", "up");
+                if (NOT_SENT_LOWAT != null) {
+                    run("ip", "netns", "exec", NAMESPACE, "sysctl", "-q", "-w", "net.ipv4.tcp_notsent_lowat=" + NOT_SENT_LOWAT);
+                }
                 return veth;
             } catch (IOException | InterruptedException | RuntimeException e) {
                 veth.close();
@@ -401,6 +413,9 @@ public final class QueueWait {
         private final ServerSocket server;
         private final List<Long> arrivals = new ArrayList<>();
         private final Thread thread;
+        private long received;
+        private long first;
+        private long last;
 
         Receiver(InetAddress address) throws IOException {
             server = new ServerSocket();
@@ -421,6 +436,9 @@ public final class QueueWait {
                 int read;
                 while ((read = in.read(buffer)) >= 0) {
                     long now = System.nanoTime();
+                    first = received == 0 ? now : first;
+                    received += read;
+                    last = now;
                     for (int i = 0; i < read; i++) {
                         if (inMarker > 0) {
                             inMarker = inMarker == 64 ? 0 : inMarker + 1;
@@ -440,6 +458,10 @@ public final class QueueWait {
         /** The waits of the markers written as {@code marked}, once the stream has ended. */
         Wait[] waits(Mark[] marked, long bitsPerSecond) throws InterruptedException {
             thread.join(TimeUnit.SECONDS.toMillis(60));
+            if (last > first) { // what the sender's settings cost the stream: its rate from its first byte to its last
+                System.out.printf(Locale.ROOT, "received %d bytes in %.3f s: %.3f Mbit/s%n", received, (last - first) / 1e9,
+                        received * 8e3 / (last - first));
+            }
             Wait[] waits = new Wait[marked.length];
             synchronized (arrivals) {
                 for (int i = 0; i < marked.length; i++) {

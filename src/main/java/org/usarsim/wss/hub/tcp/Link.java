@@ -133,6 +133,8 @@ public final class Link implements Runnable, Connection {
         closeReason.compareAndSet(null, reason);
         synchronized (sending) { // a write under way is written and reported first; none after
             if (closed.compareAndSet(false, true)) {
+                // The pair's last close as the link closes: a snapshot that no longer lists the link already says why.
+                stats.closed(closeReason.get());
                 if (CUTS.contains(reason)) {
                     resetOnClose(source);
                     resetOnClose(target);
@@ -189,7 +191,6 @@ public final class Link implements Runnable, Connection {
             LOG.log(Level.WARNING, this + " failed: " + e, e);
         } finally {
             close();
-            stats.closed(closeReason.get());
             Closing.quietly(selector);
             hub.linkEnded(this, established);
         }

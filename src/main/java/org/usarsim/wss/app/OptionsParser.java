@@ -44,7 +44,7 @@ final class OptionsParser {
                     + "this port, 0 = any free port (docs/world.md, docs/ros-messages.md)"),
             Flag.valued("--ros-rate", "HZ", "a value",
                     "the rate of every publisher of the world server's rosbridge, above 0 and at\n"
-                    + "most 1000 (default " + (int) RosbridgeServer.DEFAULT_RATE_HZ + "; docs/world.md, \"Over rosbridge\")"),
+                    + "most " + (int) RosbridgeServer.MAX_RATE_HZ + " (default " + (int) RosbridgeServer.DEFAULT_RATE_HZ + "; docs/world.md, \"Over rosbridge\")"),
             Flag.valued("--export-world", "RUN.rec", "a file",
                     "write a world file whose robots follow the recording's paths, with its walls\n"
                     + "(docs/replay.md); to standard output, or to the file of --out FILE"),
@@ -215,8 +215,8 @@ final class OptionsParser {
         } catch (NumberFormatException e) {
             // reported below
         }
-        if (!(rate > 0 && rate <= 1000) || !text.matches("[0-9.]+")) {
-            throw new Mistake("--ros-rate " + text + " is not a rate in Hz above 0 and at most 1000 (20, 5, 0.5)\n" + USAGE);
+        if (!(rate > 0 && rate <= RosbridgeServer.MAX_RATE_HZ) || !text.matches("[0-9.]+")) {
+            throw new Mistake("--ros-rate " + text + " is not a rate in Hz above 0 and at most " + (int) RosbridgeServer.MAX_RATE_HZ + " (20, 5, 0.5)\n" + USAGE);
         }
         return rate;
     }

@@ -45,7 +45,6 @@ final class Server implements AutoCloseable {
     }
 
     /** A run's one clock: the hub's and its event log's. */
-    private static final HubClock CLOCK = HubClock.SYSTEM;
 
     private final HubConfig config;
     private final PropagationModel model;
@@ -56,7 +55,7 @@ final class Server implements AutoCloseable {
     private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog, Recorder recorder) {
         this.config = config;
         this.model = model;
-        this.hub = new Hub(config, model, CLOCK);
+        this.hub = new Hub(config, model, HubClock.SYSTEM);
         this.eventLog = eventLog;
         this.recorder = recorder;
         if (eventLog != null) {
@@ -83,7 +82,7 @@ final class Server implements AutoCloseable {
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
             try {
-                eventLog = CsvEventLog.create(eventLogDir, CLOCK);
+                eventLog = CsvEventLog.create(eventLogDir, HubClock.SYSTEM);
             } catch (IOException e) {
                 throw new StartFailure("cannot write the event log in " + eventLogDir + ": " + e);
             }

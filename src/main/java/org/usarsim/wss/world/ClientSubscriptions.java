@@ -165,10 +165,4 @@ final class ClientSubscriptions {
     int size() {
         return feeds.size();
     }
-
-    /** The handler of its subscription to a topic, or null when it has none. */
-    TopicSubscription.Handler handler(String topic) {
-        Feed feed = feeds.get(topic);
-        return feed == null ? null : feed.subscription.handler();
-    }
 }

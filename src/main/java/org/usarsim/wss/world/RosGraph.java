@@ -94,10 +94,6 @@ final class RosGraph {
         return Math.round(1e9 / rateHz);
     }
 
-    long periodNanos() {
-        return periodNanos;
-    }
-
     /** The topics published, in the order of the start line. */
     List<String> topics() {
         return List.copyOf(types.keySet());

@@ -27,6 +27,8 @@ public final class RosbridgeServer implements AutoCloseable {
 
     /** The publishers' rate unless told otherwise ({@code --ros-rate}): 20 Hz. */
     public static final double DEFAULT_RATE_HZ = RosGraph.DEFAULT_RATE_HZ;
+    /** The fastest rate of its publishers, in Hz ({@code --ros-rate}). */
+    public static final double MAX_RATE_HZ = RosGraph.MAX_RATE_HZ;
     /** How long a subscriber's connection to a per-robot topic's publisher takes unless told otherwise: 300 ms. */
     public static final Duration DEFAULT_CONNECTION_DELAY = Duration.ofNanos(RosGraph.DEFAULT_CONNECTION_DELAY_NANOS);
     /** The most clients served at once. */

@@ -23,7 +23,6 @@ import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.net.LogLimiter;
 import org.usarsim.wss.ros.Json;
 import org.usarsim.wss.ros.JsonException;
-import org.usarsim.wss.ros.JsonLimits;
 import org.usarsim.wss.ros.JsonNode;
 import org.usarsim.wss.ros.MessageType;
 import org.usarsim.wss.ros.OccupancyGrid;
@@ -88,10 +87,9 @@ final class RosbridgeSource implements PositionSource {
         this.clock = clock;
         this.notes = notes;
         this.limiter = limiter;
-        this.decoder = new PoseDecoder(config.type(), config.frame(),
-                config.perRobot() ? config.topic() : PoseDecoder.DEFAULT_ROBOT_TOPIC,
-                JsonLimits.DEFAULT.withMaxChars(config.maxChars()));
         this.assembler = new MessageAssembler(config.maxChars(), this::bad, this::received);
+        this.decoder = new PoseDecoder(config.type(), config.frame(),
+                config.perRobot() ? config.topic() : PoseDecoder.DEFAULT_ROBOT_TOPIC, assembler.limits());
         this.table = new PoseTable(TimeUnit.MILLISECONDS.toNanos(config.staleMs()), TimeUnit.MILLISECONDS.toNanos(config.graceMs()),
                 clock.nanoTime());
     }
@@ -344,7 +342,7 @@ final class RosbridgeSource implements PositionSource {
         return new WebSocket.Listener() {
             @Override
             public CompletionStage<?> onText(WebSocket webSocket, CharSequence data, boolean last) {
-                assembler.piece(data, last);
+                fragment(data, last);
                 webSocket.request(1);
                 return null;
             }

@@ -133,8 +133,4 @@ final class TopicRequests {
         });
         return quiet;
     }
-
-    boolean isEmpty() {
-        return topics.isEmpty();
-    }
 }

@@ -23,7 +23,7 @@ import java.nio.channels.WritableByteChannel;
  *
  * <p>Used by one thread; it never reads a clock nor blocks.
  */
-public final class ShapedFlow implements Pacing {
+public final class ShapedFlow {
 
     /** The least a direction may hold whatever its rate: one frame's payload (so that a link at 1 bit/s still reads). */
     public static final int MIN_HELD = 1500;
@@ -112,13 +112,11 @@ public final class ShapedFlow implements Pacing {
     }
 
     /** The bytes read and not yet written. */
-    @Override
     public long held() {
         return queue.held();
     }
 
     /** How many bytes may be read now: the capacity less what is held; 0 means read nothing. */
-    @Override
     public int room() {
         return (int) Math.max(0, Math.min(Integer.MAX_VALUE, capacity - held()));
     }
@@ -129,7 +127,6 @@ public final class ShapedFlow implements Pacing {
      *
      * @throws IllegalStateException if they are more than {@link #room()}
      */
-    @Override
     public void accept(ByteBuffer bytes, long nowNs) {
         int count = bytes.remaining();
         if (count > room()) {
@@ -143,7 +140,6 @@ public final class ShapedFlow implements Pacing {
     }
 
     /** How many bytes may be written at {@code nowNs}. */
-    @Override
     public long due(long nowNs) {
         return air.released(nowNs) - queue.written();
     }
@@ -154,7 +150,6 @@ public final class ShapedFlow implements Pacing {
      *
      * @return the bytes written
      */
-    @Override
     public int writeTo(WritableByteChannel out, long nowNs) throws IOException {
         return queue.writeTo(out, air.released(nowNs));
     }
@@ -165,13 +160,11 @@ public final class ShapedFlow implements Pacing {
      * nothing is scheduled (it holds nothing, or only bytes already due: those wait for the
      * target to take them, not for time).
      */
-    @Override
     public long nanosUntilNext(long nowNs) {
         return air.nanosUntilNext(nowNs);
     }
 
     /** Ends the direction's hop; what it still holds is dropped with it. */
-    @Override
     public void close() {
         air.close();
     }

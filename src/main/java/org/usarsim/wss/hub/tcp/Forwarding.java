@@ -52,17 +52,15 @@ final class Forwarding {
             long now = now();
             up.writeDue(now);
             down.writeDue(now);
+            up.coalesce(false); // what Nagle's algorithm holds goes before the link waits or ends
+            down.coalesce(false);
             boolean ended = up.ended() || down.ended();
             if (ended && up.pacing.held() == 0 && down.pacing.held() == 0) {
-                up.coalesce(false);
-                down.coalesce(false);
                 finish();
                 return;
             }
             sourceKey.interestOps(interest(ended, up, down, now));
             targetKey.interestOps(interest(ended, down, up, now));
-            up.coalesce(false); // what Nagle's algorithm holds goes before the link waits
-            down.coalesce(false);
             waitAtMost(Math.min(up.pacing.nanosUntilNext(now), down.pacing.nanosUntilNext(now)));
             int sourceOps = readyOps(sourceKey);
             int targetOps = readyOps(targetKey);
@@ -72,11 +70,12 @@ final class Forwarding {
             }
             up.outputReady((targetOps & SelectionKey.OP_WRITE) != 0);
             down.outputReady((sourceOps & SelectionKey.OP_WRITE) != 0);
+            long woke = now(); // one clock read for both directions' reads
             if ((sourceOps & SelectionKey.OP_READ) != 0 && !up.ended() && !down.ended()) {
-                up.move(now());
+                up.move(woke);
             }
             if ((targetOps & SelectionKey.OP_READ) != 0 && !up.ended() && !down.ended()) {
-                down.move(now());
+                down.move(woke);
             }
         }
     }

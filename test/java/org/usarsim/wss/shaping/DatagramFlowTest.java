@@ -97,6 +97,29 @@ class DatagramFlowTest {
     }
 
     @Test
+    void aModelsLossRuleDecidesInsteadOfThePercentWithTheSizeTheTimeAndTheFlowsGenerator() {
+        DatagramFlow<String> flow = flow(5);
+        flow.setConditions(80_000_000, 0, 100); // the percent would lose everything
+        List<Long> asked = new ArrayList<>();
+        flow.setLossRule((bytes, nowNs, random) -> {
+            asked.add(nowNs);
+            return bytes > 100;
+        });
+        flow.offer(new byte[100], "kept", 0);
+        flow.offer(new byte[101], "lost", 0);
+        flow.offer(new byte[50], "kept too", 0);
+        List<String> due = new ArrayList<>();
+        flow.due(MS).forEach(datagram -> due.add(datagram.to()));
+        assertEquals(List.of("kept", "kept too"), due);
+        assertEquals(1, flow.lost());
+        assertEquals(List.of(0L, 0L, 0L), asked, "asked once per datagram, as it goes on the air");
+        flow.setLossRule(null);
+        flow.offer(new byte[10], "the percent again", 2 * MS);
+        assertTrue(flow.due(3 * MS).isEmpty());
+        assertEquals(2, flow.lost());
+    }
+
+    @Test
     void aLostDatagramKeepsTheRadioBusy() {
         Airtime air = Airtime.shared();
         DatagramFlow<String> lossy = new DatagramFlow<>(air.open("A", "B", 0), 1);

@@ -2,10 +2,16 @@ package org.usarsim.wss.model;
 
 /**
  * What a model may say of a link one way besides its strength, when links are shaped
- * (docs/shaping.md): its rate in bit/s (more than 0) and its delay in milliseconds (0 to 10,000).
- * A model that says nothing leaves both to the server's shaping settings.
+ * (docs/shaping.md): its rate in bit/s (more than 0) and its delay in milliseconds (0 to 10,000),
+ * and how the datagrams of its fixed UDP ports are lost ({@link DatagramLoss}; null: by the
+ * server's loss table). A model that says nothing leaves them to the server's shaping settings.
  */
-public record LinkQuality(long bitsPerSecond, int delayMs) {
+public record LinkQuality(long bitsPerSecond, int delayMs, DatagramLoss datagramLoss) {
+
+    /** A rate and a delay, the datagrams lost by the server's loss table. */
+    public LinkQuality(long bitsPerSecond, int delayMs) {
+        this(bitsPerSecond, delayMs, null);
+    }
 
     public LinkQuality {
         if (bitsPerSecond <= 0) {

@@ -4,6 +4,7 @@ import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.SplittableRandom;
+import java.util.random.RandomGenerator;
 
 /**
  * One direction of a fixed UDP port's pair (docs/fixed-ports.md): the datagrams received and not
@@ -41,6 +42,8 @@ public final class DatagramFlow<T> {
     /** The stage after the air: a datagram is due when it is off the air plus the delay. */
     private final Delay delay = new Delay(0);
     private double lossPercent;
+    /** The model's rule for the losses, instead of the percent; null: the percent. */
+    private LossRule lossRule;
     private final ArrayDeque<Datagram<T>> queue = new ArrayDeque<>();
     private long queuedBytes;
     private final ArrayDeque<Pending<T>> onTheWay = new ArrayDeque<>();
@@ -48,6 +51,12 @@ public final class DatagramFlow<T> {
     private boolean anyBooked;
     private long droppedQueue;
     private long lost;
+
+    /** A model's rule for losing a datagram (a {@code model.DatagramLoss}), drawn from the direction's generator. */
+    @FunctionalInterface
+    public interface LossRule {
+        boolean lost(int bytes, long nowNs, RandomGenerator random);
+    }
 
     /** A direction over {@code hop} (it owns the hop and closes it), its losses drawn from a generator seeded with {@code seed}. */
     public DatagramFlow(Airtime.Hop hop, long seed) {
@@ -65,6 +74,11 @@ public final class DatagramFlow<T> {
         this.bitsPerSecond = bitsPerSecond;
         this.delay.set(delayMs);
         this.lossPercent = lossPercent;
+    }
+
+    /** The model's rule for the losses from now on, instead of the loss percent; null: the percent. */
+    public void setLossRule(LossRule rule) {
+        this.lossRule = rule;
     }
 
     /**
@@ -113,7 +127,8 @@ public final class DatagramFlow<T> {
                 end = grant.endNs();
             }
             anyBooked = true;
-            if (lossPercent > 0 && random.nextDouble() * 100 < lossPercent) {
+            if (lossRule != null ? lossRule.lost(datagram.data().length, nowNs, random)
+                    : lossPercent > 0 && random.nextDouble() * 100 < lossPercent) {
                 lost++;
             } else {
                 onTheWay.add(new Pending<>(datagram, delay.dueAt(end)));

@@ -283,6 +283,10 @@ class HubCoreTest {
         shaped.release(AB, true, true, now, new Changes());
         assertEquals(new PairCondition(PairState.UP, 300_000, 40, 1), shaped.conditions().get(ab), "released: the model's again");
         assertEquals(new PairCondition(PairState.UP, 2_000_000, 5), shaped.conditions().get(ba));
+
+        org.usarsim.wss.model.DatagramLoss rule = (bytes, nowNs, random) -> bytes > 100;
+        shaped.measured(Map.of(ab, new Measurement(-85, Optional.of(new LinkQuality(300_000, 40, rule)))), new Changes());
+        assertSame(rule, shaped.conditions().get(ab).datagramLoss(), "the model's datagram loss rule reaches the pair's condition");
     }
 
     @Test

@@ -189,11 +189,18 @@ public final class UdpRelay implements AutoCloseable {
         PairCondition up = pair.up().get();
         if (up.shaped()) {
             forward.setConditions(up.bitsPerSecond(), up.delayMs(), up.lossPercent());
+            forward.setLossRule(lossRule(up));
         }
         PairCondition down = pair.down().get();
         if (down.shaped()) {
             back.setConditions(down.bitsPerSecond(), down.delayMs(), down.lossPercent());
+            back.setLossRule(lossRule(down));
         }
+    }
+
+    /** The model's rule for a datagram's loss (the RFComms model's), when it gives one; null: the loss percent. */
+    private static DatagramFlow.LossRule lossRule(PairCondition condition) {
+        return condition.datagramLoss() == null ? null : condition.datagramLoss()::lost;
     }
 
     /** The counts since the last report, each way that has any. */
@@ -290,6 +297,7 @@ public final class UdpRelay implements AutoCloseable {
             return;
         }
         forward.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
+        forward.setLossRule(lossRule(condition));
         if (!forward.offer(data, session, now)) {
             upCounts.droppedQueue();
         }
@@ -323,6 +331,7 @@ public final class UdpRelay implements AutoCloseable {
             return;
         }
         back.setConditions(condition.bitsPerSecond(), condition.delayMs(), condition.lossPercent());
+        back.setLossRule(lossRule(condition));
         if (!back.offer(data, session.sender(), now)) {
             downCounts.droppedQueue();
         }

@@ -51,6 +51,8 @@ public abstract class SimulatorModel extends PollingModel {
     private volatile PollSnapshot snapshot = PollSnapshot.empty(new LinkStates(0, 0, 0), 0);
     /** The polling of the current run, from a start to its shutdown; null while stopped. */
     private volatile SimulatorPoller poller;
+    /** The shadowing of the current run (shadowing.*), added to every strength; none before the first start. */
+    private volatile Shadowing shadowing = Shadowing.NONE;
     /** The simulator's walls as its connection last gave them (GETWALLS); empty when it gives none. */
     private volatile List<Wall> walls = List.of();
 
@@ -100,6 +102,7 @@ public abstract class SimulatorModel extends PollingModel {
             unreachable = e instanceof IOException io ? io : new IOException(e.getMessage(), e);
         }
         config = run;
+        shadowing = Shadowing.of(run.values());
         LinkStates links = new LinkStates(run.pathLoss().cutoff(), run.margin(), run.holdSeconds());
         snapshot = PollSnapshot.empty(links, clock.nanoTime());
         List<Wall> own = ownWalls();
@@ -137,7 +140,7 @@ public abstract class SimulatorModel extends PollingModel {
         PollSnapshot known = snapshot;
         ReportedRobot a = known.positions().get(from);
         ReportedRobot b = known.positions().get(to);
-        return a == null || b == null ? Double.NaN : strength(a, b, known.obstacles(RobotPair.of(from, to)));
+        return a == null || b == null ? Double.NaN : signal(a, b, known.obstacles(RobotPair.of(from, to)));
     }
 
     /**
@@ -154,7 +157,7 @@ public abstract class SimulatorModel extends PollingModel {
         }
         ReportedRobot a = known.positions().get(from);
         ReportedRobot b = known.positions().get(to);
-        return a == null || b == null ? allowsUnknownRobots() : strength(a, b, known.obstacles(pair)) >= pathLoss().cutoff();
+        return a == null || b == null ? allowsUnknownRobots() : signal(a, b, known.obstacles(pair)) >= pathLoss().cutoff();
     }
 
     /** Where the last poll found the robot; empty before it or when the simulator did not list it. */
@@ -233,6 +236,11 @@ public abstract class SimulatorModel extends PollingModel {
     }
 
     // ---- what the poller reads and publishes ----
+
+    /** The strength the model decides by: the subclass's {@link #strength} plus the run's shadowing (docs/models.md). */
+    final double signal(ReportedRobot a, ReportedRobot b, double obstacles) {
+        return strength(a, b, obstacles) + shadowing.db(a, b);
+    }
 
     PollClock clock() {
         return clock;

@@ -144,7 +144,7 @@ final class SimulatorPoller implements Runnable {
             return null;
         }
         PollStep.Decision decision = PollStep.decide(present, listed, obstacles, model.clock().nanoTime(), model.snapshot().links(),
-                model::strength);
+                model::signal);
         // Only now, whole: a GETSS meanwhile answers from the last poll's positions and counts.
         model.published(decision.snapshot());
         List<ModelPoll.Pair> pairs = new ArrayList<>(decision.links().size());

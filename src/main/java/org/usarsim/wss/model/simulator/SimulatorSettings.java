@@ -56,5 +56,14 @@ final class SimulatorSettings {
             Setting.number("distance.margin", "Margin", "0").from(0).unit("dB")
                     .help("A broken link resumes only when the strength is above Cutoff + Margin, so that a pair at the edge does not flap"),
             Setting.number("distance.holdTime", "Hold time", "0").from(0).unit("s")
-                    .help("A link stays broken, or resumed, at least this many seconds before it changes again"));
+                    .help("A link stays broken, or resumed, at least this many seconds before it changes again"),
+            Setting.number(Shadowing.SIGMA, "Shadowing sigma", "0").from(0).to(30).unit("dB").note("0: none")
+                    .help("Log-normal shadowing: a term of this standard deviation added to each pair's strength,"
+                            + " correlated in space (docs/models.md, \"Shadowing\"); 10 dB indoors"),
+            Setting.number(Shadowing.DISTANCE, "Decorrelation distance", "5").above(0).unit("m")
+                    .help("How far a robot moves before its shadowing is unrelated to the one it left (Gudmundson's model):"
+                            + " 5 m indoors, 50 m outdoors"),
+            Setting.integer(Shadowing.SEED, "Seed", 1).from(0).to(Integer.MAX_VALUE)
+                    .help("The seed of the radio's random draws (shadowing, RFComms' losses): the same seed and the same"
+                            + " positions give the same strengths, run after run"));
 }

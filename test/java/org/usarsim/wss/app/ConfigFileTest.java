@@ -83,6 +83,9 @@ class ConfigFileTest {
             Map.entry("distance.d0", "2"),
             Map.entry("distance.margin", "0"),
             Map.entry("distance.holdTime", "0"),
+            Map.entry("shadowing.sigma", "0"),
+            Map.entry("shadowing.distance", "5"),
+            Map.entry("radio.seed", "1"),
             Map.entry("obstacle.attenuation", "6.325"),
             Map.entry("obstacle.cacheDistance", "1.0"),
             Map.entry("obstacle.walls", ""),
@@ -90,7 +93,15 @@ class ConfigFileTest {
             Map.entry("replay.file", ""),
             Map.entry("replay.speed", "1"),
             Map.entry("replay.start", "0"),
-            Map.entry("replay.loop", "false"));
+            Map.entry("replay.loop", "false"),
+            Map.entry("rfcomms.preset", "gz-sim"),
+            Map.entry("rfcomms.txPower", ""),
+            Map.entry("rfcomms.noiseFloor", ""),
+            Map.entry("rfcomms.l0", ""),
+            Map.entry("rfcomms.fadingExponent", ""),
+            Map.entry("rfcomms.sigma", ""),
+            Map.entry("rfcomms.maxRange", ""),
+            Map.entry("rfcomms.capacity", ""));
 
     @TempDir
     Path dir;
@@ -122,7 +133,7 @@ class ConfigFileTest {
         assertEquals(Map.of(), settings.modelValues().asMap(), "NoopPropagationModel declares no setting");
         // the obstacle model declares every non-wss key but the replay's: exactly the documented ones.
         Map<String, String> expected = new TreeMap<>(DEFAULTS);
-        expected.keySet().removeIf(key -> key.startsWith("wss.") || key.startsWith("replay."));
+        expected.keySet().removeIf(key -> key.startsWith("wss.") || key.startsWith("replay.") || key.startsWith("rfcomms."));
         assertEquals(expected, ConfigFile.of(props("wss.model", "ObstaclePropagationModel"), "t").modelValues().asMap());
         Map<String, String> replay = new TreeMap<>(DEFAULTS);
         replay.keySet().removeIf(key -> !key.startsWith("replay."));
@@ -353,6 +364,7 @@ class ConfigFileTest {
     private static Map<String, String> modelDefaults() {
         Map<String, String> defaults = new TreeMap<>(Setting.defaults(new ObstaclePropagationModel().settings()));
         defaults.putAll(Setting.defaults(new ReplayPropagationModel().settings()));
+        defaults.putAll(Setting.defaults(new org.usarsim.wss.model.rfcomms.RfCommsPropagationModel().settings()));
         return defaults;
     }
 
@@ -370,7 +382,8 @@ class ConfigFileTest {
 
         assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
         assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("positions") || key.startsWith("usarsim.")
-                || key.startsWith("rosbridge.") || key.startsWith("distance.") || key.startsWith("obstacle.")), model.toString());
+                || key.startsWith("rosbridge.") || key.startsWith("distance.") || key.startsWith("obstacle.")
+                || key.startsWith("shadowing.") || key.equals("radio.seed")), model.toString());
         assertEquals(Map.ofEntries(
                 Map.entry("positions", "usarsim"),
                 Map.entry("positions.interval", "1000"),
@@ -394,7 +407,10 @@ class ConfigFileTest {
                 Map.entry("distance.margin", "0"),
                 Map.entry("distance.holdTime", "0"),
                 Map.entry("obstacle.attenuation", "6.325"),
-                Map.entry("obstacle.cacheDistance", "0.25")), model);
+                Map.entry("obstacle.cacheDistance", "0.25"),
+                Map.entry("shadowing.sigma", "0"),
+                Map.entry("shadowing.distance", "5"),
+                Map.entry("radio.seed", "1")), model);
         assertEquals(3.5, ConfigFile.of(properties, "t").modelValues().getDouble("distance.d0", -1), 0);
     }
 
@@ -456,7 +472,7 @@ class ConfigFileTest {
         ConfigFile settings = ConfigFile.of(properties, "t");
         Map<String, String> model = settings.modelValues().asMap();
         assertEquals("2", model.get("distance.n"));
-        assertEquals(19, model.size(), "positions.*, usarsim.*, rosbridge.* and distance.*: " + model);
+        assertEquals(22, model.size(), "positions.*, usarsim.*, rosbridge.*, distance.*, shadowing.* and radio.seed: " + model);
         assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
         assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
         assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");
@@ -512,6 +528,7 @@ class ConfigFileTest {
         List<Setting> all = new java.util.ArrayList<>(ConfigKeys.SERVER);
         all.addAll(new ObstaclePropagationModel().settings());
         all.addAll(new ReplayPropagationModel().settings());
+        all.addAll(new org.usarsim.wss.model.rfcomms.RfCommsPropagationModel().settings());
         return all;
     }
 

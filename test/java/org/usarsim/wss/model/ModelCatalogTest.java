@@ -78,7 +78,8 @@ class ModelCatalogTest {
                 List.of("Base", "BadDefault", "DeclarationThrows", "ServerKey", "TunedModel"),
                 List.of("BadDefault", "DeclarationThrows", "ServerKey", "TunedModel"));
         ModelCatalog catalog = ModelCatalog.load(APPLICATION, List.of(folder));
-        assertEquals(List.of("NoopPropagationModel", "DistanceOnlyPropagationModel", "ObstaclePropagationModel", "ReplayPropagationModel", "Tuned"),
+        assertEquals(List.of("NoopPropagationModel", "DistanceOnlyPropagationModel", "ObstaclePropagationModel", "ReplayPropagationModel", "RFComms",
+                "Tuned"),
                 catalog.names());
         warning("skipping the propagation model BadDefault in " + jar, "bad.level: the default '0' is not a whole number from 1 to 10");
         warning("skipping the propagation model DeclarationThrows in " + jar, "settings() failed", "settings() fails");

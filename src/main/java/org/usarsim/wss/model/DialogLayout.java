@@ -14,10 +14,11 @@ public enum DialogLayout {
     /**
      * The DistanceOnly model's layout (the original's, with where positions come from): "Positions",
      * "USARSim Connection", "rosbridge", "Signal Strength Computation Parameters", the cutoff
-     * distance computed both ways, and "Link Stability". It shows positions, positions.interval,
+     * distance computed both ways, "Link Stability" and "Shadowing". It shows positions, positions.interval,
      * usarsim.host, usarsim.port, usarsim.timeout, the rosbridge.* keys (url, topic, type, frame,
      * names, stale, maxMessage), distance.cutoff, distance.n, distance.pd0, distance.d0,
-     * distance.margin and distance.holdTime: a model that does not declare every one of them gets
+     * distance.margin, distance.holdTime, and "Shadowing": shadowing.sigma, shadowing.distance and
+     * radio.seed: a model that does not declare every one of them gets
      * {@link #GENERATED}.
      */
     DISTANCE,

@@ -34,17 +34,19 @@ class RfCommsModelTest {
     }
 
     @Test
-    void theCatalogOffersRfCommsAndSubtWithTheirDefaultsAndTheGeneratedDialog() {
+    void theCatalogOffersRfCommsWhoseEmptyParametersAreThePresetsInTheGeneratedDialog() {
         RfCommsPropagationModel rf = (RfCommsPropagationModel) ModelCatalog.load(RfCommsModelTest.class.getClassLoader()).find("RFComms");
-        PropagationModelDefaults.check(rf.settings(), Map.of("rfcomms.txPower", "27", "rfcomms.noiseFloor", "-90", "rfcomms.l0", "40",
-                "rfcomms.fadingExponent", "2.5", "rfcomms.sigma", "10", "rfcomms.maxRange", "50", "rfcomms.capacity", "54000000",
-                "distance.cutoff", "-90"));
-        PropagationModelDefaults.check(ModelCatalog.load(RfCommsModelTest.class.getClassLoader()).find("SubT").settings(), Map.of("rfcomms.txPower", "20",
-                "rfcomms.maxRange", "500", "rfcomms.capacity", "1000000"));
+        PropagationModelDefaults.check(rf.settings(), Map.of("rfcomms.preset", "gz-sim", "rfcomms.txPower", "", "rfcomms.noiseFloor", "",
+                "rfcomms.l0", "", "rfcomms.fadingExponent", "", "rfcomms.sigma", "", "rfcomms.maxRange", "", "rfcomms.capacity", "",
+                "distance.cutoff", "-93"));
         assertEquals(DialogLayout.GENERATED, rf.dialogLayout());
         for (String unused : List.of("distance.pd0", "distance.n", "distance.d0", "shadowing.sigma")) {
             assertEquals(null, Setting.find(rf.settings(), unused), unused);
         }
+        assertEquals(RfChannel.GZ_SIM, RfCommsPropagationModel.channelOf(checked(Map.of())));
+        assertEquals(RfChannel.SUBT, RfCommsPropagationModel.channelOf(checked(Map.of("rfcomms.preset", "subt"))));
+        assertEquals(new RfChannel(20, -90, 40, 3, 10, 500, 1e6),
+                RfCommsPropagationModel.channelOf(checked(Map.of("rfcomms.preset", "subt", "rfcomms.fadingExponent", "3"))));
     }
 
     @Test
@@ -56,7 +58,7 @@ class RfCommsModelTest {
         assertEquals(Double.NEGATIVE_INFINITY, model.strength(a, new ReportedRobot("B", 60, 0, 0, false), 3));
         assertEquals(50, model.range(0), 1e-9);
         model.started(checked(Map.of("rfcomms.txPower", "-30")));
-        assertEquals(Math.pow(10, (-30 - 40 + 93) / 25.0), model.range(0), 1e-9, "before a start the cutoff is the default -93 dBm");
+        assertEquals(Math.pow(10, (-30 - 40 + 93) / 25.0), model.range(0), 1e-9, "where the mean power reaches the cutoff, -93 dBm");
     }
 
     @Test

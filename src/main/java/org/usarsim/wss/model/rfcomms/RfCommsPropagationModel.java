@@ -21,14 +21,17 @@ import org.usarsim.wss.model.simulator.SimulatorModel;
 /**
  * gz-sim's RFComms as a WSS model (docs/models.md, "RFComms and SubT"), positions from the
  * simulator models' sources: a pair's strength is RFComms' mean received power
- * ({@link RfChannel#meanPower}); a link is up while it is at least the cutoff (the noise floor by
- * default) and within max_range. With links shaped, the pair's rate is the radio's capacity
+ * ({@link RfChannel#meanPower}); a link is up within max_range while that power is at least
+ * the cutoff ({@code distance.cutoff}, -93 dBm as the other models'; RFComms has none). Its
+ * parameters take a preset's values ({@code rfcomms.preset}: gz-sim's RFComms, or the SubT
+ * simulator's: 20 dBm, 1 Mbit/s, 500 m; SubT's visibility cost is not modelled, docs/models.md). With links shaped, the pair's rate is the radio's capacity
  * (delay 0: RFComms has none) and each datagram of a fixed UDP port goes through RFComms' own
  * steps ({@link #datagramLoss}): the sender radio's 1 s capacity window, the power drawn, the BER
  * and the loss draw, the receiver's window. Walls are not counted, as RFComms counts none.
  */
 public class RfCommsPropagationModel extends SimulatorModel {
 
+    static final String PRESET = "rfcomms.preset";
     static final String TX_POWER = "rfcomms.txPower";
     static final String NOISE_FLOOR = "rfcomms.noiseFloor";
     static final String L0 = "rfcomms.l0";
@@ -36,38 +39,30 @@ public class RfCommsPropagationModel extends SimulatorModel {
     static final String SIGMA = "rfcomms.sigma";
     static final String MAX_RANGE = "rfcomms.maxRange";
     static final String CAPACITY = "rfcomms.capacity";
-    static final String CUTOFF = "distance.cutoff";
+
+    /** The presets, by the value of rfcomms.preset: gz-sim's defaults and the SubT simulator's. */
+    static final Map<String, RfChannel> PRESETS = Map.of("gz-sim", RfChannel.GZ_SIM, "subt", RfChannel.SUBT);
 
     /** The simulator models' keys this model has no use for: the log-distance formula's and the shadowing's. */
     private static final Set<String> NOT_USED = Set.of("distance.pd0", "distance.n", "distance.d0", "shadowing.sigma",
             "shadowing.distance");
 
-    private final RfChannel defaults;
-    private final List<Setting> settings;
-    /** The channel of the current run (the defaults before the first start). */
-    private volatile RfChannel channel;
+    private final List<Setting> settings = declare(super.settings());
+    /** The channel of the current run (gz-sim's before the first start). */
+    private volatile RfChannel channel = RfChannel.GZ_SIM;
     /** Each robot's radio's capacity windows, sending and receiving, of the current run. */
     private volatile Map<String, CapacityWindow> sending = new ConcurrentHashMap<>();
     private volatile Map<String, CapacityWindow> receiving = new ConcurrentHashMap<>();
     /** Each way's loss rule, made once a run: the same rule each time the hub asks, so its condition does not change. */
     private volatile Map<List<String>, DatagramLoss> rules = new ConcurrentHashMap<>();
 
-    /** gz-sim's RFComms defaults, on the machine's clock. */
+    /** On the machine's clock. */
     public RfCommsPropagationModel() {
-        this(RfChannel.GZ_SIM, PollClock.SYSTEM);
     }
 
-    /** gz-sim's RFComms defaults; the poller takes its time from {@code clock}. */
+    /** The poller takes its time from {@code clock}. */
     public RfCommsPropagationModel(PollClock clock) {
-        this(RfChannel.GZ_SIM, clock);
-    }
-
-    /** A preset: these defaults (SubT's, say). */
-    protected RfCommsPropagationModel(RfChannel defaults, PollClock clock) {
         super(clock);
-        this.defaults = defaults;
-        this.channel = defaults;
-        this.settings = declare(super.settings(), defaults);
     }
 
     @Override
@@ -81,48 +76,59 @@ public class RfCommsPropagationModel extends SimulatorModel {
         return DialogLayout.GENERATED;
     }
 
-    /** Where the positions come from and the link stability (the simulator models'), the cutoff, then RFComms' parameters. */
+    /** Where the positions come from, the cutoff and the link stability (the simulator models'), then RFComms' parameters. */
     @Override
     public List<Setting> settings() {
         return settings;
     }
 
-    private static List<Setting> declare(List<Setting> simulator, RfChannel d) {
+    private static List<Setting> declare(List<Setting> simulator) {
         List<Setting> all = new ArrayList<>();
-        for (Setting setting : simulator) {
-            if (setting.key().equals(CUTOFF)) {
-                all.add(Setting.number(CUTOFF, "Link cutoff", plain(d.noiseFloor())).unit("dBm")
-                        .help("A link (TCP) is up while the mean received power is at least this, within the max range;"
-                                + " datagrams on fixed UDP ports are lost by RFComms' bit error rate instead"));
-            } else if (!NOT_USED.contains(setting.key())) {
-                all.add(setting);
-            }
-        }
-        all.add(Setting.number(TX_POWER, "Transmit power", plain(d.txPower())).unit("dBm").help("radio_config/tx_power"));
-        all.add(Setting.number(NOISE_FLOOR, "Noise floor", plain(d.noiseFloor())).unit("dBm").help("radio_config/noise_floor"));
-        all.add(Setting.number(L0, "Path loss at 1 m", plain(d.l0())).unit("dB").help("range_config/l0"));
-        all.add(Setting.number(FADING_EXPONENT, "Fading exponent", plain(d.fadingExponent())).above(0)
-                .help("range_config/fading_exponent"));
-        all.add(Setting.number(SIGMA, "Sigma", plain(d.sigma())).from(0)
-                .help("range_config/sigma: the variance of each message's received power, in dB^2, as RFComms uses it"
-                        + " (its standard deviation is the square root: 3.16 dB for 10)"));
-        all.add(Setting.number(MAX_RANGE, "Max range", plain(d.maxRange())).from(0).unit("m").note("0: none")
-                .help("range_config/max_range: beyond it nothing passes"));
-        all.add(Setting.number(CAPACITY, "Capacity", plain(d.capacity())).above(0).unit("bit/s")
-                .help("radio_config/capacity: the bits a radio sends, and receives, in any 1 s; a shaped link's rate"));
+        simulator.stream().filter(setting -> !NOT_USED.contains(setting.key())).forEach(all::add);
+        all.add(Setting.choice(PRESET, "Preset", "gz-sim", List.of("gz-sim", "subt"))
+                .help("Whose defaults the empty parameters below take: gz-sim's RFComms, or the DARPA SubT simulator's"));
+        all.add(parameter(TX_POWER, "Transmit power", "dBm", "radio_config/tx_power", RfChannel::txPower));
+        all.add(parameter(NOISE_FLOOR, "Noise floor", "dBm", "radio_config/noise_floor", RfChannel::noiseFloor));
+        all.add(parameter(L0, "Path loss at 1 m", "dB", "range_config/l0", RfChannel::l0));
+        all.add(parameter(FADING_EXPONENT, "Fading exponent", null, "range_config/fading_exponent", RfChannel::fadingExponent).above(0));
+        all.add(parameter(SIGMA, "Sigma", null, "range_config/sigma: the variance of each message's received power in dB^2,"
+                + " as RFComms uses it (its standard deviation is the square root: 3.16 dB for 10)", RfChannel::sigma).from(0));
+        all.add(parameter(MAX_RANGE, "Max range", "m", "range_config/max_range: beyond it nothing passes; 0: no limit",
+                RfChannel::maxRange).from(0));
+        all.add(parameter(CAPACITY, "Capacity", "bit/s", "radio_config/capacity: the bits a radio sends, and receives, in any"
+                + " 1 s; a shaped link's rate", RfChannel::capacity).above(0));
         return List.copyOf(all);
+    }
+
+    /** A parameter whose empty value (the default) is the preset's. */
+    private static Setting parameter(String key, String label, String unit, String help,
+            java.util.function.ToDoubleFunction<RfChannel> value) {
+        Setting setting = Setting.number(key, label, "").orEmpty("the preset's, " + plain(value.applyAsDouble(RfChannel.GZ_SIM))
+                + " (gz-sim) or " + plain(value.applyAsDouble(RfChannel.SUBT)) + " (SubT)").help(help);
+        return unit == null ? setting : setting.unit(unit);
     }
 
     private static String plain(double value) {
         return value == Math.rint(value) && Math.abs(value) < 1e15 ? Long.toString((long) value) : Double.toString(value);
     }
 
+    /** The run's channel: the preset's parameters, each one given instead. */
+    static RfChannel channelOf(ModelSettings values) {
+        RfChannel preset = PRESETS.getOrDefault(values.getString(PRESET, "gz-sim"), RfChannel.GZ_SIM);
+        return new RfChannel(given(values, TX_POWER, preset.txPower()), given(values, NOISE_FLOOR, preset.noiseFloor()),
+                given(values, L0, preset.l0()), given(values, FADING_EXPONENT, preset.fadingExponent()),
+                given(values, SIGMA, preset.sigma()), given(values, MAX_RANGE, preset.maxRange()),
+                given(values, CAPACITY, preset.capacity()));
+    }
+
+    private static double given(ModelSettings values, String key, double preset) {
+        String value = values.getString(key, "").strip();
+        return value.isEmpty() ? preset : Double.parseDouble(value);
+    }
+
     @Override
     protected void started(ModelSettings values) throws ModelStartException {
-        channel = new RfChannel(values.getDouble(TX_POWER, defaults.txPower()), values.getDouble(NOISE_FLOOR, defaults.noiseFloor()),
-                values.getDouble(L0, defaults.l0()), values.getDouble(FADING_EXPONENT, defaults.fadingExponent()),
-                values.getDouble(SIGMA, defaults.sigma()), values.getDouble(MAX_RANGE, defaults.maxRange()),
-                values.getDouble(CAPACITY, defaults.capacity()));
+        channel = channelOf(values);
         sending = new ConcurrentHashMap<>();
         receiving = new ConcurrentHashMap<>();
         rules = new ConcurrentHashMap<>();

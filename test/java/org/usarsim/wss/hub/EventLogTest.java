@@ -150,6 +150,16 @@ class EventLogTest {
     }
 
     @Test
+    void aSettingOfTheRandomDrawsIsOneLine() throws Exception {
+        CsvEventLog log = CsvEventLog.create(dir);
+        log.setting("radio.seed", "42");
+        log.close();
+        List<String> lines = Files.readAllLines(log.file());
+        assertEquals(1, lines.size(), lines.toString());
+        assertTrue(lines.get(0).matches("SETTING,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},radio.seed,42"), lines.get(0));
+    }
+
+    @Test
     void aStuckWriterNeverHoldsUpTheLinksAndTheDroppedEventsAreCounted() throws Exception {
         StuckWriter writer = new StuckWriter();
         CsvEventLog log = new CsvEventLog(dir.resolve("stuck.txt"), writer, 8, HubClock.SYSTEM);

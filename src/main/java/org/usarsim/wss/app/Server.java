@@ -14,6 +14,7 @@ import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.model.simulator.Shadowing;
 import org.usarsim.wss.recording.Recorder;
 import org.usarsim.wss.shaping.ShapingConfig;
 
@@ -83,6 +84,7 @@ final class Server implements AutoCloseable {
         if (eventLogDir != null) {
             try {
                 eventLog = CsvEventLog.create(eventLogDir, HubClock.SYSTEM);
+                randomSettings(model, values).forEach(eventLog::setting);
             } catch (IOException e) {
                 throw new StartFailure("cannot write the event log in " + eventLogDir + ": " + e);
             }
@@ -99,6 +101,18 @@ final class Server implements AutoCloseable {
             }
         }
         return new Server(config, model, eventLog, recorder);
+    }
+
+    /** The settings of the model's random draws it declares (shadowing.*, radio.seed), with this run's values: the event log's SETTING lines. */
+    static Map<String, String> randomSettings(PropagationModel model, ModelSettings values) {
+        Map<String, String> settings = new LinkedHashMap<>();
+        for (String key : Shadowing.KEYS) {
+            Setting setting = Setting.find(model.settings(), key);
+            if (setting != null) {
+                settings.put(key, values.getString(key, setting.defaultValue()));
+            }
+        }
+        return settings;
     }
 
     /** A recording's settings: every setting the model declares with this run's value, then the six wss.shaping* keys. */

@@ -219,6 +219,11 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     /** An operator moved the replay: where it is now (s, to the millisecond), its speed, PLAY or PAUSE. Never limited, as the log's lines are. */
+    /** A setting the run's random draws depend on (radio.seed, shadowing.*), written at the start: {@code SETTING,t,key,value}. */
+    public void setting(String key, String value) {
+        event("SETTING", key, value);
+    }
+
     @Override
     public void replayMoved(double timeSeconds, double speed, boolean playing) {
         event("REPLAY", Strengths.format(Math.round(timeSeconds * 1000) / 1000.0), Strengths.format(speed), playing ? "PLAY" : "PAUSE");

@@ -1,5 +1,6 @@
 package org.usarsim.wss.model.simulator;
 
+import java.util.List;
 import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 import java.util.concurrent.ConcurrentHashMap;
@@ -27,6 +28,8 @@ public final class Shadowing {
     public static final String SIGMA = "shadowing.sigma";
     public static final String DISTANCE = "shadowing.distance";
     public static final String SEED = "radio.seed";
+    /** The three, in the order the CSV event log writes them at a run's start. */
+    public static final List<String> KEYS = List.of(SIGMA, DISTANCE, SEED);
 
     /** The cosines summed per pair. */
     static final int FEATURES = 64;

@@ -271,6 +271,21 @@ class ModelDialogsTest {
     }
 
     @Test
+    void theRfCommsModelGetsTheGeneratedDialogWithItsPresetAndParameters() throws Exception {
+        org.usarsim.wss.model.rfcomms.RfCommsPropagationModel model = new org.usarsim.wss.model.rfcomms.RfCommsPropagationModel();
+        CompletableFuture<Boolean> shown = show(model, true);
+        Window dialog = dialog("RFComms Configuration");
+        for (String key : List.of("rfcomms.txPower", "rfcomms.capacity", "rfcomms.maxRange", "radio.seed", "usarsim.port")) {
+            assertTrue(hasField(dialog, key), key);
+        }
+        assertFalse(hasField(dialog, "distance.pd0"), "not RFComms'");
+        type(dialog, "rfcomms.txPower", "20");
+        click(dialog, DialogParts.OK);
+        assertTrue(shown.get(5, TimeUnit.SECONDS));
+        assertEquals("20", preferences.load(model).get("rfcomms.txPower"));
+    }
+
+    @Test
     void readOnlyWhileTheServerRuns() throws Exception {
         DistanceOnlyPropagationModel model = new DistanceOnlyPropagationModel();
         CompletableFuture<Boolean> shown = show(model, false);

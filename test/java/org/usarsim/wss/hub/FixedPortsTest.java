@@ -212,6 +212,40 @@ class FixedPortsTest {
         }
     }
 
+    @Test
+    void aShapedFixedUdpPortLosesWhatTheModelsOwnRuleSaysInsteadOfTheTable() throws Exception {
+        try (DatagramSocket base = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+            int number = Sockets.freeUdp();
+            HubConfig config = TestHub.config(true, 65536, 600, 1000, 30)
+                    .withShaping(new org.usarsim.wss.shaping.ShapingConfig(true, org.usarsim.wss.shaping.RateTable.DEFAULT, 2, true,
+                            org.usarsim.wss.shaping.ShapingConfig.DEFAULT_QUEUE_MS, org.usarsim.wss.shaping.LossTable.parse("0:100")), Map.of())
+                    .withFixed(new FixedSetup(List.of(new DeclaredRobot("Base", LOCAL), new DeclaredRobot("Scout", LOCAL)),
+                            List.of(new FixedPort(FixedPort.Transport.UDP, new PortKey("Scout", "Base", base.getLocalPort()), number)), 60));
+            org.usarsim.wss.model.DatagramLoss largeOnesLost = (bytes, nowNs, random) -> bytes > 100;
+            org.usarsim.wss.model.StubModel model = new org.usarsim.wss.model.StubModel() {
+                @Override
+                public java.util.Optional<org.usarsim.wss.model.LinkQuality> linkQualityForPair(String from, String to) {
+                    return java.util.Optional.of(new org.usarsim.wss.model.LinkQuality(54_000_000, 0, largeOnesLost));
+                }
+            };
+            try (TestHub test = new TestHub(model, config); DatagramSocket scout = new DatagramSocket(new InetSocketAddress(LOCAL, 0))) {
+                Wait.until("the model's quality in the pair's condition (its rate, and with it its rule)", () -> test.hub.snapshot().pairs()
+                        .stream().anyMatch(pair -> pair.linkRateFirstToSecond() == 54_000_000 && pair.linkRateSecondToFirst() == 54_000_000));
+                for (int size : new int[] {100, 101, 50, 1000}) {
+                    scout.send(new DatagramPacket(new byte[size], size, LOCAL, number));
+                }
+                Wait.until("two lost by the model's rule (the table would lose all four)",
+                        () -> udp(test, "Scout").lost() == 2 && udp(test, "Scout").datagrams() == 2);
+                base.setSoTimeout(5000);
+                DatagramPacket got = new DatagramPacket(new byte[2000], 2000);
+                base.receive(got);
+                assertEquals(100, got.getLength());
+                base.receive(got);
+                assertEquals(50, got.getLength());
+            }
+        }
+    }
+
     /**
      * Datagrams queued at a low rate take a raised one (issue 27): 20 of 1,000 bytes from Scout at
      * 16 kbit/s, half a second of airtime each; once the first arrived the pair is raised to

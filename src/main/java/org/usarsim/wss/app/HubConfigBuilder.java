@@ -63,6 +63,7 @@ final class HubConfigBuilder {
                     + ConfigKeys.RATES_WORDS + ": " + e.getMessage());
         }
         shapingValues.put(ShapingConfig.LOSS, get(ShapingConfig.LOSS));
+        shapingValues.put(ShapingConfig.SEED, get(ShapingConfig.SEED));
         try {
             LossTable.parse(get(ShapingConfig.LOSS));
         } catch (IllegalArgumentException e) {

@@ -101,7 +101,7 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog, recorder);
     }
 
-    /** A recording's settings: every setting the model declares with this run's value, then the six wss.shaping* keys. */
+    /** A recording's settings: every setting the model declares with this run's value, then the wss.shaping* keys and wss.seed. */
     private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
@@ -113,6 +113,10 @@ final class Server implements AutoCloseable {
         settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
         settings.put(ShapingConfig.LOSS, shaping.loss().toString());
         settings.put(ShapingConfig.QUEUE_MS, String.valueOf(shaping.queueMs()));
+        settings.put(ShapingConfig.JITTER, String.valueOf(shaping.jitter().ms()));
+        settings.put(ShapingConfig.JITTER_DISTRIBUTION, shaping.jitter().distribution().word());
+        settings.put(ShapingConfig.REORDER, String.valueOf(shaping.jitter().reorder()));
+        settings.put(ShapingConfig.SEED, String.valueOf(shaping.jitter().seed()));
         return settings;
     }
 

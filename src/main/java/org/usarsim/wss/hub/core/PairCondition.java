@@ -4,9 +4,15 @@ package org.usarsim.wss.hub.core;
  * A pair's condition one way, the one value the hub, the link threads, the statistics, the map
  * and the event log read: its state (up, broken, forced) and, when links are shaped, its rate
  * in bit/s and its delay in milliseconds (0 and 0 when they are not: as fast as the machine goes),
- * and the percent of datagrams a fixed UDP port loses (wss.shaping.loss; 0 unshaped).
+ * and the percent of datagrams a fixed UDP port loses (wss.shaping.loss; 0 unshaped), and the
+ * delay's jitter in milliseconds (wss.shaping.jitter or a pin's; 0: none).
  */
-public record PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent) {
+public record PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent, int jitterMs) {
+
+    /** No jitter. */
+    public PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent) {
+        this(state, bitsPerSecond, delayMs, lossPercent, 0);
+    }
 
     /** No datagram lost. */
     public PairCondition(PairState state, long bitsPerSecond, int delayMs) {

@@ -253,6 +253,12 @@ class LinkShapingWindowTest {
         type(dialog, DELAY, "30");
         type(dialog, QUEUE, "400");
         run(() -> find(dialog, JCheckBox.class, "wss.shaping.airtime").setSelected(false));
+        assertEquals("0", text(dialog, "wss.shaping.jitter"), "no jitter by default");
+        type(dialog, "wss.shaping.jitter", "10001");
+        assertTrue(refused(dialog, "wss.shaping.jitter"), "the jitter's field is red");
+        type(dialog, "wss.shaping.jitter", "15");
+        run(() -> find(dialog, javax.swing.JComboBox.class, "wss.shaping.jitterDistribution").setSelectedItem("normal"));
+        run(() -> find(dialog, JCheckBox.class, "wss.shaping.reorder").setSelected(true));
         press(dialog, "ok");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         closeWindow();
@@ -266,6 +272,9 @@ class LinkShapingWindowTest {
         assertEquals("30", text(again, DELAY));
         assertEquals("400", text(again, QUEUE));
         assertFalse(onEdt(() -> find(again, JCheckBox.class, "wss.shaping.airtime").isSelected()));
+        assertEquals("15", text(again, "wss.shaping.jitter"));
+        assertEquals("normal", onEdt(() -> find(again, javax.swing.JComboBox.class, "wss.shaping.jitterDistribution").getSelectedItem()));
+        assertTrue(onEdt(() -> find(again, JCheckBox.class, "wss.shaping.reorder").isSelected()));
         press(again, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         closeWindow();
@@ -281,8 +290,8 @@ class LinkShapingWindowTest {
         press(withFile, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         WindowPreferences stored = new WindowPreferences(preferences.node("window"));
-        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false", QUEUE, "400"),
-                stored.shaping());
+        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false", QUEUE, "400",
+                "wss.shaping.jitter", "15", "wss.shaping.jitterDistribution", "normal", "wss.shaping.reorder", "true"), stored.shaping());
 
         // ...until OK stores what the dialog shows: from then on, what was entered.
         Window entered = dialog();

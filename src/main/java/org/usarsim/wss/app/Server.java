@@ -165,6 +165,8 @@ final class Server implements AutoCloseable {
         java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
                 ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
                         + (shaping.airtime() ? "shared" : "not shared") + ", queue " + shaping.queueMs() + " ms"
+                        + (shaping.jitter().ms() > 0 ? ", jitter " + shaping.jitter().ms() + " ms " + shaping.jitter().distribution().word()
+                                + (shaping.jitter().reorder() ? ", datagrams reordered" : "") + ", seed " + shaping.jitter().seed() : "")
                 : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
     }
 

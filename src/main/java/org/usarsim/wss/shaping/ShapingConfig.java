@@ -218,6 +218,12 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         return new ShapingConfig(on, rates, delayMs, airtime, queueMs, table, jitter);
     }
 
+    /** The same with another seed ({@code wss.seed}: the window's dialog sets the jitter, a --config file the seed). */
+    public ShapingConfig withSeed(long seed) {
+        return new ShapingConfig(on, rates, delayMs, airtime, queueMs, loss, new JitterConfig(jitter.ms(), jitter.distribution(),
+                jitter.reorder(), seed));
+    }
+
     /** The percent of datagrams a pair of this strength loses: none with shaping off. */
     public double lossPercent(double dBm) {
         return on ? loss.percentFor(dBm) : 0;

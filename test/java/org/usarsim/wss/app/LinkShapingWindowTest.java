@@ -267,7 +267,7 @@ class LinkShapingWindowTest {
 
         // The next window: the stored choice, in the summary and in the dialog.
         frame = openWindow(null);
-        assertEquals("Links shaped: 1.5 to 24 Mbit/s by strength, 30 ms delay, airtime not shared", summary());
+        assertEquals("Links shaped: 1.5 to 24 Mbit/s by strength, 30 ms delay (jitter 15 ms normal), airtime not shared", summary());
         Window again = dialog();
         assertTrue(onEdt(() -> find(again, JCheckBox.class, "wss.shaping").isSelected()));
         assertEquals("-60:24M,-80:1.5M", text(again, RATES));

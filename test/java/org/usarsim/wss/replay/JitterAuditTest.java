@@ -8,12 +8,16 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.usarsim.wss.hub.CsvEventLog;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
+import org.usarsim.wss.hub.Wait;
+import org.usarsim.wss.model.ModelPoll;
+import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.recording.Entry;
@@ -60,8 +64,17 @@ class JitterAuditTest {
             Recorder recorder = Recorder.create(dir.resolve("audit.rec"), model.name(), Map.of());
             server.hub.addListener(csv);
             server.hub.addListener(recorder);
+            AtomicInteger polls = new AtomicInteger();
+            server.hub.addListener(new WssEventListener() {
+                @Override
+                public void polled(ModelPoll poll) {
+                    polls.incrementAndGet();
+                }
+            });
             try (TestRobot operator = server.robot(); TestRobot a = server.robot()) {
                 a.init("A");
+                operator.ask("REPLAY {Time 0}"); // the poll applied again, so that the recording has one whenever the first came
+                Wait.until("a poll reached the listeners after the recorder's start", () -> polls.get() > 0);
                 assertEquals("FORCEREPLY {Status OK}", operator.ask("FORCE {Robot B} {Peer A} {State Up} {Rate 1M} {Jitter 20}"));
                 assertEquals("FORCEREPLY {Status OK}", operator.ask("FORCE {Robot B} {Peer A} {State Up} {Rate 1M} {Jitter 20}"),
                         "the same pin again: nothing changed, nothing said");

@@ -73,7 +73,7 @@ final class ConfigKeys {
             Setting.text("wss.force.up", "Forced up", "").orEmpty("none")
                     .noun(ForcedUp.WORDS)
                     .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them;"
-                            + " with links shaped, A:B:RATE:DELAY pins the pair's rate and delay (docs/shaping.md)"),
+                            + " with links shaped, A:B:RATE:DELAY:JITTER pins the pair's rate, delay and jitter (docs/shaping.md)"),
             Setting.choice(ShapingConfig.SHAPING, "Link shaping", "off", List.of("off", "on"))
                     .help("Shape every link like radio: rate and delay from the signal, a robot's airtime shared (docs/shaping.md)"),
             Setting.text(ShapingConfig.RATES, "Rates by strength", RateTable.DEFAULT.toString())

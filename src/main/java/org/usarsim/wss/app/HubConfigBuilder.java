@@ -65,6 +65,12 @@ final class HubConfigBuilder {
         shapingValues.put(ShapingConfig.LOSS, get(ShapingConfig.LOSS));
         shapingValues.put(ShapingConfig.SEED, get(ShapingConfig.SEED));
         try {
+            Long.parseLong(get(ShapingConfig.SEED).strip());
+        } catch (NumberFormatException e) {
+            throw new ConfigFileException(source + ": " + ShapingConfig.SEED + " = '" + get(ShapingConfig.SEED) + "' is not a whole number"
+                    + " (from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE + ")");
+        }
+        try {
             LossTable.parse(get(ShapingConfig.LOSS));
         } catch (IllegalArgumentException e) {
             throw new ConfigFileException(source + ": " + ShapingConfig.LOSS + " = '" + get(ShapingConfig.LOSS) + "' is not "

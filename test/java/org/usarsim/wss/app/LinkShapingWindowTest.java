@@ -239,7 +239,9 @@ class LinkShapingWindowTest {
             assertFalse(onEdt(() -> find(running, JTextField.class, QUEUE).isEnabled()));
             assertFalse(onEdt(() -> find(running, JTextField.class, RATES).isEnabled()));
             assertFalse(onEdt(() -> find(running, JCheckBox.class, "wss.shaping").isEnabled()));
-            assertEquals(List.of("Close"), onEdt(() -> Gui.all(running, JButton.class).stream().map(JButton::getText).toList()));
+            assertEquals(List.of("Close"), onEdt(() -> Gui.all(running, JButton.class).stream().map(JButton::getText)
+                    .filter(text -> !text.isEmpty()).toList()), "the jitter distribution's list has an arrow button without text");
+            assertFalse(onEdt(() -> find(running, javax.swing.JComboBox.class, "wss.shaping.jitterDistribution").isEnabled()));
             press(running, "close");
             until("the read-only dialog closed", () -> Gui.showing(TITLE).isEmpty());
         }
@@ -253,19 +255,28 @@ class LinkShapingWindowTest {
         type(dialog, DELAY, "30");
         type(dialog, QUEUE, "400");
         run(() -> find(dialog, JCheckBox.class, "wss.shaping.airtime").setSelected(false));
+        assertEquals("0", text(dialog, "wss.shaping.jitter"), "no jitter by default");
+        type(dialog, "wss.shaping.jitter", "10001");
+        assertTrue(refused(dialog, "wss.shaping.jitter"), "the jitter's field is red");
+        type(dialog, "wss.shaping.jitter", "15");
+        run(() -> find(dialog, javax.swing.JComboBox.class, "wss.shaping.jitterDistribution").setSelectedItem("normal"));
+        run(() -> find(dialog, JCheckBox.class, "wss.shaping.reorder").setSelected(true));
         press(dialog, "ok");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         closeWindow();
 
         // The next window: the stored choice, in the summary and in the dialog.
         frame = openWindow(null);
-        assertEquals("Links shaped: 1.5 to 24 Mbit/s by strength, 30 ms delay, airtime not shared", summary());
+        assertEquals("Links shaped: 1.5 to 24 Mbit/s by strength, 30 ms delay (jitter 15 ms normal), airtime not shared", summary());
         Window again = dialog();
         assertTrue(onEdt(() -> find(again, JCheckBox.class, "wss.shaping").isSelected()));
         assertEquals("-60:24M,-80:1.5M", text(again, RATES));
         assertEquals("30", text(again, DELAY));
         assertEquals("400", text(again, QUEUE));
         assertFalse(onEdt(() -> find(again, JCheckBox.class, "wss.shaping.airtime").isSelected()));
+        assertEquals("15", text(again, "wss.shaping.jitter"));
+        assertEquals("normal", onEdt(() -> find(again, javax.swing.JComboBox.class, "wss.shaping.jitterDistribution").getSelectedItem()));
+        assertTrue(onEdt(() -> find(again, JCheckBox.class, "wss.shaping.reorder").isSelected()));
         press(again, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         closeWindow();
@@ -281,8 +292,8 @@ class LinkShapingWindowTest {
         press(withFile, "cancel");
         until("the dialog closed", () -> Gui.showing(TITLE).isEmpty());
         WindowPreferences stored = new WindowPreferences(preferences.node("window"));
-        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false", QUEUE, "400"),
-                stored.shaping());
+        assertEquals(Map.of("wss.shaping", "on", RATES, "-60:24M,-80:1.5M", DELAY, "30", "wss.shaping.airtime", "false", QUEUE, "400",
+                "wss.shaping.jitter", "15", "wss.shaping.jitterDistribution", "normal", "wss.shaping.reorder", "true"), stored.shaping());
 
         // ...until OK stores what the dialog shows: from then on, what was entered.
         Window entered = dialog();

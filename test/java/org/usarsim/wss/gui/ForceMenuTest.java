@@ -166,6 +166,7 @@ class ForceMenuTest {
             Window dialog = onEdt(() -> Gui.showing(title).get(0));
             JTextField rate = onEdt(() -> find(dialog, JTextField.class, RateLimitDialog.RATE));
             JTextField delay = onEdt(() -> find(dialog, JTextField.class, RateLimitDialog.DELAY));
+            JTextField jitter = onEdt(() -> find(dialog, JTextField.class, RateLimitDialog.JITTER));
             JLabel message = onEdt(() -> find(dialog, JLabel.class, DialogParts.MESSAGE));
             JButton ok = onEdt(() -> find(dialog, JButton.class, DialogParts.OK));
             Color normal = onEdt(delay::getBackground);
@@ -184,6 +185,11 @@ class ForceMenuTest {
             assertTrue(onEdt(message::getText).contains("Delay: soon is not a whole number of milliseconds"), onEdt(message::getText));
             run(() -> delay.setText("50"));
             assertEquals(normal, onEdt(delay::getBackground));
+            run(() -> jitter.setText("10001"));
+            assertEquals(DialogParts.INVALID, onEdt(jitter::getBackground));
+            run(ok::doClick);
+            assertTrue(onEdt(message::getText).contains("Jitter: 10001 is above 10000"), onEdt(message::getText));
+            run(() -> jitter.setText("20"));
             assertEquals(List.of(54_000_000L, 54_000_000L), rates(hub), "nothing pinned before OK accepts");
             run(ok::doClick);
             until("the dialog closed", () -> Gui.showing(title).isEmpty());
@@ -191,7 +197,7 @@ class ForceMenuTest {
             Wait.until("the hub has the pinned rate both ways", () -> rates(hub).equals(List.of(1_000_000L, 1_000_000L)));
             assertEquals(PairState.FORCED_UP, hub.snapshot().pairs().get(0).state());
             until("the log says who limited it", () -> find(frame.getContentPane(), javax.swing.JTextArea.class, "log")
-                    .getText().contains("window: limit rate r1 - r2 to 1 Mbit/s, delay 50 ms (forced up)"));
+                    .getText().contains("window: limit rate r1 - r2 to 1 Mbit/s, delay 50 ms, jitter 20 ms (forced up)"));
         }
     }
 

@@ -57,6 +57,23 @@ class ForceCommandTest {
     }
 
     @Test
+    void aJitterInFORCEIsWholeMillisecondsFrom0To10000AndNeedsStateUp() throws Exception {
+        try (TestRobot operator = server.robotAt("127.0.0.1")) {
+            String jitter = "ERROR {Reason Jitter.Must.Be.0.To.10000.Ms}";
+            assertEquals(jitter, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Jitter 10001}"));
+            assertEquals(jitter, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Jitter -1}"));
+            assertEquals(jitter, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Jitter 2.5}"));
+            assertEquals(jitter, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Rate 1M} {Jitter lots}"));
+            assertEquals("ERROR {Reason Rate.And.Delay.Need.State.Up}", operator.ask("FORCE {Robot R1} {Peer R2} {State Down} {Jitter 5}"));
+            assertEquals("ERROR {Reason Rate.And.Delay.Need.State.Up}", operator.ask("FORCE {Robot R1} {Peer R2} {State Model} {Jitter 5}"));
+            assertNull(server.hub.forced(PAIR), "nothing refused changed anything");
+            assertEquals(OK, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Jitter 0}"));
+            assertEquals(OK, operator.ask("FORCE {Robot R1} {Peer R2} {State Up} {Rate 1M} {Delay 50} {Jitter 10000}"));
+            assertEquals(Force.UP, server.hub.forced(PAIR));
+        }
+    }
+
+    @Test
     void fromTheOperatorAddressFORCEWorksWithoutINITAndForcesTheRealPorts() throws Exception {
         try (TestRobot operator = server.robotAt("127.0.0.1"); TestRobot r1 = server.robotAt("127.0.0.1");
                 TestRobot r2 = server.robotAt("127.0.0.3")) {

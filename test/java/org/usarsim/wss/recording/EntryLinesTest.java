@@ -44,6 +44,8 @@ class EntryLinesTest {
                 new Entry.Resume(600, "Alpha", "B c"),
                 new Entry.Force(700, "Alpha", "B c", true),
                 new Entry.Force(701, "Alpha", "B c", false),
+                new Entry.Pin(750, "Alpha", "B c", 1_000_000, 50, 20),
+                new Entry.Pin(751, "Alpha", "B c", 0, -1, 0),
                 new Entry.Release(800, "Alpha", "B c"),
                 new Entry.Rate(900, "Alpha", "B c", 54_000_000),
                 new Entry.Udp(920, "B c", "Alpha", 17400, 1200, 1_680_000, 3, 2, 14),

@@ -90,4 +90,35 @@ class ShapingConfigTest {
         values.put(key, value);
         assertEquals(message, assertThrows(IllegalArgumentException.class, () -> ShapingConfig.from(values)).getMessage());
     }
+
+    @Test
+    void theJitterIsOffInOrderAndSeededByDefaultAndEachKeyIsChecked() {
+        assertEquals(new JitterConfig(0, JitterDistribution.UNIFORM, false, 0), ShapingConfig.from(Map.of()).jitter(),
+                "no jitter; netem's default distribution; in order; a fixed seed: a run is repeatable");
+        ShapingConfig set = ShapingConfig.from(Map.of("wss.shaping.jitter", "20", "wss.shaping.jitterDistribution", "Pareto",
+                "wss.shaping.reorder", "TRUE", "wss.seed", "-12"));
+        assertEquals(new JitterConfig(20, JitterDistribution.PARETO, true, -12), set.jitter());
+        assertEquals(set.jitter(), set.withLoss(LossTable.DEFAULT).jitter());
+        assertEquals("wss.shaping.jitter: 10001 is above 10000",
+                assertThrows(IllegalArgumentException.class, () -> ShapingConfig.from(Map.of("wss.shaping.jitter", "10001"))).getMessage());
+        assertEquals("wss.shaping.jitter: -1 is below 0", assertThrows(IllegalArgumentException.class,
+                () -> ShapingConfig.from(Map.of("wss.shaping.jitter", "-1"))).getMessage());
+        assertEquals("wss.shaping.jitterDistribution: gaussian is not uniform, normal, pareto or paretonormal", assertThrows(
+                IllegalArgumentException.class, () -> ShapingConfig.from(Map.of("wss.shaping.jitterDistribution", "gaussian"))).getMessage());
+        assertEquals("wss.shaping.reorder: yes is not true or false", assertThrows(IllegalArgumentException.class,
+                () -> ShapingConfig.from(Map.of("wss.shaping.reorder", "yes"))).getMessage());
+        assertEquals("wss.seed: 1.5 is not a whole number", assertThrows(IllegalArgumentException.class,
+                () -> ShapingConfig.from(Map.of("wss.seed", "1.5"))).getMessage());
+        assertEquals(20, ShapingConfig.parseJitterMs(" 20 "));
+    }
+
+    @Test
+    void aDirectionsSeedFollowsTheRunsSeedAndItsRobots() {
+        JitterConfig run = new JitterConfig(5, JitterDistribution.NORMAL, false, 1);
+        assertEquals(run.seedFor("A", "B", 0), new JitterConfig(9, JitterDistribution.UNIFORM, true, 1).seedFor("A", "B", 0),
+                "the same run seed, the same robots: the same draws");
+        assertTrue(run.seedFor("A", "B", 0) != run.seedFor("B", "A", 0));
+        assertTrue(run.seedFor("A", "B", 0) != run.seedFor("A", "B", 1));
+        assertTrue(run.seedFor("A", "B", 0) != new JitterConfig(5, JitterDistribution.NORMAL, false, 2).seedFor("A", "B", 0));
+    }
 }

@@ -1,5 +1,6 @@
 package org.usarsim.wss.app;
 
+import java.util.Arrays;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
@@ -10,6 +11,8 @@ import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.protocol.ControlPort;
+import org.usarsim.wss.shaping.JitterConfig;
+import org.usarsim.wss.shaping.JitterDistribution;
 import org.usarsim.wss.shaping.LossTable;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
@@ -23,7 +26,7 @@ final class ConfigKeys {
 
     /** The link shaping keys, read together by ShapingConfig. */
     static final List<String> SHAPING_KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS,
-            ShapingConfig.AIRTIME, ShapingConfig.QUEUE_MS);
+            ShapingConfig.AIRTIME, ShapingConfig.QUEUE_MS, ShapingConfig.JITTER, ShapingConfig.JITTER_DISTRIBUTION, ShapingConfig.REORDER);
     /** What wss.shaping.loss takes, in words. */
     static final String LOSS_WORDS = "rows dBm:percent from the strongest signal to the weakest (-85:1,-87:10,-90:50)";
     /** What wss.shaping.rates takes, in words. */
@@ -70,7 +73,7 @@ final class ConfigKeys {
             Setting.text("wss.force.up", "Forced up", "").orEmpty("none")
                     .noun(ForcedUp.WORDS)
                     .help("Pairs of robots forced up from the start, whatever the model says, until an operator releases them;"
-                            + " with links shaped, A:B:RATE:DELAY pins the pair's rate and delay (docs/shaping.md)"),
+                            + " with links shaped, A:B:RATE:DELAY:JITTER pins the pair's rate, delay and jitter (docs/shaping.md)"),
             Setting.choice(ShapingConfig.SHAPING, "Link shaping", "off", List.of("off", "on"))
                     .help("Shape every link like radio: rate and delay from the signal, a robot's airtime shared (docs/shaping.md)"),
             Setting.text(ShapingConfig.RATES, "Rates by strength", RateTable.DEFAULT.toString())
@@ -88,6 +91,16 @@ final class ConfigKeys {
                     .noun(LOSS_WORDS)
                     .help("With links shaped, a UDP datagram of a pair whose strength is at or below a row's dBm is lost with"
                             + " that row's percent, the last such row counting (docs/shaping.md); TCP is never dropped"),
+            Setting.integer(ShapingConfig.JITTER, "Jitter", 0).from(0).to(ShapingConfig.MAX_JITTER_MS).unit("ms").note("0: none")
+                    .help("With links shaped, each grant's or datagram's delay varies by this much, drawn from the distribution"
+                            + " below (docs/shaping.md, \"Jitter\"); a TCP link's bytes keep their order"),
+            Setting.choice(ShapingConfig.JITTER_DISTRIBUTION, "Jitter distribution", JitterConfig.NONE.distribution().word(),
+                    Arrays.stream(JitterDistribution.values()).map(JitterDistribution::word).toList())
+                    .help("The jitter's distribution, as netem names them: uniform (delay +- jitter), normal, pareto, paretonormal"),
+            Setting.bool(ShapingConfig.REORDER, "Reorder datagrams", false)
+                    .help("With a jitter, a fixed UDP port's datagrams may overtake each other (false: each waits for the one before)"),
+            Setting.text(ShapingConfig.SEED, "Seed", String.valueOf(JitterConfig.DEFAULT_SEED)).noun("a whole number")
+                    .help("The seed of every random draw of a run (the jitter): the same seed, the same draws"),
             Setting.text(FixedPorts.KEY, "Fixed ports", "").orEmpty("none").noun(FixedPort.WORDS)
                     .help("WSS ports made at Start and kept, between robots declared with wss.robot.NAME = ADDRESS"
                             + " (default address 127.0.0.1; docs/fixed-ports.md)"),

@@ -63,6 +63,13 @@ final class HubConfigBuilder {
                     + ConfigKeys.RATES_WORDS + ": " + e.getMessage());
         }
         shapingValues.put(ShapingConfig.LOSS, get(ShapingConfig.LOSS));
+        shapingValues.put(ShapingConfig.SEED, get(ShapingConfig.SEED));
+        try {
+            Long.parseLong(get(ShapingConfig.SEED).strip());
+        } catch (NumberFormatException e) {
+            throw new ConfigFileException(source + ": " + ShapingConfig.SEED + " = '" + get(ShapingConfig.SEED) + "' is not a whole number"
+                    + " (from " + Long.MIN_VALUE + " to " + Long.MAX_VALUE + ")");
+        }
         try {
             LossTable.parse(get(ShapingConfig.LOSS));
         } catch (IllegalArgumentException e) {

@@ -115,7 +115,7 @@ final class Server implements AutoCloseable {
         return settings;
     }
 
-    /** A recording's settings: every setting the model declares with this run's value, then the six wss.shaping* keys. */
+    /** A recording's settings: every setting the model declares with this run's value, then the wss.shaping* keys and wss.seed. */
     private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
@@ -127,6 +127,10 @@ final class Server implements AutoCloseable {
         settings.put(ShapingConfig.AIRTIME, String.valueOf(shaping.airtime()));
         settings.put(ShapingConfig.LOSS, shaping.loss().toString());
         settings.put(ShapingConfig.QUEUE_MS, String.valueOf(shaping.queueMs()));
+        settings.put(ShapingConfig.JITTER, String.valueOf(shaping.jitter().ms()));
+        settings.put(ShapingConfig.JITTER_DISTRIBUTION, shaping.jitter().distribution().word());
+        settings.put(ShapingConfig.REORDER, String.valueOf(shaping.jitter().reorder()));
+        settings.put(ShapingConfig.SEED, String.valueOf(shaping.jitter().seed()));
         return settings;
     }
 
@@ -175,6 +179,8 @@ final class Server implements AutoCloseable {
         java.util.logging.Logger.getLogger(Server.class.getName()).info(shaping.on()
                 ? "links are shaped (wss.shaping = on): rate table " + shaping.rates() + ", delay " + shaping.delayMs() + " ms, airtime "
                         + (shaping.airtime() ? "shared" : "not shared") + ", queue " + shaping.queueMs() + " ms"
+                        + (shaping.jitter().ms() > 0 ? ", jitter " + shaping.jitter().ms() + " ms " + shaping.jitter().distribution().word()
+                                + (shaping.jitter().reorder() ? ", datagrams reordered" : "") + ", seed " + shaping.jitter().seed() : "")
                 : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
     }
 

@@ -43,7 +43,8 @@ final class WindowServers implements Servers {
             throw new Server.StartFailure(e.getMessage(), true);
         }
         HubConfig file = configFile.hubConfig();
-        HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping.withLoss(file.shaping().loss()), file.pins());
+        HubConfig config = file.withControlPort(Integer.parseInt(port.strip())).withShaping(shaping.withLoss(file.shaping().loss())
+                .withSeed(file.shaping().jitter().seed()), file.pins());
         Path recording = record ? configFile.record().orElseGet(() -> Recorder.runFileIn(configFile.eventLogDir())) : null;
         Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null, recording);
         server.hub().addListener(listener);

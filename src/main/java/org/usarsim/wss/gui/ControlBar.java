@@ -95,7 +95,8 @@ final class ControlBar extends JPanel {
             String top = Bitrate.format(config.rates().topRate());
             String unit = top.substring(top.indexOf(' ')); // " Mbit/s": said once when both have it, "6 to 54 Mbit/s"
             String rates = lowest.equals(top) ? top : (lowest.endsWith(unit) ? lowest.substring(0, lowest.indexOf(' ')) : lowest) + " to " + top;
-            shapingSummary.setText("Links shaped: " + rates + " by strength, " + config.delayMs() + " ms delay, "
+            String jitter = config.jitter().ms() > 0 ? " (jitter " + config.jitter().ms() + " ms " + config.jitter().distribution().word() + ")" : "";
+            shapingSummary.setText("Links shaped: " + rates + " by strength, " + config.delayMs() + " ms delay" + jitter + ", "
                     + (config.airtime() ? "shared airtime" : "airtime not shared"));
         }
         shapingSummary.setToolTipText("Rates by strength (dBm:rate): " + config.rates());

@@ -53,7 +53,8 @@ final class ForceMenu {
             Window owner = menu.getInvoker() == null ? null : SwingUtilities.getWindowAncestor(menu.getInvoker());
             RatePin pin = RateLimitDialog.ask(owner, robotA, robotB);
             if (pin != null) {
-                String shape = Bitrate.format(pin.bitsPerSecond()) + (pin.pinsDelay() ? ", delay " + pin.delayMs() + " ms" : "");
+                String shape = Bitrate.format(pin.bitsPerSecond()) + (pin.pinsDelay() ? ", delay " + pin.delayMs() + " ms" : "")
+                        + (pin.pinsJitter() ? ", jitter " + pin.jitterMs() + " ms" : "");
                 call(LIMIT + " " + pair, () -> {
                     LOG.info("window: limit rate " + pair + " to " + shape + " (forced up)"); // who, before what it does
                     server.force(robotA, robotB, Force.UP, pin);

@@ -8,16 +8,19 @@ import java.util.List;
 import java.util.Map;
 import javax.swing.BorderFactory;
 import javax.swing.JCheckBox;
+import javax.swing.JComboBox;
 import javax.swing.JDialog;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
 import javax.swing.JTextField;
+import org.usarsim.wss.shaping.JitterDistribution;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * "Link shaping...": the five {@code wss.shaping*} settings of the window (docs/shaping.md) for
+ * "Link shaping...": the {@code wss.shaping*} settings of the window (docs/shaping.md) for
  * its next Start, laid out as the generated model dialog: shape links (a check box), the rate
- * table, the delay, shared airtime (a check box), the queue, each field named by its key. A rate
+ * table, the delay, shared airtime (a check box), the queue, the jitter, its distribution (a list)
+ * and whether datagrams may be reordered (a check box), each field named by its key. A rate
  * table, a delay or a queue that is refused turns its field red as it is typed, the reason in its
  * tooltip; OK checks them with the same rules ({@link ShapingValues#problem}) and refuses with the
  * first reason under the fields, else stores the values in the {@link WindowPreferences}.
@@ -30,6 +33,10 @@ final class LinkShapingDialog extends JDialog {
     static final String RATES_LABEL = "Rates by strength";
     static final String DELAY_LABEL = "Delay";
     static final String QUEUE_LABEL = "Queue";
+    static final String JITTER_LABEL = "Jitter";
+    private static final String JITTER_HELP = "How much each grant's or datagram's delay varies, drawn from the distribution below:"
+            + " whole milliseconds from 0 to " + ShapingConfig.MAX_JITTER_MS + ", 0 none; a TCP link's bytes keep their order"
+            + " (wss.shaping.jitter, docs/shaping.md \"Jitter\")";
     private static final String RATES_HELP = "Steps dBm:rate from the strongest signal to the weakest, comma-separated:"
             + " a pair whose strength is at or above a step's dBm gets its rate; below the last, the last."
             + " A rate is bit/s with k for 1000 or M for 1000000 (wss.shaping.rates)";
@@ -42,19 +49,23 @@ final class LinkShapingDialog extends JDialog {
 
     /** Each text field's label, by its key, for a refusal under the fields. */
     private static final Map<String, String> LABELS = Map.of(ShapingConfig.RATES, RATES_LABEL, ShapingConfig.DELAY_MS, DELAY_LABEL,
-            ShapingConfig.QUEUE_MS, QUEUE_LABEL);
+            ShapingConfig.QUEUE_MS, QUEUE_LABEL, ShapingConfig.JITTER, JITTER_LABEL);
 
     private final boolean editable;
     private final WindowPreferences preferences;
     private final JCheckBox shaping = new JCheckBox("Shape every link like radio");
     private final JCheckBox airtime = new JCheckBox("A robot's links share its radio's airtime");
+    private final JCheckBox reorder = new JCheckBox("A fixed UDP port's datagrams may overtake each other by their jitter");
+    private final JComboBox<String> distribution = new JComboBox<>(
+            java.util.Arrays.stream(JitterDistribution.values()).map(JitterDistribution::word).toArray(String[]::new));
     private final JLabel message = new JLabel(" ");
     private final CheckedField rates;
     private final CheckedField delay;
     private final CheckedField queue;
+    private final CheckedField jitter;
     private boolean saved;
 
-    /** Shows {@code values} (a value for each of the five keys); OK stores them in {@code preferences}. */
+    /** Shows {@code values} (a value for each of {@link ShapingValues#KEYS}); OK stores them in {@code preferences}. */
     LinkShapingDialog(Window owner, boolean editable, WindowPreferences preferences, Map<String, String> values) {
         super(owner, TITLE, ModalityType.APPLICATION_MODAL);
         this.editable = editable;
@@ -72,6 +83,20 @@ final class LinkShapingDialog extends JDialog {
                 "Links sharing a robot share its radio's airtime, by time (wss.shaping.airtime)");
         queue = field(rows, 4, QUEUE_LABEL, new JTextField(6), ShapingConfig.QUEUE_MS, values.get(ShapingConfig.QUEUE_MS), "ms at the link's rate, beyond its delay",
                 QUEUE_HELP);
+        jitter = field(rows, 5, JITTER_LABEL, new JTextField(6), ShapingConfig.JITTER, values.get(ShapingConfig.JITTER), "ms, 0: none",
+                JITTER_HELP);
+        String distributionHelp = "The jitter's distribution, as netem names them: uniform (delay +- jitter), normal, pareto,"
+                + " paretonormal (wss.shaping.jitterDistribution)";
+        distribution.setName(ShapingConfig.JITTER_DISTRIBUTION);
+        distribution.setToolTipText(distributionHelp);
+        JitterDistribution chosen = JitterDistribution.of(values.get(ShapingConfig.JITTER_DISTRIBUTION));
+        distribution.setSelectedItem((chosen == null ? JitterDistribution.UNIFORM : chosen).word());
+        distribution.setEnabled(editable);
+        rows.add(DialogParts.label("Jitter distribution", distributionHelp, distribution), DialogParts.cell(0, 6, 0, false));
+        rows.add(distribution, DialogParts.cell(1, 6, 8, true));
+        box(rows, 7, "Reorder datagrams", reorder, ShapingConfig.REORDER, Boolean.parseBoolean(values.get(ShapingConfig.REORDER)),
+                "With a jitter, each datagram of a fixed UDP port goes at its own time, so a later one may overtake;"
+                        + " off, each waits for the one before (wss.shaping.reorder)");
 
         DialogParts.layOut(this, owner, List.of(rows), message, DialogParts.buttons(this, editable, this::ok));
         // Three lines for a refusal: a rate table's repeats the table.
@@ -125,8 +150,11 @@ final class LinkShapingDialog extends JDialog {
         values.put(ShapingConfig.DELAY_MS, delay.text());
         values.put(ShapingConfig.AIRTIME, String.valueOf(airtime.isSelected()));
         values.put(ShapingConfig.QUEUE_MS, queue.text());
+        values.put(ShapingConfig.JITTER, jitter.text());
+        values.put(ShapingConfig.JITTER_DISTRIBUTION, String.valueOf(distribution.getSelectedItem()));
+        values.put(ShapingConfig.REORDER, String.valueOf(reorder.isSelected()));
         Refusals refused = new Refusals();
-        for (CheckedField field : List.of(rates, delay, queue)) {
+        for (CheckedField field : List.of(rates, delay, queue, jitter)) {
             String problem = field.problem();
             if (problem != null) {
                 refused.add(field.field(), LABELS.get(field.field().getName()) + ": " + problem);

@@ -25,7 +25,7 @@ final class NextRunShaping {
         this.file = file == null ? Map.of() : Map.copyOf(file);
     }
 
-    /** Each of the five keys with the value the next Start uses. */
+    /** Each of the keys ({@link ShapingValues#KEYS}) with the value the next Start uses. */
     Map<String, String> values() {
         Map<String, String> values = preferences.shaping();
         if (entered) {

@@ -14,9 +14,9 @@ import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * "Limit rate..." of the {@link ForceMenu}: asks the rate (bit/s, {@code k} and {@code M}
- * allowed: {@code 1M}) and, optionally, the delay (ms) to pin on a pair, both ways, read as
- * {@code FORCE ... {Rate 1M} {Delay 50}} reads them ({@link Bitrate#parse},
- * {@link ShapingConfig#parseDelayMs}). A field whose value is refused turns red as it is typed;
+ * allowed: {@code 1M}) and, optionally, the delay and its jitter (ms) to pin on a pair, both ways, read as
+ * {@code FORCE ... {Rate 1M} {Delay 50} {Jitter 20}} reads them ({@link Bitrate#parse},
+ * {@link ShapingConfig#parseDelayMs}, {@link ShapingConfig#parseJitterMs}). A field whose value is refused turns red as it is typed;
  * OK refuses with the first reason under the fields, else closes with the pin. Modal; build and
  * show it on the event thread. It does not call the hub: the menu does, with {@link #pin()}.
  */
@@ -27,11 +27,14 @@ final class RateLimitDialog extends JDialog {
     static final String DELAY = "delay";
     static final String RATE_LABEL = "Rate";
     static final String DELAY_LABEL = "Delay";
+    static final String JITTER = "jitter";
+    static final String JITTER_LABEL = "Jitter";
     private static final int MIN_WIDTH = 480;
 
     private final JLabel message = new JLabel(" ");
     private final CheckedField rate;
     private final CheckedField delay;
+    private final CheckedField jitter;
     private RatePin pin;
 
     RateLimitDialog(Window owner, String robotA, String robotB) {
@@ -45,6 +48,10 @@ final class RateLimitDialog extends JDialog {
                 "The delay of every byte besides its airtime, whole milliseconds from " + ShapingConfig.MIN_DELAY_MS + " to "
                         + ShapingConfig.MAX_DELAY_MS + "; empty keeps wss.shaping.delayMs",
                 text -> text.isBlank() ? null : refusal(DELAY_LABEL, text, ShapingConfig::parseDelayMs));
+        jitter = row(fields, 2, JITTER_LABEL, JITTER, "ms (empty: the setting's)",
+                "How much the delay varies, with the run's distribution (docs/shaping.md, \"Jitter\"), whole milliseconds from 0 to "
+                        + ShapingConfig.MAX_JITTER_MS + "; empty keeps wss.shaping.jitter",
+                text -> text.isBlank() ? null : refusal(JITTER_LABEL, text, ShapingConfig::parseJitterMs));
         DialogParts.layOut(this, owner, List.of(fields), message, DialogParts.buttons(this, true, this::ok));
         // Wide enough for the longest refusal (a rate's, with its examples) in the message's two lines.
         setMinimumSize(new java.awt.Dimension(Math.max(getWidth(), MIN_WIDTH), getHeight()));
@@ -59,7 +66,7 @@ final class RateLimitDialog extends JDialog {
         return dialog.pin();
     }
 
-    /** The rate and delay OK accepted; null before (or when the dialog was cancelled). */
+    /** The rate, delay and jitter OK accepted; null before (or when the dialog was cancelled). */
     RatePin pin() {
         return pin;
     }
@@ -83,7 +90,7 @@ final class RateLimitDialog extends JDialog {
 
     private void ok() {
         Refusals refused = new Refusals();
-        for (CheckedField field : List.of(rate, delay)) {
+        for (CheckedField field : List.of(rate, delay, jitter)) {
             String problem = field.mark();
             if (problem != null) {
                 refused.add(field.field(), problem);
@@ -93,7 +100,9 @@ final class RateLimitDialog extends JDialog {
             return;
         }
         String delayText = delay.field().getText();
-        pin = new RatePin(Bitrate.parse(rate.field().getText()), delayText.isBlank() ? -1 : ShapingConfig.parseDelayMs(delayText));
+        String jitterText = jitter.field().getText();
+        pin = new RatePin(Bitrate.parse(rate.field().getText()), delayText.isBlank() ? -1 : ShapingConfig.parseDelayMs(delayText),
+                jitterText.isBlank() ? -1 : ShapingConfig.parseJitterMs(jitterText));
         dispose();
     }
 }

@@ -7,9 +7,9 @@ import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * The five link shaping settings as the window keeps, shows and starts them: text by key
+ * The link shaping settings as the window keeps, shows and starts them: text by key
  * ({@code wss.shaping}, {@code wss.shaping.rates}, {@code wss.shaping.delayMs},
- * {@code wss.shaping.airtime}, {@code wss.shaping.queueMs}, docs/shaping.md), each checked by the
+ * {@code wss.shaping.airtime}, {@code wss.shaping.queueMs}, the jitter's three keys, docs/shaping.md), each checked by the
  * rule a properties file's are checked with, {@link ShapingConfig#from} (the rates by
  * {@link RateTable#parse}, the delay by {@link ShapingConfig#parseDelayMs}). No state.
  */
@@ -17,7 +17,7 @@ final class ShapingValues {
 
     /** The keys, in the dialog's order. */
     static final List<String> KEYS = List.of(ShapingConfig.SHAPING, ShapingConfig.RATES, ShapingConfig.DELAY_MS, ShapingConfig.AIRTIME,
-            ShapingConfig.QUEUE_MS);
+            ShapingConfig.QUEUE_MS, ShapingConfig.JITTER, ShapingConfig.JITTER_DISTRIBUTION, ShapingConfig.REORDER);
 
     private ShapingValues() {
     }
@@ -31,6 +31,9 @@ final class ShapingValues {
         values.put(ShapingConfig.DELAY_MS, String.valueOf(off.delayMs()));
         values.put(ShapingConfig.AIRTIME, String.valueOf(off.airtime()));
         values.put(ShapingConfig.QUEUE_MS, String.valueOf(off.queueMs()));
+        values.put(ShapingConfig.JITTER, String.valueOf(off.jitter().ms()));
+        values.put(ShapingConfig.JITTER_DISTRIBUTION, off.jitter().distribution().word());
+        values.put(ShapingConfig.REORDER, String.valueOf(off.jitter().reorder()));
         return values;
     }
 

@@ -10,7 +10,7 @@ import org.usarsim.wss.protocol.ControlPort;
 
 /**
  * What the window remembers between runs, in {@code java.util.prefs}: the port, the model, "Enable
- * Logging", "Record", the window's bounds and the "Link shaping" dialog's five {@code wss.shaping*} values
+ * Logging", "Record", the window's bounds and the "Link shaping" dialog's {@code wss.shaping*} values
  * (under their keys), under {@code org/usarsim/wss/window} (tests pass a throw-away node). The
  * models' own settings are {@link ModelPreferences}'.
  */
@@ -47,7 +47,7 @@ public final class WindowPreferences {
     }
 
     /**
-     * The link shaping values the dialog stored: each of the five keys with its stored value, or
+     * The link shaping values the dialog stored: each of its keys with its stored value, or
      * its default where none is stored, or where the stored one is refused (a hand-edited one,
      * with a WARNING).
      */
@@ -72,7 +72,7 @@ public final class WindowPreferences {
     /**
      * Stores the link shaping values (stripped) and writes them out; keys not given keep what they had.
      *
-     * @throws IllegalArgumentException when a key is not one of the five or a value is refused; nothing is stored then
+     * @throws IllegalArgumentException when a key is not one of its keys or a value is refused; nothing is stored then
      * @throws BackingStoreException    when the preferences cannot be written
      */
     void storeShaping(Map<String, String> values) throws BackingStoreException {

@@ -213,6 +213,13 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         event("FORCED", first, second, up ? "UP" : "DOWN");
     }
 
+    /** {@code PINNED,t,A,B,RATE,DELAY,JITTER}: bit/s and ms, a field not pinned empty. */
+    @Override
+    public void pairPinned(String first, String second, long bitsPerSecond, int delayMs, int jitterMs) {
+        event("PINNED", first, second, bitsPerSecond > 0 ? Long.toString(bitsPerSecond) : "", delayMs >= 0 ? Integer.toString(delayMs) : "",
+                jitterMs >= 0 ? Integer.toString(jitterMs) : "");
+    }
+
     @Override
     public void pairReleased(String first, String second) {
         event("RELEASED", first, second);

@@ -127,6 +127,11 @@ final class EventFanOut implements EventSink {
     }
 
     @Override
+    public void pairPinned(String first, String second, long bitsPerSecond, int delayMs, int jitterMs) {
+        each(l -> l.pairPinned(first, second, bitsPerSecond, delayMs, jitterMs));
+    }
+
+    @Override
     public void pairReleased(String first, String second) {
         each(l -> l.pairReleased(first, second));
     }

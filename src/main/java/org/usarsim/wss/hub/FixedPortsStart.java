@@ -90,7 +90,7 @@ final class FixedPortsStart {
         try {
             relay = new UdpRelay(port, config.bindAddress(), pair.target(), source,
                     new UdpRelay.Pair(pair.up(), pair.down(), pair.stats().udpFrom(port.key().from()), pair.stats().udpFrom(port.key().to())),
-                    airtime, TimeUnit.SECONDS.toNanos(config.fixed().udpIdleSeconds()), clock,
+                    airtime, config.shaping().jitter(), TimeUnit.SECONDS.toNanos(config.fixed().udpIdleSeconds()), clock,
                     (from, to, udp) -> events.udpCounted(from, to, port.number(), udp.datagrams(), udp.bytes(), udp.droppedBroken(), udp.droppedQueue(),
                             udp.lost()));
         } catch (IOException e) {

@@ -94,7 +94,8 @@ final class LinkSide extends SocketSide implements LinkHub {
     }
 
     private Link newLink(WssPort port, SocketChannel socket, Admission admission) throws IOException {
-        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), config.shaping().queueMs()) : null;
+        Shaping shaping = config.shaping().on() ? new Shaping(airtime, admission.up(), admission.down(), config.shaping().queueMs(),
+                config.shaping().jitter()) : null;
         return new Link(this, port, socket, admission.target(), config.chunkSize(), socketBuffers, events, admission.stats(), clock, shaping);
     }
 

@@ -66,6 +66,14 @@ public interface WssEventListener {
     default void pairForced(String first, String second, boolean up) {
     }
 
+    /**
+     * An operator pinned the shape of a pair forced up (names in ascending order; {@code FORCE ...
+     * {Rate r} {Delay d} {Jitter j}}, docs/shaping.md), said after its {@link #pairForced}: its rate in
+     * bit/s (0: not pinned), delay and jitter in ms (-1: not pinned), both ways, until released or forced again.
+     */
+    default void pairPinned(String first, String second, long bitsPerSecond, int delayMs, int jitterMs) {
+    }
+
     /** An operator gave the forced pair (names in ascending order) back to the model. */
     default void pairReleased(String first, String second) {
     }

@@ -45,6 +45,8 @@ public final class Replies {
     public static final String RATE_MUST_BE_A_BIT_RATE = "Rate.Must.Be.A.Bit.Rate";
     public static final String DELAY_MUST_BE_0_TO_10000_MS = "Delay.Must.Be.0.To.10000.Ms";
     public static final String RATE_AND_DELAY_NEED_STATE_UP = "Rate.And.Delay.Need.State.Up";
+    /** FORCE's {@code Jitter} (docs/shaping.md, "Jitter"): whole milliseconds from 0 to 10,000; it needs State Up too. */
+    public static final String JITTER_MUST_BE_0_TO_10000_MS = "Jitter.Must.Be.0.To.10000.Ms";
 
     // Reasons of the operator command REPLAY, an extension of ours (docs/protocol.md section 8).
     public static final String NOT_A_REPLAY = "Not.A.Replay";

@@ -50,6 +50,13 @@ public sealed interface Entry {
     record Force(long millis, String first, String second, boolean up) implements Entry {
     }
 
+    /**
+     * An operator pinned the shape of a pair forced up ({@code FORCE ... {Rate}{Delay}{Jitter}}): its
+     * rate in bit/s (0: not pinned), delay and jitter in ms (-1: not pinned).
+     */
+    record Pin(long millis, String first, String second, long bitsPerSecond, int delayMs, int jitterMs) implements Entry {
+    }
+
     /** An operator gave the pair back to the model. */
     record Release(long millis, String first, String second) implements Entry {
     }

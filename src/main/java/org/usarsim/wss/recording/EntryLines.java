@@ -76,6 +76,9 @@ public final class EntryLines {
             words(out, t, "resume", escape(r.first()), escape(r.second()));
         } else if (entry instanceof Entry.Force f) {
             words(out, t, "force", escape(f.first()), escape(f.second()), f.up() ? "up" : "down");
+        } else if (entry instanceof Entry.Pin p) {
+            words(out, t, "pin", escape(p.first()), escape(p.second()), p.bitsPerSecond() > 0 ? Long.toString(p.bitsPerSecond()) : "-",
+                    p.delayMs() >= 0 ? Integer.toString(p.delayMs()) : "-", p.jitterMs() >= 0 ? Integer.toString(p.jitterMs()) : "-");
         } else if (entry instanceof Entry.Release r) {
             words(out, t, "release", escape(r.first()), escape(r.second()));
         } else if (entry instanceof Entry.Replay r) {
@@ -283,6 +286,11 @@ public final class EntryLines {
             case "force" -> {
                 fields(f, 5);
                 yield new Whole(new Entry.Force(t, unescape(f[2]), unescape(f[3]), upDown(f[4])));
+            }
+            case "pin" -> {
+                fields(f, 7);
+                yield new Whole(new Entry.Pin(t, unescape(f[2]), unescape(f[3]), f[4].equals("-") ? 0 : whole(f[4]),
+                        f[5].equals("-") ? -1 : (int) whole(f[5]), f[6].equals("-") ? -1 : (int) whole(f[6])));
             }
             case "release" -> {
                 fields(f, 4);

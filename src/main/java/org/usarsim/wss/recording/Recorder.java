@@ -262,6 +262,11 @@ public final class Recorder implements WssEventListener, AutoCloseable {
     }
 
     @Override
+    public void pairPinned(String first, String second, long bitsPerSecond, int delayMs, int jitterMs) {
+        offer(new Entry.Pin(millis(), first, second, bitsPerSecond, delayMs, jitterMs));
+    }
+
+    @Override
     public void pairReleased(String first, String second) {
         offer(new Entry.Release(millis(), first, second));
     }

@@ -2,7 +2,9 @@ package org.usarsim.wss.shaping;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
+import java.util.PriorityQueue;
 import java.util.SplittableRandom;
 import java.util.random.RandomGenerator;
 
@@ -15,7 +17,9 @@ import java.util.random.RandomGenerator;
  * go on the air one after the other through the direction's {@link Airtime.Hop} at the pair's
  * rate; as a datagram leaves the queue (its airtime booked) the loss is drawn from a seeded
  * generator with the pair's loss percent, so a lost datagram still takes its airtime, as a radio's
- * lost frame does; one not lost is due at the end of its airtime plus the delay.
+ * lost frame does; one not lost is due at the end of its airtime plus the delay and its jitter
+ * ({@link Jitter}, drawn per datagram): with {@code reorder} each at its own due time, so a later
+ * one may overtake; without, never before the one before it (docs/shaping.md, "Jitter").
  *
  * @param <T> where a datagram goes (a session's socket, a sender's address): carried along, never looked at
  *
@@ -33,7 +37,7 @@ public final class DatagramFlow<T> {
     public record Datagram<T>(byte[] data, T to) {
     }
 
-    private record Pending<T>(Datagram<T> datagram, long dueNs) {
+    private record Pending<T>(Datagram<T> datagram, long dueNs, long order) {
     }
 
     private final Airtime.Hop hop;
@@ -41,12 +45,20 @@ public final class DatagramFlow<T> {
     private long bitsPerSecond;
     /** The stage after the air: a datagram is due when it is off the air plus the delay. */
     private final Delay delay = new Delay(0);
+    /** The stage after the delay: its jitter, per datagram. */
+    private final Jitter jitter;
+    /** Whether a datagram may overtake those before it by its jitter; without, each is due no sooner than the one before. */
+    private final boolean reorder;
     private double lossPercent;
     /** The model's rule for the losses, instead of the percent; null: the percent. */
     private LossRule lossRule;
     private final ArrayDeque<Datagram<T>> queue = new ArrayDeque<>();
     private long queuedBytes;
-    private final ArrayDeque<Pending<T>> onTheWay = new ArrayDeque<>();
+    /** By due time, then in the order received. */
+    private final PriorityQueue<Pending<T>> onTheWay = new PriorityQueue<>(
+            Comparator.<Pending<T>>comparingLong(Pending::dueNs).thenComparingLong(Pending::order));
+    private long received;
+    private long lastDueNs;
     private long lastStartNs;
     private boolean anyBooked;
     private long droppedQueue;
@@ -60,8 +72,30 @@ public final class DatagramFlow<T> {
 
     /** A direction over {@code hop} (it owns the hop and closes it), its losses drawn from a generator seeded with {@code seed}. */
     public DatagramFlow(Airtime.Hop hop, long seed) {
+        this(hop, seed, JitterDistribution.UNIFORM, false, 0);
+    }
+
+    /**
+     * As the other, with a jitter of {@code distribution} (none until {@link #setJitterMs}) drawn
+     * from a generator seeded with {@code jitterSeed}; {@code reorder}: datagrams may overtake.
+     */
+    public DatagramFlow(Airtime.Hop hop, long seed, JitterDistribution distribution, boolean reorder, long jitterSeed) {
         this.hop = hop;
         this.random = new SplittableRandom(seed);
+        this.jitter = new Jitter(delay, distribution, jitterSeed, 0);
+        this.reorder = reorder;
+    }
+
+    /** The delay's jitter from now on, in ms, for the datagrams not yet on the air. */
+    public void setJitterMs(int ms) {
+        jitter.set(ms);
+    }
+
+    /** A datagram on its way, due at {@code dueNs} (or after the one before it, without reordering). */
+    private void onTheWay(Datagram<T> datagram, long dueNs) {
+        long due = reorder || received == 0 || dueNs - lastDueNs >= 0 ? dueNs : lastDueNs;
+        lastDueNs = due;
+        onTheWay.add(new Pending<>(datagram, due, received++));
     }
 
     /** The bytes a shaped queue may hold at this rate: what it carries in 100 ms, plus one largest datagram. */
@@ -89,7 +123,7 @@ public final class DatagramFlow<T> {
     public boolean offer(byte[] data, T to, long nowNs) {
         Datagram<T> datagram = new Datagram<>(data, to);
         if (bitsPerSecond <= 0) {
-            onTheWay.add(new Pending<>(datagram, nowNs));
+            onTheWay(datagram, nowNs);
             return true;
         }
         if (queuedBytes + data.length > capacity(bitsPerSecond)) {
@@ -108,7 +142,7 @@ public final class DatagramFlow<T> {
             if (bitsPerSecond <= 0) {
                 Datagram<T> datagram = queue.poll();
                 queuedBytes -= datagram.data().length;
-                onTheWay.add(new Pending<>(datagram, nowNs));
+                onTheWay(datagram, nowNs);
                 continue;
             }
             Datagram<T> datagram = queue.poll();
@@ -131,7 +165,7 @@ public final class DatagramFlow<T> {
                     : lossPercent > 0 && random.nextDouble() * 100 < lossPercent) {
                 lost++;
             } else {
-                onTheWay.add(new Pending<>(datagram, delay.dueAt(end)));
+                onTheWay(datagram, jitter.dueAt(delay.dueAt(end)));
             }
         }
     }

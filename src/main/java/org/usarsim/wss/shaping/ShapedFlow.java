@@ -33,6 +33,8 @@ public final class ShapedFlow {
     private final HeldBytes queue = new HeldBytes();
     private final OnTheAir air;
     private final Delay delay;
+    /** The delay's jitter (none: 0 ms), the stage after the delay. */
+    private final Jitter jitter;
     private final AfterAir afterAir;
     private long capacity;
 
@@ -45,17 +47,38 @@ public final class ShapedFlow {
     }
 
     /**
+     * As the other, with a jitter after the delay ({@code jitterMs}, from now on as
+     * {@link #setConditions(long, int, int)} says), drawn from {@code distribution} with a
+     * generator seeded with {@code seed}; the bytes keep their order whatever it draws.
+     */
+    public ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int jitterMs, int queueMs, JitterDistribution distribution,
+            long seed) {
+        this(hop, bitsPerSecond, delayMs, queueMs, null, new JitterStage(distribution, seed, jitterMs));
+    }
+
+    /** What a jitter stage is made of, before the delay it follows exists. */
+    private record JitterStage(JitterDistribution distribution, long seed, int ms) {
+        static final JitterStage NONE = new JitterStage(JitterDistribution.UNIFORM, 0, 0);
+    }
+
+    /**
      * As the other, with {@code next} after the delay if it is not null: another stage after the
      * air, such as a jitter (docs/shaping.md, "Stages"; none is in use yet).
      */
     ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int queueMs, AfterAir next) {
+        this(hop, bitsPerSecond, delayMs, queueMs, next, JitterStage.NONE);
+    }
+
+    private ShapedFlow(Airtime.Hop hop, long bitsPerSecond, int delayMs, int queueMs, AfterAir next, JitterStage jitterStage) {
         if (queueMs < ShapingConfig.MIN_QUEUE_MS || queueMs > ShapingConfig.MAX_QUEUE_MS) {
             throw new IllegalArgumentException("a queue of " + ShapingConfig.MIN_QUEUE_MS + " to " + ShapingConfig.MAX_QUEUE_MS
                     + " ms, not " + queueMs);
         }
         this.queueMs = queueMs;
         this.delay = new Delay(delayMs);
-        this.afterAir = next == null ? delay : delay.then(next);
+        this.jitter = new Jitter(delay, jitterStage.distribution(), jitterStage.seed(), jitterStage.ms());
+        AfterAir delayed = delay.then(jitter);
+        this.afterAir = next == null ? delayed : delayed.then(next);
         this.air = new OnTheAir(hop, queue, afterAir, bitsPerSecond);
         setConditions(bitsPerSecond, delayMs);
     }
@@ -81,6 +104,14 @@ public final class ShapedFlow {
      * them): bytes not yet on the air go at the new rate and wait the new delay; the capacity follows.
      */
     public void setConditions(long bitsPerSecond, int delayMs) {
+        setConditions(bitsPerSecond, delayMs, jitter.ms());
+    }
+
+    /** As {@link #setConditions(long, int)}, with the delay's jitter from now on, for the bytes not yet on the air. */
+    public void setConditions(long bitsPerSecond, int delayMs, int jitterMs) {
+        if (jitterMs < 0 || jitterMs > ShapingConfig.MAX_JITTER_MS) {
+            throw new IllegalArgumentException("a jitter from 0 to " + ShapingConfig.MAX_JITTER_MS + " ms, not " + jitterMs);
+        }
         if (bitsPerSecond < 1 || bitsPerSecond > Bitrate.MAX) {
             throw new IllegalArgumentException("a rate from 1 to " + Bitrate.MAX + " bit/s, not " + bitsPerSecond);
         }
@@ -88,8 +119,9 @@ public final class ShapedFlow {
             throw new IllegalArgumentException("a delay from " + ShapingConfig.MIN_DELAY_MS + " to "
                     + ShapingConfig.MAX_DELAY_MS + " ms, not " + delayMs);
         }
-        if (delayMs != delay.ms()) {
+        if (delayMs != delay.ms() || jitterMs != jitter.ms()) {
             delay.set(delayMs);
+            jitter.set(jitterMs);
             air.afterAirChanged();
         }
         air.setRate(bitsPerSecond);
@@ -104,6 +136,11 @@ public final class ShapedFlow {
     /** The delay in milliseconds. */
     public int delayMs() {
         return delay.ms();
+    }
+
+    /** The delay's jitter in milliseconds. */
+    public int jitterMs() {
+        return jitter.ms();
     }
 
     /** The most bytes this direction holds at its present rate and delay. */

@@ -16,8 +16,10 @@ import java.util.Objects;
  * @param airtime whether links sharing a robot share its radio's airtime
  * @param queueMs the most a direction holds beyond its delay, in milliseconds at its rate
  * @param loss the share of datagrams a pair loses for its strength ({@code wss.shaping.loss}; UDP only)
+ * @param jitter the delay's jitter, its distribution, whether datagrams may be reordered, the seed
  */
-public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, int queueMs, LossTable loss) {
+public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, int queueMs, LossTable loss,
+        JitterConfig jitter) {
 
     public static final String SHAPING = "wss.shaping";
     public static final String RATES = "wss.shaping.rates";
@@ -40,12 +42,23 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     public static final int MIN_DELAY_MS = 0;
     public static final int MAX_DELAY_MS = 10_000;
 
+    /** The delay's jitter, in ms (docs/shaping.md, "Jitter"); 0: none. */
+    public static final String JITTER = "wss.shaping.jitter";
+    /** The jitter's distribution, as netem names them: uniform, normal, pareto, paretonormal. */
+    public static final String JITTER_DISTRIBUTION = "wss.shaping.jitterDistribution";
+    /** Whether a fixed UDP port's datagrams may overtake each other by their jitter (a TCP link's bytes never do). */
+    public static final String REORDER = "wss.shaping.reorder";
+    /** The run's seed, from which every random draw of the run is seeded (the jitter's here). */
+    public static final String SEED = "wss.seed";
+    public static final int MAX_JITTER_MS = 10_000;
+
     /** No shaping: links forward as fast as the robots and the machine allow. The default. */
     public static final ShapingConfig OFF = new ShapingConfig(false, RateTable.DEFAULT, DEFAULT_DELAY_MS, true);
 
     public ShapingConfig {
         Objects.requireNonNull(rates, "rates");
         Objects.requireNonNull(loss, "loss");
+        Objects.requireNonNull(jitter, "jitter");
         String problem = delayProblem(delayMs);
         if (problem != null) {
             throw new IllegalArgumentException(DELAY_MS + ": " + delayMs + " " + problem);
@@ -59,6 +72,11 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
     /** With the default queue ({@link #DEFAULT_QUEUE_MS}) and the default loss table. */
     public ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime) {
         this(on, rates, delayMs, airtime, DEFAULT_QUEUE_MS, LossTable.DEFAULT);
+    }
+
+    /** Without jitter ({@link JitterConfig#NONE}). */
+    public ShapingConfig(boolean on, RateTable rates, int delayMs, boolean airtime, int queueMs, LossTable loss) {
+        this(on, rates, delayMs, airtime, queueMs, loss, JitterConfig.NONE);
     }
 
     /**
@@ -114,7 +132,34 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         if (queueProblem != null) {
             throw refused(QUEUE_MS, queueText, queueProblem);
         }
-        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), queueMs, loss);
+        return new ShapingConfig(on, rates, delayMs, Boolean.parseBoolean(airtimeText.toLowerCase()), queueMs, loss, jitter(values));
+    }
+
+    /** The jitter keys ({@link #JITTER}, {@link #JITTER_DISTRIBUTION}, {@link #REORDER}, {@link #SEED}), each checked. */
+    private static JitterConfig jitter(Map<String, String> values) {
+        int ms;
+        try {
+            ms = parseJitterMs(value(values, JITTER, "0"));
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(JITTER + ": " + e.getMessage(), e);
+        }
+        String distributionText = value(values, JITTER_DISTRIBUTION, JitterConfig.NONE.distribution().word());
+        JitterDistribution distribution = JitterDistribution.of(distributionText);
+        if (distribution == null) {
+            throw refused(JITTER_DISTRIBUTION, distributionText, "is not uniform, normal, pareto or paretonormal");
+        }
+        String reorderText = value(values, REORDER, "false");
+        if (!reorderText.equalsIgnoreCase("true") && !reorderText.equalsIgnoreCase("false")) {
+            throw refused(REORDER, reorderText, "is not true or false");
+        }
+        String seedText = value(values, SEED, String.valueOf(JitterConfig.DEFAULT_SEED));
+        long seed;
+        try {
+            seed = Long.parseLong(seedText);
+        } catch (NumberFormatException e) {
+            throw refused(SEED, seedText, "is not a whole number");
+        }
+        return new JitterConfig(ms, distribution, Boolean.parseBoolean(reorderText.toLowerCase()), seed);
     }
 
     /**
@@ -125,6 +170,19 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
      * @throws IllegalArgumentException "-1 is below 0", "abc is not a whole number of milliseconds"
      */
     public static int parseDelayMs(String text) {
+        return parseMs(text, MAX_DELAY_MS);
+    }
+
+    /**
+     * A jitter in whole milliseconds from 0 to {@link #MAX_JITTER_MS}, as {@code wss.shaping.jitter}
+     * and an operator's {@code FORCE ... {Jitter 20}} write it; the same rule as {@link #parseDelayMs}.
+     */
+    public static int parseJitterMs(String text) {
+        return parseMs(text, MAX_JITTER_MS);
+    }
+
+    /** Whole milliseconds from 0 to {@code max}. */
+    private static int parseMs(String text, int max) {
         String value = text == null ? "" : text.strip();
         if (!value.matches("[+-]?\\d+")) {
             throw new IllegalArgumentException(shown(value) + " is not a whole number of milliseconds");
@@ -135,7 +193,7 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
         } catch (NumberFormatException e) {
             delay = value.startsWith("-") ? Long.MIN_VALUE : Long.MAX_VALUE;
         }
-        String problem = delayProblem(delay);
+        String problem = outside(delay, MIN_DELAY_MS, max);
         if (problem != null) {
             throw new IllegalArgumentException(value + " " + problem);
         }
@@ -157,7 +215,13 @@ public record ShapingConfig(boolean on, RateTable rates, int delayMs, boolean ai
 
     /** The same with another loss table (the window's dialog sets the other four keys, a --config file this one). */
     public ShapingConfig withLoss(LossTable table) {
-        return new ShapingConfig(on, rates, delayMs, airtime, queueMs, table);
+        return new ShapingConfig(on, rates, delayMs, airtime, queueMs, table, jitter);
+    }
+
+    /** The same with another seed ({@code wss.seed}: the window's dialog sets the jitter, a --config file the seed). */
+    public ShapingConfig withSeed(long seed) {
+        return new ShapingConfig(on, rates, delayMs, airtime, queueMs, loss, new JitterConfig(jitter.ms(), jitter.distribution(),
+                jitter.reorder(), seed));
     }
 
     /** The percent of datagrams a pair of this strength loses: none with shaping off. */

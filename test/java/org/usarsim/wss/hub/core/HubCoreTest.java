@@ -18,6 +18,9 @@ import org.usarsim.wss.model.LinkQuality;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
+import org.usarsim.wss.shaping.LossTable;
+import org.usarsim.wss.shaping.JitterDistribution;
+import org.usarsim.wss.shaping.JitterConfig;
 
 /** The hub's rules without sockets, threads or waiting: each step's changes read as data, the time moved by hand. */
 class HubCoreTest {
@@ -287,6 +290,27 @@ class HubCoreTest {
         org.usarsim.wss.model.DatagramLoss rule = (bytes, nowNs, random) -> bytes > 100;
         shaped.measured(Map.of(ab, new Measurement(-85, Optional.of(new LinkQuality(300_000, 40, rule)))), new Changes());
         assertSame(rule, shaped.conditions().get(ab).datagramLoss(), "the model's datagram loss rule reaches the pair's condition");
+    }
+
+    @Test
+    void aPairsJitterIsTheSettingsUnlessAnOperatorPinsAnother() {
+        ShapingConfig jittery = new ShapingConfig(true, RateTable.DEFAULT, 5, true, ShapingConfig.DEFAULT_QUEUE_MS, LossTable.DEFAULT,
+                new JitterConfig(15, JitterDistribution.NORMAL, false, 0));
+        HubCore shaped = new HubCore("TestModel", true, 600, 1000, Integer.MAX_VALUE, jittery);
+        shaped.register(robot("A", () -> { }, 5000), now, new Changes());
+        shaped.register(robot("B", () -> { }, 6000), now, new Changes());
+        shaped.dns("A", "B", 0, true, 40001, now, new Changes());
+        OrderedPair ab = new OrderedPair("A", "B");
+        assertEquals(15, shaped.conditions().get(ab).jitterMs(), "wss.shaping.jitter");
+        shaped.force(AB, Force.UP, new RatePin(1_000_000, 50, 20), now, new Changes());
+        assertEquals(new PairCondition(PairState.FORCED_UP, 1_000_000, 50, 0, 20), shaped.conditions().get(ab), "the pin's");
+        assertEquals(20, shaped.conditions().get(ab.reversed()).jitterMs(), "both ways");
+        shaped.force(AB, Force.UP, new RatePin(1_000_000, 50), now, new Changes());
+        assertEquals(15, shaped.conditions().get(ab).jitterMs(), "a pin without a jitter leaves the setting's");
+        shaped.force(AB, Force.UP, new RatePin(0, -1, 0), now, new Changes());
+        assertEquals(0, shaped.conditions().get(ab).jitterMs(), "a jitter pinned alone, to none");
+        shaped.release(AB, true, true, now, new Changes());
+        assertEquals(15, shaped.conditions().get(ab).jitterMs(), "released: the setting's again");
     }
 
     @Test

@@ -25,6 +25,7 @@ import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.hub.core.WssPort;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.shaping.Airtime;
+import org.usarsim.wss.shaping.JitterConfig;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
@@ -51,7 +52,7 @@ class LinkClockTest {
         // 10 s of delay, the most there is: on the machine's clock the bytes would come after every deadline here.
         PairCondition slow = new PairCondition(PairState.UP, 54_000_000, ShapingConfig.MAX_DELAY_MS);
         Shaping shaping = new Shaping(Airtime.shared(), CoreFixtures.condition(slow), CoreFixtures.condition(slow),
-                ShapingConfig.DEFAULT_QUEUE_MS);
+                ShapingConfig.DEFAULT_QUEUE_MS, JitterConfig.NONE);
         Robots robots = link(shaping);
         byte[] message = Sockets.randomBytes(64, 32);
         robots.source.getOutputStream().write(message);

@@ -49,6 +49,13 @@ public sealed interface HubEvent {
         }
     }
 
+    /** The shape an operator pinned on a pair forced up (issue 35: recorded, so that the jitter is too). */
+    record PairPinned(String first, String second, RatePin pin) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.pairPinned(first, second, pin.bitsPerSecond(), pin.delayMs(), pin.jitterMs());
+        }
+    }
+
     record PairReleased(String first, String second) implements HubEvent {
         public void deliverTo(EventSink sink) {
             sink.pairReleased(first, second);

@@ -7,13 +7,20 @@ import org.usarsim.wss.model.DatagramLoss;
  * and the event log read: its state (up, broken, forced) and, when links are shaped, its rate
  * in bit/s and its delay in milliseconds (0 and 0 when they are not: as fast as the machine goes),
  * and the percent of datagrams a fixed UDP port loses (wss.shaping.loss; 0 unshaped), or the
- * model's own rule for them ({@link DatagramLoss}, the RFComms model's; null: the percent).
+ * model's own rule for them ({@link DatagramLoss}, the RFComms model's; null: the percent), and
+ * the delay's jitter in milliseconds (wss.shaping.jitter or a pin's; 0: none).
  */
-public record PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent, DatagramLoss datagramLoss) {
+public record PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent, int jitterMs,
+        DatagramLoss datagramLoss) {
 
     /** The datagrams lost by the percent. */
+    public PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent, int jitterMs) {
+        this(state, bitsPerSecond, delayMs, lossPercent, jitterMs, null);
+    }
+
+    /** No jitter. */
     public PairCondition(PairState state, long bitsPerSecond, int delayMs, double lossPercent) {
-        this(state, bitsPerSecond, delayMs, lossPercent, null);
+        this(state, bitsPerSecond, delayMs, lossPercent, 0);
     }
 
     /** No datagram lost. */

@@ -78,7 +78,8 @@ final class PairConditions {
         long rate = pin.pinsRate() ? pin.bitsPerSecond()
                 : measurement.quality().map(LinkQuality::bitsPerSecond).orElseGet(() -> shaping.rates().rateFor(measurement.strength()));
         int delay = pin.pinsDelay() ? pin.delayMs() : measurement.quality().map(LinkQuality::delayMs).orElse(shaping.delayMs());
-        return new PairCondition(state, rate, delay, shaping.lossPercent(measurement.strength()),
+        int jitter = pin.pinsJitter() ? pin.jitterMs() : shaping.jitter().ms();
+        return new PairCondition(state, rate, delay, shaping.lossPercent(measurement.strength()), jitter,
                 measurement.quality().map(LinkQuality::datagramLoss).orElse(null));
     }
 

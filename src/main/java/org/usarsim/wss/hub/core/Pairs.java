@@ -97,6 +97,9 @@ final class Pairs {
         if (before != force || pinned) { // a new rate or delay for a pair forced up is a force that changed something
             out.add(new HubEvent.PairForced(pair.first(), pair.second(), force == Force.UP));
         }
+        if (pinned && force == Force.UP) {
+            out.add(new HubEvent.PairPinned(pair.first(), pair.second(), pin));
+        }
     }
 
     /** Gives the pair back to the model. @return whether it was forced (then it is said) */

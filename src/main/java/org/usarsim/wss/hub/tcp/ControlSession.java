@@ -193,7 +193,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     }
 
     /**
-     * The operator command (docs/protocol.md section 7): {@code FORCE {Robot A} {Peer B} {State Down|Up|Model}}, up with an optional {@code {Rate r} {Delay d}}.
+     * The operator command (docs/protocol.md section 7): {@code FORCE {Robot A} {Peer B} {State Down|Up|Model}}, up with an optional {@code {Rate r} {Delay d} {Jitter j}}.
      * Only from an address of wss.operators; the names need not be registered.
      */
     private String force(Command command) throws ProtocolException {
@@ -214,8 +214,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         }
         String rateText = command.value("Rate");
         String delayText = command.value("Delay");
+        String jitterText = command.value("Jitter");
         RatePin pin = RatePin.NONE;
-        if (rateText != null || delayText != null) {
+        if (rateText != null || delayText != null || jitterText != null) {
             if (!wanted.equals("up")) {
                 return Replies.error(Replies.RATE_AND_DELAY_NEED_STATE_UP);
             }
@@ -231,10 +232,16 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
             } catch (IllegalArgumentException e) {
                 return Replies.error(Replies.DELAY_MUST_BE_0_TO_10000_MS);
             }
-            pin = new RatePin(rate, delay);
+            int jitter;
+            try {
+                jitter = jitterText == null ? -1 : ShapingConfig.parseJitterMs(jitterText);
+            } catch (IllegalArgumentException e) {
+                return Replies.error(Replies.JITTER_MUST_BE_0_TO_10000_MS);
+            }
+            pin = new RatePin(rate, delay, jitter);
         }
         String shape = pin.equals(RatePin.NONE) ? "" : (pin.pinsRate() ? " rate " + Bitrate.format(pin.bitsPerSecond()) : "")
-                + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "");
+                + (pin.pinsDelay() ? " delay " + pin.delayMs() + " ms" : "") + (pin.pinsJitter() ? " jitter " + pin.jitterMs() + " ms" : "");
         // Who, before what it does; limited like the WARNINGs, as an operator can send FORCEs as fast as it likes.
         hub.note(LOG, "operator commands", address, "operator " + peer + ": FORCE " + first + " - " + second + " " + state + shape);
         switch (wanted) {

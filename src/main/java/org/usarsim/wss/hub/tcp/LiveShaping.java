@@ -67,7 +67,7 @@ final class LiveShaping implements Pacing {
         this.out = out;
         this.followed = condition.get();
         this.flow = new ShapedFlow(shaping.airtime().open(from, to, nowNs), followed.bitsPerSecond(), followed.delayMs(),
-                shaping.queueMs());
+                followed.jitterMs(), shaping.queueMs(), shaping.jitter().distribution(), shaping.jitter().seedFor(from, to, 0));
         // Watched after the first reading: a change in between differs from it, so the next reading takes it.
         condition.watch(wake);
         this.localIn = onThisMachineOrClosed(in);
@@ -112,7 +112,7 @@ final class LiveShaping implements Pacing {
             followed = now;
             if (now.shaped()) {
                 boolean newRate = now.bitsPerSecond() != flow.rate();
-                flow.setConditions(now.bitsPerSecond(), now.delayMs());
+                flow.setConditions(now.bitsPerSecond(), now.delayMs(), now.jitterMs());
                 if (newRate) {
                     sizeBuffers();
                 }

@@ -19,6 +19,7 @@ import org.usarsim.wss.hub.core.PairCondition;
 import org.usarsim.wss.hub.core.UdpCounts;
 import org.usarsim.wss.shaping.Airtime;
 import org.usarsim.wss.shaping.DatagramFlow;
+import org.usarsim.wss.shaping.JitterConfig;
 
 /**
  * A fixed UDP port (docs/fixed-ports.md): one datagram socket on its number, and a thread that
@@ -81,10 +82,11 @@ public final class UdpRelay implements AutoCloseable {
      * Binds the port's number; {@link #start} starts relaying.
      *
      * @param source the address the source robot's datagrams must come from; null: any
+     * @param jitter the jitter's distribution, whether datagrams may be reordered, and the seed (the jitter itself is the pair's)
      * @throws IOException when the number cannot be bound
      */
     public UdpRelay(FixedPort port, InetAddress bindAddress, InetSocketAddress target, InetAddress source, Pair pair,
-            Airtime airtime, long idleNs, HubClock clock, Report report) throws IOException {
+            Airtime airtime, JitterConfig jitter, long idleNs, HubClock clock, Report report) throws IOException {
         this.report = report;
         this.port = port;
         this.target = target;
@@ -97,8 +99,10 @@ public final class UdpRelay implements AutoCloseable {
         this.sessions = new UdpSessions<>(idleNs);
         long now = clock.nanoTime();
         long seed = port.number() * 2L;
-        this.forward = new DatagramFlow<>(airtime.open(port.key().from(), port.key().to(), now), seed);
-        this.back = new DatagramFlow<>(airtime.open(port.key().to(), port.key().from(), now), seed + 1);
+        this.forward = new DatagramFlow<>(airtime.open(port.key().from(), port.key().to(), now), seed, jitter.distribution(), jitter.reorder(),
+                jitter.seedFor(port.key().from(), port.key().to(), port.number()));
+        this.back = new DatagramFlow<>(airtime.open(port.key().to(), port.key().from(), now), seed + 1, jitter.distribution(),
+                jitter.reorder(), jitter.seedFor(port.key().to(), port.key().from(), port.number()));
         this.selector = Selector.open();
         DatagramChannel bound = null;
         try {
@@ -184,17 +188,19 @@ public final class UdpRelay implements AutoCloseable {
         }
     }
 
-    /** A shaped pair's conditions now, for the datagrams each way still queues. */
+    /** A shaped pair's conditions now, for the datagrams each way still queues (and, the jitter, for those read next). */
     private void follow() {
         PairCondition up = pair.up().get();
         if (up.shaped()) {
             forward.setConditions(up.bitsPerSecond(), up.delayMs(), up.lossPercent());
             forward.setLossRule(lossRule(up));
+            forward.setJitterMs(up.jitterMs());
         }
         PairCondition down = pair.down().get();
         if (down.shaped()) {
             back.setConditions(down.bitsPerSecond(), down.delayMs(), down.lossPercent());
             back.setLossRule(lossRule(down));
+            back.setJitterMs(down.jitterMs());
         }
     }
 

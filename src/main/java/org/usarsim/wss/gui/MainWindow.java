@@ -11,7 +11,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
-import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
@@ -26,7 +25,6 @@ import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
-import org.usarsim.wss.Version;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -49,24 +47,27 @@ public final class MainWindow {
     static final int REFRESH_MS = 250;
     private static final Logger LOG = Logger.getLogger(MainWindow.class.getName());
 
-    private final JFrame frame = new JFrame(TITLE + " " + Version.current());
+    private final JFrame frame = new JFrame(TITLE);
     private final ControlBar bar;
     private final RobotsPanel robots = new RobotsPanel();
     private final PortsPanel ports = new PortsPanel();
     private final LinksPanel links = new LinksPanel();
-    private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
-    private final StatsPanel stats = new StatsPanel(forceMenu);
+    private final ForceMenu forceMenu;
+    private final StatsPanel stats;
     private final LogPanel log = new LogPanel();
-    private final MapPanel map = new MapPanel(forceMenu);
+    private final MapPanel map;
     /** The time bar under the tabs, shown while the running model replays a recording. */
     private final ReplayBar replayBar = new ReplayBar();
-    private final NetworkView view = new NetworkView();
+    /** What the window shows and steers through; {@link #local} too when the server is the window's own, else null. */
+    private final WindowSource source;
+    private final LocalSource local;
+    /** The replay the time bar follows (null: none). */
+    private Replay replayShown;
     private final Timer timer;
     private final Servers servers;
     private final Map<String, ModelProvider> models = new LinkedHashMap<>();
     private final WindowPreferences windowPreferences;
     private final ModelPreferences modelPreferences;
-    private final WindowLog windowLog;
     private final Runnable onClosed;
     /** What each model's next start uses, and its dialog shows: the stored settings, a --config file's over them. */
     private final NextRunValues nextRunValues;
@@ -78,13 +79,18 @@ public final class MainWindow {
     private String askedPort;
     private boolean closing;
 
-    private MainWindow(Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
-            ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
+    private MainWindow(WindowSource source, Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
+            ModelPreferences modelPreferences, Launch launch, Runnable onClosed) {
+        this.source = source;
+        this.local = source instanceof LocalSource own ? own : null;
         this.servers = servers;
+        forceMenu = new ForceMenu(source::controls, source.offersForce());
+        stats = new StatsPanel(forceMenu);
+        map = new MapPanel(forceMenu);
+        frame.setTitle(source.title());
         modelList.forEach(model -> models.put(model.name(), model));
         this.windowPreferences = windowPreferences;
         this.modelPreferences = modelPreferences;
-        this.windowLog = windowLog;
         this.onClosed = onClosed;
         this.nextRunValues = new NextRunValues(modelPreferences, launch.modelValues());
         this.nextRunShaping = new NextRunShaping(windowPreferences, launch.shapingValues());
@@ -115,7 +121,8 @@ public final class MainWindow {
      */
     public static MainWindow open(Servers servers, List<ModelProvider> models, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
-        MainWindow window = new MainWindow(servers, models, windowPreferences, modelPreferences, windowLog, launch, onClosed);
+        MainWindow window = new MainWindow(new LocalSource(windowLog), servers, models, windowPreferences, modelPreferences, launch,
+                onClosed);
         window.frame.setVisible(true);
         window.timer.start();
         if (launch.start()) {
@@ -202,19 +209,29 @@ public final class MainWindow {
     }
 
     private void refresh() {
-        HubSnapshot snapshot = view.poll();
+        HubSnapshot snapshot = source.poll();
         if (snapshot != null) {
             robots.show(snapshot.robots());
             ports.show(snapshot.ports());
             links.show(snapshot.links());
             stats.show(snapshot.pairs());
         }
-        MapData mapData = view.pollMap();
+        MapData mapData = source.pollMap();
         if (mapData != null) {
             map.show(mapData);
         }
-        log.append(windowLog.drain());
+        log.append(source.drainLog());
+        showReplay();
         replayBar.follow();
+    }
+
+    /** The time bar shows the source's replay, when it has one. */
+    private void showReplay() {
+        Replay now = source.replay();
+        if (now != replayShown) {
+            replayShown = now;
+            replayBar.attach(now);
+        }
     }
 
     private void startOrStop() {
@@ -236,7 +253,7 @@ public final class MainWindow {
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, values, eventLog, record, shaping, view);
+                return servers.start(port, model, values, eventLog, record, shaping, local.listener());
             }
 
             @Override
@@ -258,8 +275,8 @@ public final class MainWindow {
                 windowPreferences.storeRun(port, model.name(), eventLog, record);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
-                view.attach(running, running.model());
-                replayBar.attach(replayOf(running.model()));
+                local.started(running);
+                showReplay();
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -275,20 +292,11 @@ public final class MainWindow {
                 JOptionPane.ERROR_MESSAGE));
     }
 
-    /** The model's replay controls, or null when it replays nothing (or fails to say). */
-    private static Replay replayOf(PropagationModel model) {
-        try {
-            return model.replay().orElse(null);
-        } catch (RuntimeException e) {
-            LOG.log(Level.WARNING, model.name() + " failed to give its replay controls: " + e, e);
-            return null;
-        }
-    }
-
     private void stop() {
         Servers.Running stopping = running;
         running = null;
-        replayBar.detach();
+        local.stopping();
+        showReplay();
         setState(ControlBar.State.STOPPING);
         new SwingWorker<Void, Void>() {
             @Override
@@ -299,7 +307,7 @@ public final class MainWindow {
 
             @Override
             protected void done() {
-                view.detach();
+                local.stopped();
                 bar.port.setText(askedPort);
                 setState(ControlBar.State.STOPPED);
                 if (closing) {
@@ -341,7 +349,7 @@ public final class MainWindow {
     private void finishClosing() {
         windowPreferences.storeBounds(frame.getBounds());
         timer.stop();
-        view.close();
+        source.close();
         forceMenu.close();
         frame.dispose();
         onClosed.run();

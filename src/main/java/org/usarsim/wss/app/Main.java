@@ -108,6 +108,9 @@ public final class Main {
         if (options instanceof Options.World world) {
             return WorldServerRun.run(out, world);
         }
+        if (options instanceof Options.Attach attach) {
+            return AttachRun.run(out, attach);
+        }
         if (options instanceof Options.PrintPorts printPorts) {
             return printPorts(out, err, printPorts.config());
         }

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import org.usarsim.wss.gui.Attaching;
 import org.usarsim.wss.world.RosbridgeServer;
 
 /**
@@ -227,7 +228,7 @@ final class OptionsParser {
             throw new Mistake("--attach only opens a window attached to a running WSS: no option but --token-file and --trust-cert\n"
                     + USAGE);
         }
-        if (!url.matches("https?://[^/?#@\\s]+(/\\S*)?")) {
+        if (!Attaching.isMonitorUrl(url)) {
             throw new Mistake("--attach " + url + " is not a monitor's URL: https://host:port or http://host:port\n" + USAGE);
         }
         return new Options.Attach(url, path(given, "--token-file"), path(given, "--trust-cert"));

@@ -59,6 +59,11 @@ final class EventStreamParser {
         return lastId;
     }
 
+    /** Forgets the last event id: the next connection asks for a fresh snapshot. */
+    void forgetId() {
+        lastId = null;
+    }
+
     /** The stream ended (or was cut): an event not ended by its empty line is dropped, as the standard says. */
     void reset() {
         data.setLength(0);

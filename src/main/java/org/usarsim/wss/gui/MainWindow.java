@@ -14,6 +14,7 @@ import java.util.concurrent.ExecutionException;
 import java.util.logging.Logger;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
+import javax.swing.JLabel;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
@@ -25,6 +26,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
+import org.usarsim.wss.attach.MonitorClient;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -55,6 +57,8 @@ public final class MainWindow {
     private final ForceMenu forceMenu;
     private final StatsPanel stats;
     private final LogPanel log = new LogPanel();
+    /** Above the tabs while an attached window's connection is lost. */
+    private final JLabel banner = new JLabel();
     private final MapPanel map;
     /** The time bar under the tabs, shown while the running model replays a recording. */
     private final ReplayBar replayBar = new ReplayBar();
@@ -95,6 +99,17 @@ public final class MainWindow {
         this.nextRunValues = new NextRunValues(modelPreferences, launch.modelValues());
         this.nextRunShaping = new NextRunShaping(windowPreferences, launch.shapingValues());
         bar = new ControlBar(List.copyOf(models.keySet()));
+        timer = new Timer(REFRESH_MS, e -> refresh());
+        if (local != null) {
+            ownServer(launch);
+        } else {
+            bar.serversOwn(source.title());
+        }
+        layOut();
+    }
+
+    /** The bar of a window that runs its server: the launch's or the stored values, Start / Stop and the dialogs. */
+    private void ownServer(Launch launch) {
         bar.port.setText(launch.port() != null ? launch.port() : windowPreferences.port());
         bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : windowPreferences.eventLog());
         bar.record.setSelected(launch.record() != null ? launch.record() : windowPreferences.record());
@@ -109,8 +124,6 @@ public final class MainWindow {
         bar.configure.addActionListener(e -> configure());
         bar.shaping.addActionListener(e -> shaping());
         bar.showShaping(nextRunShaping.config());
-        timer = new Timer(REFRESH_MS, e -> refresh());
-        layOut();
         showState();
     }
 
@@ -128,6 +141,20 @@ public final class MainWindow {
         if (launch.start()) {
             SwingUtilities.invokeLater(window.bar.start::doClick);
         }
+        return window;
+    }
+
+    /**
+     * Builds and shows a window attached to a server's monitor endpoint (docs/monitor.md): its
+     * tables, map, log and time bar from the stream, the force menu with an operator's token, the
+     * bar read-only. {@code onClosed} runs once it is closed. Event thread.
+     */
+    public static MainWindow openAttached(MonitorClient client, WindowPreferences windowPreferences, Runnable onClosed) {
+        AttachedSource attached = new AttachedSource(client);
+        MainWindow window = new MainWindow(attached, null, List.of(), windowPreferences, null, Launch.STORED, onClosed);
+        window.frame.setVisible(true);
+        window.timer.start();
+        attached.start(window::refresh);
         return window;
     }
 
@@ -164,7 +191,15 @@ public final class MainWindow {
         center.setBorder(null);
         JPanel content = new JPanel(new BorderLayout(0, 8));
         content.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
-        content.add(bar, BorderLayout.NORTH);
+        JPanel top = new JPanel(new BorderLayout(0, 4));
+        top.add(bar, BorderLayout.NORTH);
+        top.add(banner, BorderLayout.SOUTH);
+        banner.setName("banner");
+        banner.setOpaque(true);
+        banner.setBackground(new java.awt.Color(0xFFF3C4));
+        banner.setBorder(BorderFactory.createEmptyBorder(4, 6, 4, 6));
+        banner.setVisible(false);
+        content.add(top, BorderLayout.NORTH);
         content.add(center, BorderLayout.CENTER);
         frame.setContentPane(content);
         frame.setJMenuBar(menuBar());
@@ -179,8 +214,17 @@ public final class MainWindow {
         }
     }
 
-    /** The Help menu, with About. */
+    /** File, with Attach..., and Help, with About. */
     private JMenuBar menuBar() {
+        JMenuItem attach = new JMenuItem("Attach...");
+        attach.setName("attach");
+        attach.setMnemonic(KeyEvent.VK_A);
+        attach.setToolTipText("Open a window attached to a WSS that runs elsewhere (docs/monitor.md)");
+        attach.addActionListener(e -> Attaching.fromMenu(frame, windowPreferences));
+        JMenu file = new JMenu("File");
+        file.setName("file");
+        file.setMnemonic(KeyEvent.VK_F);
+        file.add(attach);
         JMenuItem about = new JMenuItem("About WSS");
         about.setName("about");
         about.setMnemonic(KeyEvent.VK_A);
@@ -190,6 +234,7 @@ public final class MainWindow {
         help.setMnemonic(KeyEvent.VK_H);
         help.add(about);
         JMenuBar menus = new JMenuBar();
+        menus.add(file);
         menus.add(help);
         return menus;
     }
@@ -221,6 +266,12 @@ public final class MainWindow {
             map.show(mapData);
         }
         log.append(source.drainLog());
+        String lost = source.banner();
+        banner.setVisible(lost != null);
+        banner.setText(lost == null ? "" : lost);
+        if (snapshot != null && source instanceof AttachedSource attached) {
+            bar.showServer(attached.last().model(), attached.last().controlPort());
+        }
         showReplay();
         replayBar.follow();
     }

@@ -80,7 +80,7 @@ final class ServerState {
                 continue;
             }
             for (JsonNode entry : gone.items()) {
-                String key = kind.equals("robot") ? entry.string() : StateJson.key(kind, entry);
+                String key = kind.equals("robot") ? entry.string() : StateReader.key(kind, entry);
                 switch (kind) {
                     case "robot" -> {
                         robots.remove(key);
@@ -103,21 +103,21 @@ final class ServerState {
     private void model(JsonNode node) throws JsonException {
         JsonNode name = node.optional("name");
         model = name == null || name.isNull() ? "" : name.string();
-        cutoff = StateJson.number(node.optional("cutoff"));
-        walls = StateJson.walls(node);
+        cutoff = StateReader.number(node.optional("cutoff"));
+        walls = StateReader.walls(node);
     }
 
     private void put(String kind, JsonNode entry) throws JsonException {
-        String key = StateJson.key(kind, entry);
+        String key = StateReader.key(kind, entry);
         switch (kind) {
             case "robot" -> {
-                robots.put(key, StateJson.robot(entry));
-                mapRobots.put(key, StateJson.mapRobot(entry));
+                robots.put(key, StateReader.robot(entry));
+                mapRobots.put(key, StateReader.mapRobot(entry));
             }
-            case "port" -> ports.put(key, StateJson.port(entry));
-            case "link" -> links.put(key, StateJson.link(entry));
-            case "pair" -> pairs.put(key, StateJson.pair(entry));
-            default -> lines.put(key, StateJson.line(entry));
+            case "port" -> ports.put(key, StateReader.port(entry));
+            case "link" -> links.put(key, StateReader.link(entry));
+            case "pair" -> pairs.put(key, StateReader.pair(entry));
+            default -> lines.put(key, StateReader.line(entry));
         }
     }
 

@@ -15,9 +15,9 @@ import org.usarsim.wss.ros.JsonNode;
  * records, and the key that names each entry in the events. Unknown fields are ignored; a
  * {@code null} number is NaN.
  */
-final class StateJson {
+final class StateReader {
 
-    private StateJson() {
+    private StateReader() {
     }
 
     static HubSnapshot.RobotEntry robot(JsonNode robot) throws JsonException {

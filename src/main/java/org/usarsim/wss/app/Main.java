@@ -211,6 +211,7 @@ public final class Main {
         } catch (Server.StartFailure e) {
             throw new RunFailure(CANNOT_START, e.getMessage());
         }
+        server.monitor(configFile.monitorConfig());
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
         try (StopSignal stop = new StopSignal()) {
             try {

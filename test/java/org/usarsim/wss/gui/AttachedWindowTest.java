@@ -118,14 +118,15 @@ class AttachedWindowTest {
         frame = onEdt(() -> MainWindow.openAttached(client, new WindowPreferences(preferences.node("window")), closed::countDown).frame());
     }
 
+    /** The table of that name. Event thread. */
     private JTable table(String name) {
-        return onEdt(() -> find(frame.getContentPane(), JTable.class, name));
+        return find(frame.getContentPane(), JTable.class, name);
     }
 
-    /** The state column of the statistics row of that pair, "" while there is none. */
+    /** The state column of the statistics row of that pair, "" while there is none. Event thread. */
     private String stateOf(String first, String second) {
-        return onEdt(() -> cells(table("stats")).stream().filter(row -> row.get(0).equals(first) && row.get(1).equals(second))
-                .map(row -> row.get(2)).findFirst().orElse(""));
+        return cells(table("stats")).stream().filter(row -> row.get(0).equals(first) && row.get(1).equals(second))
+                .map(row -> row.get(2)).findFirst().orElse("");
     }
 
     @Test
@@ -136,8 +137,7 @@ class AttachedWindowTest {
             r1.initAccepting("r1");
             r2.initAccepting("r2");
             r1.dns("r2", 0);
-            JTable robots = table("robots");
-            until("the attached window shows both robots", () -> onEdt(() -> cells(robots)).stream().map(row -> row.get(0)).toList()
+            until("the attached window shows both robots", () -> cells(table("robots")).stream().map(row -> row.get(0)).toList()
                     .equals(List.of("r1", "r2")));
             until("the pair is up", () -> stateOf("r1", "r2").equals("up"));
             hub.force("r1", "r2", Force.DOWN);
@@ -147,7 +147,8 @@ class AttachedWindowTest {
         }
         JButton start = onEdt(() -> find(frame.getContentPane(), JButton.class, "start"));
         assertFalse(onEdt(start::isEnabled), "Start / Stop is the server's");
-        assertTrue(onEdt(start::getToolTipText).startsWith("The server's own"), onEdt(start::getToolTipText));
+        String tip = onEdt(start::getToolTipText);
+        assertTrue(tip.startsWith("The server's own"), tip);
         assertEquals(String.valueOf(hub.controlPort()), onEdt(() -> find(frame.getContentPane(), javax.swing.JTextField.class, "port").getText()));
     }
 
@@ -162,6 +163,7 @@ class AttachedWindowTest {
             until("the pair is shown", () -> stateOf("r1", "r2").equals("up"));
             rightClickFirstStatisticsRow();
             assertFalse(onEdt(AttachedWindowTest::popupShowing), "a viewer's window offers no force menu");
+            assertTrue(onEdt(() -> table("stats").getRowCount() == 1), "the row was there to click");
         }
     }
 
@@ -174,7 +176,7 @@ class AttachedWindowTest {
             attach(monitor.port(), OPERATOR);
             until("the pair is shown", () -> stateOf("r1", "r2").equals("up"));
             rightClickFirstStatisticsRow();
-            until("the force menu shows", () -> onEdt(AttachedWindowTest::popupShowing));
+            until("the force menu shows", AttachedWindowTest::popupShowing);
             run(() -> shownItem(ForceMenu.DOWN).doClick());
             until("the hub forced the pair down, and the window shows it", () -> stateOf("r1", "r2").equals("forced down"));
         }
@@ -186,22 +188,25 @@ class AttachedWindowTest {
             attach(network.port(), OPERATOR);
             JLabel banner = onEdt(() -> find(frame.getContentPane(), JLabel.class, "banner"));
             assertFalse(onEdt(banner::isVisible));
-            monitor.close(); // the server stops
-            network.cut();
-            until("the banner says the connection is lost", () -> onEdt(() -> banner.isVisible()
-                    && banner.getText().startsWith("Connection to 127.0.0.1:" + network.port() + " lost, reconnecting in ")));
+            network.cut(); // the network drops, and the server stops
+            monitor.close();
+            until("the banner says the connection is lost", () -> banner.isVisible()
+                    && banner.getText().startsWith("Connection to 127.0.0.1:" + network.port() + " lost, reconnecting in "));
             monitor = startMonitor(hub, model, tokens); // back, elsewhere behind the same address
             network.restore(monitor.port());
             try (TestRobot r1 = new TestRobot(hub.controlPort(), "127.0.0.2")) {
                 r1.initAccepting("r1");
-                until("the banner goes and the tables follow the new stream", () -> onEdt(() -> !banner.isVisible()
-                        && cells(table("robots")).stream().anyMatch(row -> row.get(0).equals("r1"))));
+                until("the banner goes and the tables follow the new stream", () -> !banner.isVisible()
+                        && cells(table("robots")).stream().anyMatch(row -> row.get(0).equals("r1")));
             }
         }
     }
 
+    /** Shows the Link statistics tab and right-clicks its first row, as a user does. */
     private void rightClickFirstStatisticsRow() {
-        JTable stats = table("stats");
+        run(() -> find(frame.getContentPane(), javax.swing.JTabbedPane.class, "tabs").setSelectedIndex(2));
+        JTable stats = onEdt(() -> table("stats"));
+        until("the statistics show", stats::isShowing);
         run(() -> {
             Rectangle row = stats.getCellRect(0, 0, true);
             for (int id : new int[] {MouseEvent.MOUSE_PRESSED, MouseEvent.MOUSE_RELEASED}) {

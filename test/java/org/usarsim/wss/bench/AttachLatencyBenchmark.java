@@ -37,7 +37,8 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * {@link MonitorClient} and {@link MainWindow}), two robots registered; then the pair is forced
  * down and released in turn, each change timed from the hub's call to the moment the attached
  * window's Link statistics table holds the new state (a listener on the table's model, on the
- * event thread). Prints the median, p99 and max over the changes, and PASS when the p99 is under
+ * event thread), the changes 0 to 150 ms apart (drawn, seeded), so that they come at any point of
+ * the monitor's 100 ms comparisons as a run's changes do. Prints the median, p99 and max over the changes, and PASS when the p99 is under
  * 250 ms. Needs a display (Xvfb).
  *
  * <pre>
@@ -84,7 +85,10 @@ public final class AttachLatencyBenchmark {
             if (!seen.get().await(10, TimeUnit.SECONDS)) {
                 throw new IllegalStateException("the attached window never showed the pair up");
             }
+            java.util.Random random = new java.util.Random(33);
             for (int i = 0; i < changes; i++) {
+                // A change comes at any time, not just after the monitor's last comparison (it compares every 100 ms).
+                Thread.sleep(random.nextInt(150));
                 boolean down = i % 2 == 0;
                 seen.set(new CountDownLatch(1));
                 wanted.set(down ? "forced down" : "up");

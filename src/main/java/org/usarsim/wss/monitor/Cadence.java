@@ -15,10 +15,20 @@ final class Cadence {
     static final long COUNTS_NS = TimeUnit.SECONDS.toNanos(1);
     static final long LINGER_NS = TimeUnit.SECONDS.toNanos(60);
 
+    private final long lingerNs;
     private long compared;
     private long counted;
     private long lastStream;
     private boolean started;
+
+    Cadence() {
+        this(LINGER_NS);
+    }
+
+    /** @param lingerNs how long the history is recorded after the last stream (a benchmark's no-viewer phases set 0) */
+    Cadence(long lingerNs) {
+        this.lingerNs = lingerNs;
+    }
 
     /** How long to wait from {@code now} before the next comparison, given whether a change waits. */
     long waitNs(long now, boolean changed) {
@@ -50,8 +60,8 @@ final class Cadence {
         lastStream = now;
     }
 
-    /** Whether the history is still recorded: a stream was open within {@link #LINGER_NS}. */
+    /** Whether the history is still recorded: a stream was open within the linger ({@link #LINGER_NS} unless told). */
     boolean recording(long now, boolean everStreamed) {
-        return everStreamed && now - lastStream < LINGER_NS;
+        return everStreamed && now - lastStream < lingerNs;
     }
 }

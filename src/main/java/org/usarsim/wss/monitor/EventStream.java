@@ -87,7 +87,7 @@ final class EventStream implements Runnable {
     }
 
     /** The events queued, waiting up to the keepalive for one; empty: write a keepalive; null: closed. */
-    private synchronized List<SseEvent> take() throws InterruptedException {
+    synchronized List<SseEvent> take() throws InterruptedException {
         long deadline = System.nanoTime() + KEEPALIVE_NS;
         while (queue.isEmpty() && !closed) {
             long left = deadline - System.nanoTime();

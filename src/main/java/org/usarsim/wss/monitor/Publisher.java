@@ -42,7 +42,8 @@ final class Publisher implements WssEventListener, Runnable {
     private final Streams streams;
     private final EventHistory history;
     private final StateDiff diff = new StateDiff();
-    private final Cadence cadence = new Cadence();
+    /** The linger after the last stream: {@link Cadence#LINGER_NS}, or the benchmarks' -Dwss.monitor.lingerMs. */
+    private final Cadence cadence = new Cadence(Long.getLong("wss.monitor.lingerMs", Cadence.LINGER_NS / 1_000_000) * 1_000_000);
     private final BlockingQueue<Object> waiting = new ArrayBlockingQueue<>(MAX_WAITING);
     private final AtomicBoolean changed = new AtomicBoolean();
     private final AtomicLong droppedItems = new AtomicLong();

@@ -32,7 +32,7 @@ final class StateJson {
         Map<String, Object> state = new LinkedHashMap<>();
         state.put("run", run);
         state.put("lastEventId", lastEventId);
-        state.put("time", time.toString());
+        state.put("time", time.truncatedTo(java.time.temporal.ChronoUnit.MILLIS).toString());
         state.put("operator", operator);
         Map<String, Object> about = new LinkedHashMap<>();
         about.put("version", server.version());

@@ -49,8 +49,13 @@ final class Streams {
 
     /** The stream (its slot reserved) receives from now on; its thread starts. */
     void add(EventStream stream) {
-        open.add(stream);
+        listen(stream);
         stream.start(numbers.incrementAndGet());
+    }
+
+    /** The stream receives from now on (its thread is {@link #add}'s to start). */
+    void listen(EventStream stream) {
+        open.add(stream);
     }
 
     boolean isEmpty() {

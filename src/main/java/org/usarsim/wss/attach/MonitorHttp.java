@@ -54,8 +54,14 @@ final class MonitorHttp {
 
     /** GET /api/state: the state object; an IOException saying why when it is not had (a refused token: 401). */
     JsonNode state() throws IOException, InterruptedException {
-        HttpResponse<String> answer = client.send(request("/api/state").timeout(REQUEST_TIMEOUT).GET().build(),
-                HttpResponse.BodyHandlers.ofString(StandardCharsets.UTF_8));
+        HttpResponse<String> answer;
+        try {
+            answer = client.send(request("/api/state").timeout(REQUEST_TIMEOUT).GET().build(),
+                    HttpResponse.BodyHandlers.ofString(StandardCharsets.UTF_8));
+        } catch (javax.net.ssl.SSLHandshakeException e) {
+            throw new IOException("the certificate of the server at " + server() + " is not trusted (a certificate of its own:"
+                    + " give it with --trust-cert FILE, or the dialog's Certificate): " + e.getMessage(), e);
+        }
         refused(answer.statusCode(), answer.body());
         return json(answer.body());
     }

@@ -134,9 +134,7 @@ class AttachedWindowTest {
         attach(monitor.port(), OPERATOR);
         assertEquals("WSS - attached to 127.0.0.1:" + monitor.port(), onEdt(frame::getTitle));
         try (TestRobot r1 = new TestRobot(hub.controlPort(), "127.0.0.2"); TestRobot r2 = new TestRobot(hub.controlPort(), "127.0.0.3")) {
-            r1.initAccepting("r1");
-            r2.initAccepting("r2");
-            r1.dns("r2", 0);
+            registerPair(r1, r2);
             until("the attached window shows both robots", () -> cells(table("robots")).stream().map(row -> row.get(0)).toList()
                     .equals(List.of("r1", "r2")));
             until("the pair is up", () -> stateOf("r1", "r2").equals("up"));
@@ -155,9 +153,7 @@ class AttachedWindowTest {
     @Test
     void anOperatorsRightClickOffersTheForceMenuAndAViewersNothing() throws Exception {
         try (TestRobot r1 = new TestRobot(hub.controlPort(), "127.0.0.2"); TestRobot r2 = new TestRobot(hub.controlPort(), "127.0.0.3")) {
-            r1.initAccepting("r1");
-            r2.initAccepting("r2");
-            r1.dns("r2", 0);
+            registerPair(r1, r2);
             until("the hub saw the pair", () -> !hub.snapshot().pairs().isEmpty());
             attach(monitor.port(), VIEWER);
             until("the pair is shown", () -> stateOf("r1", "r2").equals("up"));
@@ -170,9 +166,7 @@ class AttachedWindowTest {
     @Test
     void anOperatorsForceMenuForcesThePairOnTheServer() throws Exception {
         try (TestRobot r1 = new TestRobot(hub.controlPort(), "127.0.0.2"); TestRobot r2 = new TestRobot(hub.controlPort(), "127.0.0.3")) {
-            r1.initAccepting("r1");
-            r2.initAccepting("r2");
-            r1.dns("r2", 0);
+            registerPair(r1, r2);
             attach(monitor.port(), OPERATOR);
             until("the pair is shown", () -> stateOf("r1", "r2").equals("up"));
             rightClickFirstStatisticsRow();
@@ -200,6 +194,13 @@ class AttachedWindowTest {
                         && cells(table("robots")).stream().anyMatch(row -> row.get(0).equals("r1")));
             }
         }
+    }
+
+    /** r1 and r2 register, and r1 asks a port to r2: the hub sees the pair. */
+    private static void registerPair(TestRobot r1, TestRobot r2) throws Exception {
+        r1.initAccepting("r1");
+        r2.initAccepting("r2");
+        r1.dns("r2", 0);
     }
 
     /** Shows the Link statistics tab and right-clicks its first row, as a user does. */

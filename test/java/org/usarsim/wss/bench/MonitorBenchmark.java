@@ -40,7 +40,6 @@ public final class MonitorBenchmark {
 
     private static final String TOKEN = "bench-viewer-token-0123456789abcdef";
     private static final Pattern MONITOR = Pattern.compile("monitor listening on http://[^:]+:(\\d+)");
-    private static final Pattern USED = Pattern.compile("used (\\d+)K");
 
     private final AtomicLong received = new AtomicLong();
     private int monitorPort;
@@ -230,19 +229,13 @@ public final class MonitorBenchmark {
         return -1;
     }
 
+    /** The heap in use, in KiB: after a full GC, or as it is. */
     private static long heapUsedKiB(long pid, boolean gc) throws IOException, InterruptedException {
         if (gc) {
-            run("jcmd", Long.toString(pid), "GC.run");
+            return CpuRun.heapAfterGc(pid);
         }
-        Matcher matcher = USED.matcher(run("jcmd", Long.toString(pid), "GC.heap_info"));
+        Matcher matcher = CpuRun.USED.matcher(CpuRun.run("jcmd", Long.toString(pid), "GC.heap_info"));
         return matcher.find() ? Long.parseLong(matcher.group(1)) : -1;
-    }
-
-    private static String run(String... command) throws IOException, InterruptedException {
-        Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
-        String out = new String(process.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
-        process.waitFor();
-        return out;
     }
 
     private static String awaitLine(WssProcess wss, String text) throws InterruptedException {

@@ -7,7 +7,7 @@ import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 import org.usarsim.wss.hub.core.PairState;
-import org.usarsim.wss.monitor.Reading.Line;
+import org.usarsim.wss.hub.MapLines.Line;
 import org.usarsim.wss.monitor.Reading.RobotView;
 
 /** What the events tell of a change (docs/monitor.md, "Timing"): structure at once, counts when due, each kind in one event. */

@@ -1,7 +1,6 @@
 package org.usarsim.wss.monitor;
 
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -10,7 +9,8 @@ import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.hub.HubSnapshot.LinkEntry;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 import org.usarsim.wss.hub.HubSnapshot.PortEntry;
-import org.usarsim.wss.hub.core.PairState;
+import org.usarsim.wss.hub.MapLines;
+import org.usarsim.wss.hub.MapLines.Line;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Replay;
@@ -30,10 +30,6 @@ record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> li
     record RobotView(String name, String address, List<Integer> ports, double airtime, Position position, double range, boolean outOfBattery) {
     }
 
-    /** A map line: a pair of registered robots (first before second), its state, the model's strength now (dBm), its link rate (bit/s). */
-    record Line(String first, String second, PairState state, double strength, long rate) {
-    }
-
     /** The run's model: its name, the run's values of its settings, its cutoff (NaN: none) and walls. */
     record ModelView(String name, Map<String, String> settings, double cutoff, List<Wall> walls) {
     }
@@ -47,9 +43,8 @@ record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> li
     }
 
     /**
-     * The hub's snapshot with the model's answers: positions and ranges, and a line for every pair
-     * of registered robots in the state the hub's pair gives it, or for a pair the hub has not seen
-     * yet up or broken as the model allows (the map's rule, as gui.MapData gathers it).
+     * The hub's snapshot with the model's answers: positions and ranges, and the map's lines
+     * ({@link MapLines}, the window's rule).
      */
     static Reading of(HubSnapshot hub, PropagationModel model, Map<String, String> settings, Set<String> outOfBattery) {
         List<RobotView> robots = new ArrayList<>();
@@ -58,28 +53,8 @@ record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> li
             robots.add(new RobotView(name, entry.address(), entry.ports(), entry.airtime(), model.positionOf(name).orElse(null),
                     model.rangeFor(name, name), outOfBattery.contains(name)));
         }
-        Map<String, PairEntry> seen = new HashMap<>();
-        for (PairEntry pair : hub.pairs()) {
-            seen.put(pair.first() + '\n' + pair.second(), pair);
-        }
-        List<Line> lines = new ArrayList<>();
-        for (int i = 0; i < robots.size(); i++) {
-            for (int j = i + 1; j < robots.size(); j++) {
-                String a = robots.get(i).name();
-                String b = robots.get(j).name();
-                PairEntry pair = seen.get(a + '\n' + b);
-                PairState state = pair != null ? pair.state() : model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
-                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
-            }
-        }
+        List<Line> lines = MapLines.of(robots.stream().map(RobotView::name).toList(), hub, model);
         ModelView view = new ModelView(model.name(), settings, model.cutoff(), model.walls());
         return new Reading(robots, hub.ports(), hub.links(), hub.pairs(), lines, view, ReplayView.of(model.replay()));
-    }
-
-    /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */
-    private static long rateOf(PairEntry pair) {
-        long one = pair.linkRateFirstToSecond();
-        long other = pair.linkRateSecondToFirst();
-        return one > 0 && other > 0 ? Math.min(one, other) : Math.max(one, other);
     }
 }

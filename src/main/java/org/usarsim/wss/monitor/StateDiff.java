@@ -9,7 +9,7 @@ import java.util.function.Function;
 import org.usarsim.wss.hub.HubSnapshot.LinkEntry;
 import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 import org.usarsim.wss.hub.HubSnapshot.PortEntry;
-import org.usarsim.wss.monitor.Reading.Line;
+import org.usarsim.wss.hub.MapLines.Line;
 import org.usarsim.wss.monitor.Reading.ReplayView;
 import org.usarsim.wss.monitor.Reading.RobotView;
 

@@ -8,7 +8,7 @@ import org.usarsim.wss.hub.HubSnapshot.PairEntry;
 import org.usarsim.wss.hub.HubSnapshot.PortEntry;
 import org.usarsim.wss.hub.core.UdpCounts;
 import org.usarsim.wss.model.Wall;
-import org.usarsim.wss.monitor.Reading.Line;
+import org.usarsim.wss.hub.MapLines.Line;
 import org.usarsim.wss.monitor.Reading.ModelView;
 import org.usarsim.wss.monitor.Reading.ReplayView;
 import org.usarsim.wss.monitor.Reading.RobotView;

@@ -196,6 +196,36 @@ class AttachedWindowTest {
         }
     }
 
+    /** File > Attach...: the dialog's URL and token, OK, and a new window attached to the server; the token not remembered unless ticked. */
+    @Test
+    void fileAttachAsksAndOpensAnAttachedWindow() throws Exception {
+        WindowPreferences stored = new WindowPreferences(preferences.node("window"));
+        javax.swing.SwingUtilities.invokeLater(() -> Attaching.fromMenu(null, stored)); // the dialog is modal
+        until("the dialog shows", () -> Gui.showing("Attach to a WSS").size() == 1);
+        String url = "http://127.0.0.1:" + monitor.port();
+        run(() -> {
+            Window dialog = Gui.showing("Attach to a WSS").get(0);
+            find(dialog, javax.swing.JTextField.class, AttachDialog.URL).setText(url);
+            find(dialog, javax.swing.JPasswordField.class, AttachDialog.TOKEN).setText(VIEWER);
+            find(dialog, JButton.class, DialogParts.OK).doClick();
+        });
+        String title = "WSS - attached to 127.0.0.1:" + monitor.port();
+        until("the attached window opens", () -> attachedFrame(title) != null);
+        assertEquals(url, stored.attachUrl());
+        assertEquals(null, stored.attachToken(url), "not ticked: the token is not stored");
+        run(() -> attachedFrame(title).dispatchEvent(new WindowEvent(attachedFrame(title), WindowEvent.WINDOW_CLOSING)));
+        until("the attached window closed", () -> attachedFrame(title) == null);
+    }
+
+    private static JFrame attachedFrame(String title) {
+        for (Window window : Window.getWindows()) {
+            if (window.isShowing() && window instanceof JFrame shown && title.equals(shown.getTitle())) {
+                return shown;
+            }
+        }
+        return null;
+    }
+
     /** r1 and r2 register, and r1 asks a port to r2: the hub sees the pair. */
     private static void registerPair(TestRobot r1, TestRobot r2) throws Exception {
         r1.initAccepting("r1");

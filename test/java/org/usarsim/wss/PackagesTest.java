@@ -56,4 +56,9 @@ class PackagesTest {
         assertEquals(List.of(), importing("ros", "hub", "world", "model", "protocol", "net", "recording", "replay", "shaping",
                 "gui", "app"));
     }
+
+    @Test
+    void theMonitorKnowsNeitherTheWindowNorTheCommandLine() throws IOException {
+        assertEquals(List.of(), importing("monitor", "gui", "app"));
+    }
 }

@@ -75,4 +75,19 @@ class OptionsParserTest {
         assertTrue(help.contains("\n                      for this session\n  --world FILE        instead of the WSS"), help);
         assertTrue(help.endsWith("\n  --help, -h          print this and every property of --config FILE, and exit"), help);
     }
+
+    @Test
+    void attachTakesAUrlATokenFileAndACertificateAndNothingElse() throws Exception {
+        assertEquals(new Options.Attach("https://wss.lan:8443", Path.of("t"), Path.of("c.pem")),
+                OptionsParser.parse("--attach", "https://wss.lan:8443", "--token-file", "t", "--trust-cert", "c.pem"));
+        assertEquals(new Options.Attach("http://127.0.0.1:9000", null, null), OptionsParser.parse("--attach", "http://127.0.0.1:9000"));
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--attach", "https://a:1", "--start"))
+                .getMessage().startsWith("--attach only opens a window attached to a running WSS"));
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--token-file", "t"))
+                .getMessage().startsWith("--token-file and --trust-cert are for the window --attach opens"));
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--attach", "wss.lan:8443"))
+                .getMessage().startsWith("--attach wss.lan:8443 is not a monitor's URL"));
+        assertTrue(assertThrows(OptionsParser.Mistake.class, () -> OptionsParser.parse("--attach", "https://TOKEN@wss.lan"))
+                .getMessage().startsWith("--attach https://TOKEN@wss.lan is not"), "no token in the URL");
+    }
 }

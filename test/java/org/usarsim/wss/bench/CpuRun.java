@@ -18,7 +18,7 @@ import org.usarsim.wss.model.simulator.ReportedRobot;
  */
 final class CpuRun {
 
-    private static final Pattern USED = Pattern.compile("used (\\d+)K");
+    static final Pattern USED = Pattern.compile("used (\\d+)K");
 
     private final int robots;
     private final int seconds;
@@ -119,13 +119,13 @@ final class CpuRun {
     }
 
     /** The heap in use after a full GC, by jcmd, in KiB. */
-    private static long heapAfterGc(long pid) throws IOException, InterruptedException {
+    static long heapAfterGc(long pid) throws IOException, InterruptedException {
         run("jcmd", Long.toString(pid), "GC.run");
         Matcher matcher = USED.matcher(run("jcmd", Long.toString(pid), "GC.heap_info"));
         return matcher.find() ? Long.parseLong(matcher.group(1)) : -1;
     }
 
-    private static String run(String... command) throws IOException, InterruptedException {
+    static String run(String... command) throws IOException, InterruptedException {
         Process process = new ProcessBuilder(command).redirectErrorStream(true).start();
         String out = new String(process.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
         process.waitFor();

@@ -8,6 +8,7 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
+import java.net.InetAddress;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
@@ -24,6 +25,7 @@ import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.PluginFolder;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.monitor.MonitorConfig;
 import org.usarsim.wss.model.ModelSettings;
 
 /**
@@ -247,6 +249,23 @@ public final class ConfigFile {
     /** The hub's configuration: the server's settings as {@link HubConfigBuilder} builds them. */
     HubConfig hubConfig() {
         return new HubConfigBuilder(values).build();
+    }
+
+    /** The wss.monitor.* settings (docs/monitor.md); checked against each other when the monitor opens. */
+    MonitorConfig monitorConfig() {
+        InetAddress bind;
+        try {
+            bind = InetAddress.getByName(get(MonitorConfig.BIND_ADDRESS)); // its rule checked it is an address
+        } catch (java.net.UnknownHostException e) {
+            throw new IllegalArgumentException(MonitorConfig.BIND_ADDRESS + ": " + e.getMessage(), e);
+        }
+        return new MonitorConfig(Integer.parseInt(get(MonitorConfig.PORT)), bind,
+                path(get(MonitorConfig.TOKENS)), Integer.parseInt(get(MonitorConfig.MAX_CLIENTS)), path(get(MonitorConfig.KEYSTORE)),
+                path(get(MonitorConfig.KEYSTORE_PASSWORD_FILE)));
+    }
+
+    private static Path path(String value) {
+        return value == null || value.isBlank() ? null : Path.of(value.strip());
     }
 
     /**

@@ -10,6 +10,7 @@ import org.usarsim.wss.hub.core.FixedPort;
 import org.usarsim.wss.model.ModelCatalog;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
+import org.usarsim.wss.monitor.MonitorConfig;
 import org.usarsim.wss.protocol.ControlPort;
 import org.usarsim.wss.shaping.JitterConfig;
 import org.usarsim.wss.shaping.JitterDistribution;
@@ -108,7 +109,19 @@ final class ConfigKeys {
                     .help("A fixed UDP port forgets a sender (and closes its socket toward the target) after this long without"
                             + " a datagram either way"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
-                    .help("How much the log says; FINE adds every control command and its reply"));
+                    .help("How much the log says; FINE adds every control command and its reply"),
+            Setting.integer(MonitorConfig.PORT, "Monitor port", 0).from(-1).to(65535).noun("a port number").note("0: no monitor, -1: any free port")
+                    .help("The monitor endpoint (docs/monitor.md): state, events, metrics and the operator's commands over HTTP(S)"),
+            Setting.address(MonitorConfig.BIND_ADDRESS, "Monitor bind address", MonitorConfig.DEFAULT_BIND_ADDRESS)
+                    .help("The address the monitor listens on; one other machines reach needs wss.monitor.keystore (TLS)"),
+            Setting.text(MonitorConfig.TOKENS, "Monitor tokens", "").orEmpty("none").noun("a file path")
+                    .help("The monitor's token file: lines 'viewer TOKEN' / 'operator TOKEN', readable by its owner only"),
+            Setting.integer(MonitorConfig.MAX_CLIENTS, "Monitor streams", MonitorConfig.DEFAULT_MAX_CLIENTS).from(1).to(1024)
+                    .help("The most event streams (GET /api/events) open at once; the next is answered 503"),
+            Setting.text(MonitorConfig.KEYSTORE, "Monitor keystore", "").orEmpty("none: plain HTTP, loopback only").noun("a file path")
+                    .help("A PKCS12 keystore: the monitor serves HTTPS with its key"),
+            Setting.text(MonitorConfig.KEYSTORE_PASSWORD_FILE, "Monitor keystore password", "").orEmpty("none").noun("a file path")
+                    .help("A file, readable by its owner only, whose first line is the keystore's password"));
 
     private ConfigKeys() {
     }

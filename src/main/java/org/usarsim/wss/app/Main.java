@@ -108,6 +108,9 @@ public final class Main {
         if (options instanceof Options.World world) {
             return WorldServerRun.run(out, world);
         }
+        if (options instanceof Options.Attach attach) {
+            return AttachRun.run(out, attach);
+        }
         if (options instanceof Options.PrintPorts printPorts) {
             return printPorts(out, err, printPorts.config());
         }
@@ -208,6 +211,7 @@ public final class Main {
         } catch (Server.StartFailure e) {
             throw new RunFailure(CANNOT_START, e.getMessage());
         }
+        server.monitor(configFile.monitorConfig());
         // Before anything listens: a SIGTERM right after the start line must still exit 0.
         try (StopSignal stop = new StopSignal()) {
             try {

@@ -29,6 +29,14 @@ sealed interface Options {
     record PrintPorts(Path config) implements Options {
     }
 
+    /**
+     * {@code --attach URL}: the window attached to a WSS's monitor endpoint (docs/monitor.md); the
+     * token read from {@code tokenFile} (null: asked in a dialog), the server's certificate trusted
+     * alone when {@code trustCert} is given (null: the JDK's default trust store).
+     */
+    record Attach(String url, Path tokenFile, Path trustCert) implements Options {
+    }
+
     /** {@code --version}: print the version. */
     record Version() implements Options {
     }

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.stream.Collectors;
+import org.usarsim.wss.gui.Attaching;
 import org.usarsim.wss.world.RosbridgeServer;
 
 /**
@@ -51,6 +52,12 @@ final class OptionsParser {
             Flag.valued("--out", "FILE", "a file", "where --export-world writes the world file"),
             Flag.toggle("--print-ports", "print every fixed port of --config FILE, one a line, and exit: its protocol,\n"
                     + "FROM->TO:PORT, the WSS's number and the robots' addresses (docs/fixed-ports.md)"),
+            Flag.valued("--attach", "URL", "a URL", "open a window attached to a running WSS's monitor endpoint,\n"
+                    + "https://host:port or http://host:port (docs/monitor.md)"),
+            Flag.valued("--token-file", "FILE", "a file", "the monitor token --attach sends, read from this file (without it,\n"
+                    + "the window asks); never a token on the command line"),
+            Flag.valued("--trust-cert", "FILE", "a file", "--attach over https trusts only this certificate (PEM, as\n"
+                    + "keytool -exportcert -rfc writes it), not the JDK's trust store"),
             Flag.toggle("--version", "print the version and exit"),
             Flag.toggle("--help", "print this and every property of --config FILE, and exit", "-h"));
 
@@ -99,6 +106,7 @@ final class OptionsParser {
                 + "       " + command + " --world FILE [--port N] [--bind ADDRESS] [--rosbridge PORT [--ros-rate HZ]]\n"
                 + "       " + command + " --export-world RUN.rec [--out FILE]\n"
                 + "       " + command + " --print-ports [--config FILE]\n"
+                + "       " + command + " --attach URL [--token-file FILE] [--trust-cert FILE]\n"
                 + "       " + command + " --version | --help";
     }
 
@@ -171,6 +179,10 @@ final class OptionsParser {
         if (printPorts) {
             return new Options.PrintPorts(config);
         }
+        Options attach = attach(given);
+        if (attach != null) {
+            return attach;
+        }
         if (export != null && (headless || config != null || start || world != null || port != null || bind != null
                 || rosbridge != null)) {
             throw new Mistake("--export-world only writes a world file: no --headless, --config, --start, --world, --port, --bind"
@@ -201,6 +213,25 @@ final class OptionsParser {
                     rosRate == null ? RosbridgeServer.DEFAULT_RATE_HZ : rate(rosRate));
         }
         return new Options.Serve(headless, start, config);
+    }
+
+    /** {@code --attach URL [--token-file FILE] [--trust-cert FILE]} alone, else null when not asked. */
+    private static Options attach(Map<String, String> given) throws Mistake {
+        String url = given.get("--attach");
+        if (url == null) {
+            if (given.containsKey("--token-file") || given.containsKey("--trust-cert")) {
+                throw new Mistake("--token-file and --trust-cert are for the window --attach opens: they need --attach URL\n" + USAGE);
+            }
+            return null;
+        }
+        if (given.keySet().stream().anyMatch(key -> !List.of("--attach", "--token-file", "--trust-cert").contains(key))) {
+            throw new Mistake("--attach only opens a window attached to a running WSS: no option but --token-file and --trust-cert\n"
+                    + USAGE);
+        }
+        if (!Attaching.isMonitorUrl(url)) {
+            throw new Mistake("--attach " + url + " is not a monitor's URL: https://host:port or http://host:port\n" + USAGE);
+        }
+        return new Options.Attach(url, path(given, "--token-file"), path(given, "--trust-cert"));
     }
 
     private static Path path(Map<String, String> given, String key) {

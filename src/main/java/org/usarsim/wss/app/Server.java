@@ -15,6 +15,10 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.simulator.Shadowing;
+import org.usarsim.wss.monitor.MonitorConfig;
+import org.usarsim.wss.monitor.MonitorServer;
+import org.usarsim.wss.monitor.MonitorSetupException;
+import org.usarsim.wss.monitor.Watched;
 import org.usarsim.wss.recording.Recorder;
 import org.usarsim.wss.shaping.ShapingConfig;
 
@@ -52,10 +56,15 @@ final class Server implements AutoCloseable {
     private final Hub hub;
     private final CsvEventLog eventLog;
     private final Recorder recorder;
+    /** The run's values of the model's settings (the monitor shows them). */
+    private final Map<String, String> modelValues;
+    private MonitorConfig monitorConfig = MonitorConfig.OFF;
+    private MonitorServer monitor;
 
-    private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog, Recorder recorder) {
+    private Server(HubConfig config, PropagationModel model, CsvEventLog eventLog, Recorder recorder, Map<String, String> modelValues) {
         this.config = config;
         this.model = model;
+        this.modelValues = modelValues;
         this.hub = new Hub(config, model, HubClock.SYSTEM);
         this.eventLog = eventLog;
         this.recorder = recorder;
@@ -100,7 +109,11 @@ final class Server implements AutoCloseable {
                 throw new StartFailure("cannot record the run to " + record + ": " + e);
             }
         }
-        return new Server(config, model, eventLog, recorder);
+        Map<String, String> modelValues = new LinkedHashMap<>();
+        for (Setting setting : model.settings()) {
+            modelValues.put(setting.key(), values.getString(setting.key(), setting.defaultValue()));
+        }
+        return new Server(config, model, eventLog, recorder, modelValues);
     }
 
     /** The settings of the model's random draws it declares (shadowing.*, radio.seed), with this run's values: the event log's SETTING lines. */
@@ -161,15 +174,22 @@ final class Server implements AutoCloseable {
      * recorded (docs/replay.md, "The file").
      */
     void start() throws StartFailure {
+        MonitorServer opened = openMonitor();
         try {
             hub.start();
         } catch (IOException e) {
+            closeMonitor(opened);
             endRecords(false);
             throw new StartFailure("cannot listen for robots on " + config.bindAddress().getHostAddress() + ":"
                     + config.controlPort() + ": " + e.getMessage());
         } catch (ModelStartException | RuntimeException e) {
+            closeMonitor(opened);
             endRecords(false);
             throw new StartFailure(model.name() + " did not start: " + e.getMessage(), e instanceof ModelInputException);
+        }
+        if (opened != null) {
+            opened.start();
+            monitor = opened;
         }
         if (recorder != null) {
             recorder.started();
@@ -182,6 +202,39 @@ final class Server implements AutoCloseable {
                         + (shaping.jitter().ms() > 0 ? ", jitter " + shaping.jitter().ms() + " ms " + shaping.jitter().distribution().word()
                                 + (shaping.jitter().reorder() ? ", datagrams reordered" : "") + ", seed " + shaping.jitter().seed() : "")
                 : "links are not shaped (wss.shaping = off): forwarded as fast as the sockets go");
+    }
+
+    /** The run's monitor endpoint (docs/monitor.md) from these settings; off unless its port is set. Before {@link #start}. */
+    void monitor(MonitorConfig settings) {
+        monitorConfig = settings;
+    }
+
+    /** The monitor's port, or -1 when none runs. */
+    int monitorPort() {
+        return monitor == null ? -1 : monitor.port();
+    }
+
+    /** Reads the monitor's tokens (and keystore) and binds its port, before the hub listens; null when off. */
+    private MonitorServer openMonitor() throws StartFailure {
+        if (!monitorConfig.on()) {
+            return null;
+        }
+        try {
+            return MonitorServer.open(monitorConfig, new Watched(hub, model, modelValues, config.shaping(), config.bindAddress().getHostAddress()));
+        } catch (MonitorSetupException e) {
+            endRecords(false);
+            throw new StartFailure(e.getMessage(), true);
+        } catch (IOException e) {
+            endRecords(false);
+            throw new StartFailure("cannot listen for the monitor on " + monitorConfig.bindAddress().getHostAddress() + ":"
+                    + monitorConfig.port() + ": " + e.getMessage());
+        }
+    }
+
+    private static void closeMonitor(MonitorServer opened) {
+        if (opened != null) {
+            opened.close();
+        }
     }
 
     /** Closes the event log and the recording (what this run writes besides its sockets); the recording's file is deleted unless {@code kept}. */
@@ -207,6 +260,7 @@ final class Server implements AutoCloseable {
     /** Closes every socket, the event log and the recording. */
     @Override
     public void close() {
+        closeMonitor(monitor);
         try {
             hub.close();
         } finally {

@@ -118,4 +118,24 @@ final class ControlBar extends JPanel {
         start.setEnabled(stopped || state == State.RUNNING);
         configure.setEnabled(configurable);
     }
+
+    /** Event thread. An attached window: the server's own port, model, logging, Start / Stop and dialogs, shown read-only. */
+    void serversOwn(String title) {
+        String tip = "The server's own: the window " + title.substring(title.indexOf(" - ") + 3) + " shows it and cannot change it";
+        for (javax.swing.JComponent part : List.of(port, eventLog, record, start, model, configure, shaping)) {
+            part.setEnabled(false);
+            part.setToolTipText(tip);
+        }
+        start.setText("Stop");
+        shapingSummary.setText("Link shaping: the server's");
+    }
+
+    /** Event thread. An attached window: the server's model and control port (0: not known). */
+    void showServer(String modelName, int controlPort) {
+        port.setText(controlPort > 0 ? String.valueOf(controlPort) : "");
+        if (model.getItemCount() != 1 || !modelName.equals(model.getItemAt(0))) {
+            model.removeAllItems();
+            model.addItem(modelName);
+        }
+    }
 }

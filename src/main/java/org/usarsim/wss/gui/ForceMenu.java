@@ -33,17 +33,30 @@ final class ForceMenu {
         thread.setDaemon(true);
         return thread;
     });
-    private final Supplier<Servers.Running> running;
+    private final Supplier<PairControls> running;
+    private final boolean offered;
 
     /** @param running the server that runs now, or null when none does */
-    ForceMenu(Supplier<Servers.Running> running) {
-        this.running = running;
+    ForceMenu(Supplier<PairControls> running) {
+        this(running, true);
     }
 
-    /** Event thread: the menu for the pair; its items are disabled when no server runs. */
+    /**
+     * @param running the controls of the server shown now, or null when none runs
+     * @param offered whether the window offers the menu at all (an attached window: only with an operator's token)
+     */
+    ForceMenu(Supplier<PairControls> running, boolean offered) {
+        this.running = running;
+        this.offered = offered;
+    }
+
+    /** Event thread: the menu for the pair, its items disabled when no server runs; null when the window offers none. */
     JPopupMenu menuFor(String robotA, String robotB) {
+        if (!offered) {
+            return null;
+        }
         JPopupMenu menu = new JPopupMenu(robotA + " - " + robotB);
-        Servers.Running server = running.get();
+        PairControls server = running.get();
         String pair = robotA + " - " + robotB;
         menu.add(item(DOWN + " " + pair, server, () -> server.force(robotA, robotB, Force.DOWN)));
         menu.add(item(UP + " " + pair, server, () -> server.force(robotA, robotB, Force.UP)));
@@ -66,7 +79,7 @@ final class ForceMenu {
         return menu;
     }
 
-    private JMenuItem item(String text, Servers.Running server, Runnable action) {
+    private JMenuItem item(String text, PairControls server, Runnable action) {
         JMenuItem item = new JMenuItem(text);
         item.setEnabled(server != null);
         item.addActionListener(e -> call(text, action));

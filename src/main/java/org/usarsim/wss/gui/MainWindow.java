@@ -11,10 +11,10 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
-import java.util.logging.Level;
 import java.util.logging.Logger;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
+import javax.swing.JLabel;
 import javax.swing.JMenu;
 import javax.swing.JMenuBar;
 import javax.swing.JMenuItem;
@@ -26,7 +26,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.SwingWorker;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
-import org.usarsim.wss.Version;
+import org.usarsim.wss.attach.MonitorClient;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -49,24 +49,29 @@ public final class MainWindow {
     static final int REFRESH_MS = 250;
     private static final Logger LOG = Logger.getLogger(MainWindow.class.getName());
 
-    private final JFrame frame = new JFrame(TITLE + " " + Version.current());
+    private final JFrame frame = new JFrame(TITLE);
     private final ControlBar bar;
     private final RobotsPanel robots = new RobotsPanel();
     private final PortsPanel ports = new PortsPanel();
     private final LinksPanel links = new LinksPanel();
-    private final ForceMenu forceMenu = new ForceMenu(() -> this.running);
-    private final StatsPanel stats = new StatsPanel(forceMenu);
+    private final ForceMenu forceMenu;
+    private final StatsPanel stats;
     private final LogPanel log = new LogPanel();
-    private final MapPanel map = new MapPanel(forceMenu);
+    /** Above the tabs while an attached window's connection is lost. */
+    private final JLabel banner = new JLabel();
+    private final MapPanel map;
     /** The time bar under the tabs, shown while the running model replays a recording. */
     private final ReplayBar replayBar = new ReplayBar();
-    private final NetworkView view = new NetworkView();
+    /** What the window shows and steers through; {@link #local} too when the server is the window's own, else null. */
+    private final WindowSource source;
+    private final LocalSource local;
+    /** The replay the time bar follows (null: none). */
+    private Replay replayShown;
     private final Timer timer;
     private final Servers servers;
     private final Map<String, ModelProvider> models = new LinkedHashMap<>();
     private final WindowPreferences windowPreferences;
     private final ModelPreferences modelPreferences;
-    private final WindowLog windowLog;
     private final Runnable onClosed;
     /** What each model's next start uses, and its dialog shows: the stored settings, a --config file's over them. */
     private final NextRunValues nextRunValues;
@@ -78,17 +83,33 @@ public final class MainWindow {
     private String askedPort;
     private boolean closing;
 
-    private MainWindow(Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
-            ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
+    private MainWindow(WindowSource source, Servers servers, List<ModelProvider> modelList, WindowPreferences windowPreferences,
+            ModelPreferences modelPreferences, Launch launch, Runnable onClosed) {
+        this.source = source;
+        this.local = source instanceof LocalSource own ? own : null;
         this.servers = servers;
+        forceMenu = new ForceMenu(source::controls, source.offersForce());
+        stats = new StatsPanel(forceMenu);
+        map = new MapPanel(forceMenu);
+        frame.setTitle(source.title());
         modelList.forEach(model -> models.put(model.name(), model));
         this.windowPreferences = windowPreferences;
         this.modelPreferences = modelPreferences;
-        this.windowLog = windowLog;
         this.onClosed = onClosed;
         this.nextRunValues = new NextRunValues(modelPreferences, launch.modelValues());
         this.nextRunShaping = new NextRunShaping(windowPreferences, launch.shapingValues());
         bar = new ControlBar(List.copyOf(models.keySet()));
+        timer = new Timer(REFRESH_MS, e -> refresh());
+        if (local != null) {
+            ownServer(launch);
+        } else {
+            bar.serversOwn(source.title());
+        }
+        layOut();
+    }
+
+    /** The bar of a window that runs its server: the launch's or the stored values, Start / Stop and the dialogs. */
+    private void ownServer(Launch launch) {
         bar.port.setText(launch.port() != null ? launch.port() : windowPreferences.port());
         bar.eventLog.setSelected(launch.eventLog() != null ? launch.eventLog() : windowPreferences.eventLog());
         bar.record.setSelected(launch.record() != null ? launch.record() : windowPreferences.record());
@@ -103,8 +124,6 @@ public final class MainWindow {
         bar.configure.addActionListener(e -> configure());
         bar.shaping.addActionListener(e -> shaping());
         bar.showShaping(nextRunShaping.config());
-        timer = new Timer(REFRESH_MS, e -> refresh());
-        layOut();
         showState();
     }
 
@@ -115,12 +134,27 @@ public final class MainWindow {
      */
     public static MainWindow open(Servers servers, List<ModelProvider> models, WindowPreferences windowPreferences,
             ModelPreferences modelPreferences, WindowLog windowLog, Launch launch, Runnable onClosed) {
-        MainWindow window = new MainWindow(servers, models, windowPreferences, modelPreferences, windowLog, launch, onClosed);
+        MainWindow window = new MainWindow(new LocalSource(windowLog), servers, models, windowPreferences, modelPreferences, launch,
+                onClosed);
         window.frame.setVisible(true);
         window.timer.start();
         if (launch.start()) {
             SwingUtilities.invokeLater(window.bar.start::doClick);
         }
+        return window;
+    }
+
+    /**
+     * Builds and shows a window attached to a server's monitor endpoint (docs/monitor.md): its
+     * tables, map, log and time bar from the stream, the force menu with an operator's token, the
+     * bar read-only. {@code onClosed} runs once it is closed. Event thread.
+     */
+    public static MainWindow openAttached(MonitorClient client, WindowPreferences windowPreferences, Runnable onClosed) {
+        AttachedSource attached = new AttachedSource(client);
+        MainWindow window = new MainWindow(attached, null, List.of(), windowPreferences, null, Launch.STORED, onClosed);
+        window.frame.setVisible(true);
+        window.timer.start();
+        attached.start(window::refresh);
         return window;
     }
 
@@ -157,7 +191,15 @@ public final class MainWindow {
         center.setBorder(null);
         JPanel content = new JPanel(new BorderLayout(0, 8));
         content.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
-        content.add(bar, BorderLayout.NORTH);
+        JPanel top = new JPanel(new BorderLayout(0, 4));
+        top.add(bar, BorderLayout.NORTH);
+        top.add(banner, BorderLayout.SOUTH);
+        banner.setName("banner");
+        banner.setOpaque(true);
+        banner.setBackground(new java.awt.Color(0xFFF3C4));
+        banner.setBorder(BorderFactory.createEmptyBorder(4, 6, 4, 6));
+        banner.setVisible(false);
+        content.add(top, BorderLayout.NORTH);
         content.add(center, BorderLayout.CENTER);
         frame.setContentPane(content);
         frame.setJMenuBar(menuBar());
@@ -172,8 +214,17 @@ public final class MainWindow {
         }
     }
 
-    /** The Help menu, with About. */
+    /** File, with Attach..., and Help, with About. */
     private JMenuBar menuBar() {
+        JMenuItem attach = new JMenuItem("Attach...");
+        attach.setName("attach");
+        attach.setMnemonic(KeyEvent.VK_A);
+        attach.setToolTipText("Open a window attached to a WSS that runs elsewhere (docs/monitor.md)");
+        attach.addActionListener(e -> Attaching.fromMenu(frame, windowPreferences));
+        JMenu file = new JMenu("File");
+        file.setName("file");
+        file.setMnemonic(KeyEvent.VK_F);
+        file.add(attach);
         JMenuItem about = new JMenuItem("About WSS");
         about.setName("about");
         about.setMnemonic(KeyEvent.VK_A);
@@ -183,6 +234,7 @@ public final class MainWindow {
         help.setMnemonic(KeyEvent.VK_H);
         help.add(about);
         JMenuBar menus = new JMenuBar();
+        menus.add(file);
         menus.add(help);
         return menus;
     }
@@ -202,19 +254,35 @@ public final class MainWindow {
     }
 
     private void refresh() {
-        HubSnapshot snapshot = view.poll();
+        HubSnapshot snapshot = source.poll();
         if (snapshot != null) {
             robots.show(snapshot.robots());
             ports.show(snapshot.ports());
             links.show(snapshot.links());
             stats.show(snapshot.pairs());
         }
-        MapData mapData = view.pollMap();
+        MapData mapData = source.pollMap();
         if (mapData != null) {
             map.show(mapData);
         }
-        log.append(windowLog.drain());
+        log.append(source.drainLog());
+        String lost = source.banner();
+        banner.setVisible(lost != null);
+        banner.setText(lost == null ? "" : lost);
+        if (snapshot != null && source instanceof AttachedSource attached) {
+            bar.showServer(attached.last().model(), attached.last().controlPort());
+        }
+        showReplay();
         replayBar.follow();
+    }
+
+    /** The time bar shows the source's replay, when it has one. */
+    private void showReplay() {
+        Replay now = source.replay();
+        if (now != replayShown) {
+            replayShown = now;
+            replayBar.attach(now);
+        }
     }
 
     private void startOrStop() {
@@ -236,7 +304,7 @@ public final class MainWindow {
         new SwingWorker<Servers.Running, Void>() {
             @Override
             protected Servers.Running doInBackground() throws Exception {
-                return servers.start(port, model, values, eventLog, record, shaping, view);
+                return servers.start(port, model, values, eventLog, record, shaping, local.listener());
             }
 
             @Override
@@ -258,8 +326,8 @@ public final class MainWindow {
                 windowPreferences.storeRun(port, model.name(), eventLog, record);
                 askedPort = port;
                 bar.port.setText(String.valueOf(running.port()));
-                view.attach(running, running.model());
-                replayBar.attach(replayOf(running.model()));
+                local.started(running);
+                showReplay();
                 setState(ControlBar.State.RUNNING);
                 if (closing) {
                     stop();
@@ -275,20 +343,11 @@ public final class MainWindow {
                 JOptionPane.ERROR_MESSAGE));
     }
 
-    /** The model's replay controls, or null when it replays nothing (or fails to say). */
-    private static Replay replayOf(PropagationModel model) {
-        try {
-            return model.replay().orElse(null);
-        } catch (RuntimeException e) {
-            LOG.log(Level.WARNING, model.name() + " failed to give its replay controls: " + e, e);
-            return null;
-        }
-    }
-
     private void stop() {
         Servers.Running stopping = running;
         running = null;
-        replayBar.detach();
+        local.stopping();
+        showReplay();
         setState(ControlBar.State.STOPPING);
         new SwingWorker<Void, Void>() {
             @Override
@@ -299,7 +358,7 @@ public final class MainWindow {
 
             @Override
             protected void done() {
-                view.detach();
+                local.stopped();
                 bar.port.setText(askedPort);
                 setState(ControlBar.State.STOPPED);
                 if (closing) {
@@ -341,7 +400,7 @@ public final class MainWindow {
     private void finishClosing() {
         windowPreferences.storeBounds(frame.getBounds());
         timer.stop();
-        view.close();
+        source.close();
         forceMenu.close();
         frame.dispose();
         onClosed.run();

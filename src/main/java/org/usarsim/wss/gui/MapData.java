@@ -2,9 +2,8 @@ package org.usarsim.wss.gui;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.HashMap;
-import java.util.Map;
 import org.usarsim.wss.hub.HubSnapshot;
+import org.usarsim.wss.hub.MapLines;
 import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
@@ -39,29 +38,16 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
             String name = entry.name();
             robots.add(new Robot(name, model.positionOf(name).orElse(null), model.rangeFor(name, name)));
         }
-        Map<String, HubSnapshot.PairEntry> seen = new HashMap<>();
-        for (HubSnapshot.PairEntry pair : hub.pairs()) {
-            seen.put(pair.first() + '\n' + pair.second(), pair);
-        }
         List<Line> lines = new ArrayList<>();
-        for (int i = 0; i < robots.size(); i++) {
-            for (int j = i + 1; j < robots.size(); j++) {
-                String a = robots.get(i).name();
-                String b = robots.get(j).name();
-                HubSnapshot.PairEntry pair = seen.get(a + '\n' + b);
-                PairState state = pair != null ? pair.state()
-                        : model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
-                lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
-            }
+        for (MapLines.Line line : MapLines.of(robots.stream().map(Robot::name).toList(), hub, model)) {
+            lines.add(new Line(line.first(), line.second(), line.state(), line.strength(), line.rate()));
         }
         return new MapData(robots, lines, model.walls(), model.cutoff());
     }
 
-    /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */
+    /** A pair's link rate for the map ({@link MapLines#rateOf}). */
     static long rateOf(HubSnapshot.PairEntry pair) {
-        long one = pair.linkRateFirstToSecond();
-        long other = pair.linkRateSecondToFirst();
-        return one > 0 && other > 0 ? Math.min(one, other) : Math.max(one, other);
+        return MapLines.rateOf(pair);
     }
 
     /** A registered robot; {@code position} null when the model does not know it. */

@@ -1,7 +1,5 @@
 package org.usarsim.wss.gui;
 
-import org.usarsim.wss.hub.core.Force;
-import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
@@ -29,8 +27,8 @@ public interface Servers {
     Running start(String port, ModelProvider model, ModelSettings values, boolean eventLog, boolean record, ShapingConfig shaping,
             WssEventListener listener) throws Exception;
 
-    /** A server that runs. */
-    interface Running {
+    /** A server that runs; its pairs forced and released as {@link PairControls} says (takes the hub's lock: never on the event thread). */
+    interface Running extends PairControls {
 
         /** The control port it listens on (the one the OS chose when asked for 0). */
         int port();
@@ -40,21 +38,6 @@ public interface Servers {
 
         /** Its robots, ports and links at one instant (takes the hub's lock briefly: never on the event thread). */
         HubSnapshot snapshot();
-
-        /** Forces the pair down or up until {@link #release} (takes the hub's lock: never on the event thread). */
-        default void force(String robotA, String robotB, Force force) {
-            force(robotA, robotB, force, RatePin.NONE);
-        }
-
-        /**
-         * As {@link #force(String, String, Force)}, up with the pair's rate and delay pinned
-         * ({@link RatePin#NONE}: nothing pinned), as {@code FORCE ... {Rate r} {Delay d}} does
-         * (docs/shaping.md). Never on the event thread.
-         */
-        void force(String robotA, String robotB, Force force, RatePin pin);
-
-        /** Gives the pair back to the model (never on the event thread). */
-        void release(String robotA, String robotB);
 
         /** Stops it as SIGTERM does: every socket closed, the event log and the recording closed. */
         void stop();

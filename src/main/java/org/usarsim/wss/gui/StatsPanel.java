@@ -53,8 +53,12 @@ final class StatsPanel extends FilteredTablePanel<PairEntry> {
                 "54 Mbit/s", "999", "999", "999", "100.0", "0/0/0/0 | 0/0/0/0", "target refused");
         // Counts of any size: the column grows to its widest (and the table scrolls sideways) rather than cut them.
         fitsContent(UDP_COLUMN);
-        onRightClick((pair, click) -> forceMenu.menuFor(pair.first(), pair.second())
-                .show(click.getComponent(), click.getX(), click.getY()));
+        onRightClick((pair, click) -> {
+            javax.swing.JPopupMenu menu = forceMenu.menuFor(pair.first(), pair.second());
+            if (menu != null) {
+                menu.show(click.getComponent(), click.getX(), click.getY());
+            }
+        });
     }
 
     /**

@@ -116,6 +116,33 @@ public final class WindowPreferences {
         flush();
     }
 
+    /** The monitor's URL File > Attach... last used ("" the first time). */
+    public String attachUrl() {
+        return node.get("attach.url", "");
+    }
+
+    /** The certificate file the last attach trusted ("" none: the JDK's trust store). */
+    public String attachCert() {
+        return node.get("attach.cert", "");
+    }
+
+    /** The token remembered for {@link #attachUrl} (only when the user ticked it), else null. */
+    public String attachToken(String url) {
+        return url.equals(attachUrl()) ? node.get("attach.token", null) : null;
+    }
+
+    /** Stores the URL and certificate of an attach; the token too when {@code remember}, else forgets any stored one. */
+    void storeAttach(String url, String cert, String token, boolean remember) {
+        node.put("attach.url", url);
+        node.put("attach.cert", cert);
+        if (remember) {
+            node.put("attach.token", token);
+        } else {
+            node.remove("attach.token");
+        }
+        flush();
+    }
+
     private void flush() {
         try {
             node.flush();

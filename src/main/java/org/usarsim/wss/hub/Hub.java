@@ -1,6 +1,7 @@
 package org.usarsim.wss.hub;
 
 import java.io.IOException;
+import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.SocketChannel;
 import java.util.ArrayList;
@@ -19,6 +20,7 @@ import org.usarsim.wss.hub.tcp.ControlListener;
 import org.usarsim.wss.hub.tcp.Descriptors;
 import org.usarsim.wss.hub.tcp.KeepAlive;
 import org.usarsim.wss.hub.tcp.Link;
+import org.usarsim.wss.hub.tcp.OperatorCommands;
 import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.udp.UdpRelay;
 import org.usarsim.wss.model.ModelStartException;
@@ -26,6 +28,10 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.RobotLinkModel;
 import org.usarsim.wss.model.RobotPair;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.protocol.Command;
+import org.usarsim.wss.protocol.CommandParser;
+import org.usarsim.wss.protocol.ProtocolException;
+import org.usarsim.wss.protocol.Replies;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -224,6 +230,27 @@ public final class Hub implements AutoCloseable {
     /** Gives the pair back to the model ({@link ControlSide#release}). */
     public void release(String robotA, String robotB) {
         controlSide.release(robotA, robotB);
+    }
+
+    /**
+     * An operator's FORCE or REPLAY given elsewhere than on the control port (the monitor's POSTs,
+     * docs/monitor.md): {@code line} is the whole control line, answered by the same code as the
+     * control port's ({@link OperatorCommands}), its reply line returned; {@code who} names the asker in
+     * the log line. The caller has checked that the asker is an operator.
+     */
+    public String operatorLine(String line, InetAddress address, String who) {
+        try {
+            Command command = CommandParser.parse(line);
+            if (command != null && command.type().equals("FORCE") && !command.hasNoSegment()) {
+                return OperatorCommands.force(controlSide, command, address, who);
+            }
+            if (command != null && command.type().equals("REPLAY")) {
+                return OperatorCommands.replay(controlSide, command, address, who);
+            }
+            return Replies.error(Replies.MALFORMED_NO_COMMAND);
+        } catch (ProtocolException e) {
+            return e.reply();
+        }
     }
 
     /** The pair's forced state, or null when the model decides it (for the tests; the window and the log read it in the pairs' states). */

@@ -1,0 +1,62 @@
+package org.usarsim.wss.monitor;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.usarsim.wss.hub.HubSnapshot.PairEntry;
+import org.usarsim.wss.hub.core.PairState;
+import org.usarsim.wss.hub.MapLines.Line;
+import org.usarsim.wss.monitor.Reading.RobotView;
+
+/** What the events tell of a change (docs/monitor.md, "Timing"): structure at once, counts when due, each kind in one event. */
+class StateDiffTest {
+
+    private static RobotView robot(String name, double x) {
+        return new RobotView(name, "127.0.0.1", List.of(5000), Double.NaN, new org.usarsim.wss.model.Position(x, 0, 0), 10, false);
+    }
+
+    private static PairEntry pair(PairState state, long bytes) {
+        return new PairEntry("A", "B", state, -50, 3, bytes, 0, 0, 0, 1, 0, 0, 1, null);
+    }
+
+    private static Reading reading(List<RobotView> robots, List<PairEntry> pairs) {
+        return new Reading(robots, List.of(), List.of(), pairs, List.of(new Line("A", "B", PairState.UP, -50, 0)), null, null);
+    }
+
+    private static List<String> types(List<StateDiff.Change> changes) {
+        return changes.stream().map(StateDiff.Change::type).toList();
+    }
+
+    @Test
+    void aNewEntryAndAChangeOfStateAreToldAtOnceEachKindInOneEvent() {
+        StateDiff diff = new StateDiff();
+        List<StateDiff.Change> first = diff.step(reading(List.of(robot("A", 0), robot("B", 1)), List.of(pair(PairState.UP, 0))), false);
+        assertEquals(List.of("robots", "pairs", "lines"), types(first));
+        assertEquals(2, ((List<?>) first.get(0).data()).size());
+        List<StateDiff.Change> forced = diff.step(reading(List.of(robot("A", 0), robot("B", 1)), List.of(pair(PairState.FORCED_DOWN, 0))), false);
+        assertEquals(List.of("pairs"), types(forced));
+        assertEquals("FORCED_DOWN", ((Map<?, ?>) ((List<?>) forced.get(0).data()).get(0)).get("state"));
+    }
+
+    @Test
+    void countsOnlyWaitUntilTheyAreDueThenTheLatestIsTold() {
+        StateDiff diff = new StateDiff();
+        diff.step(reading(List.of(robot("A", 0)), List.of(pair(PairState.UP, 0))), true);
+        assertEquals(List.of(), types(diff.step(reading(List.of(robot("A", 5)), List.of(pair(PairState.UP, 100))), false)));
+        assertEquals(0L, diff.sent().pairs().get(0).bytesFirstToSecond(), "the snapshot shows what was told");
+        List<StateDiff.Change> due = diff.step(reading(List.of(robot("A", 6)), List.of(pair(PairState.UP, 200))), true);
+        assertEquals(List.of("robots", "pairs"), types(due));
+        assertEquals(200L, ((Map<?, ?>) ((List<?>) due.get(1).data()).get(0)).get("bytesFirstToSecond"));
+    }
+
+    @Test
+    void whatIsGoneIsOneRemovedEvent() {
+        StateDiff diff = new StateDiff();
+        diff.step(reading(List.of(robot("A", 0), robot("B", 1)), List.of()), false);
+        List<StateDiff.Change> gone = diff.step(new Reading(List.of(robot("A", 0)), List.of(), List.of(), List.of(), List.of(), null, null), false);
+        assertEquals(List.of("removed"), types(gone));
+        assertEquals(Map.of("robots", List.of("B"), "lines", List.of(Map.of("first", "A", "second", "B"))), gone.get(0).data());
+    }
+}

@@ -113,7 +113,7 @@ class WorldExportTest {
         assertEquals(86, circler, "a circle: every point needed");
         assertTrue(lines.get(0).startsWith("# A world exported from the WSS recording run.rec"), lines.get(0));
         assertTrue(text.contains("# left out: the robot two%20words,"), text);
-        assertTrue(lines.contains("wall -1.5,2.25 80,2.25"), text);
+        assertTrue(lines.contains("wall -1.5,2.25 80,2.25 brick"), text);
         assertFalse(text.contains("cut short"), text);
     }
 

@@ -112,6 +112,9 @@ public final class BoxWall {
                 || Math.max(ay, by) < minY - Segments.TOUCH || Math.min(ay, by) > maxY + Segments.TOUCH) {
             return false;
         }
+        if (beside(ax, ay, bx, by)) {
+            return false;
+        }
         if (inside(ax, ay)) {
             return true;
         }
@@ -122,6 +125,25 @@ public final class BoxWall {
             }
         }
         return false;
+    }
+
+    /**
+     * Whether every corner lies more than {@link Segments#TOUCH} to the same side of the line
+     * through a and b: then the outline cannot meet the segment. The cheap test that rejects most
+     * of the boxes near a line; never true for a line of length 0.
+     */
+    private boolean beside(double ax, double ay, double bx, double by) {
+        double dx = bx - ax;
+        double dy = by - ay;
+        double margin = Segments.TOUCH * Math.sqrt(dx * dx + dy * dy);
+        boolean left = true;
+        boolean right = true;
+        for (int i = 0; i < xs.length && (left || right); i++) {
+            double side = dx * (ys[i] - ay) - dy * (xs[i] - ax);
+            left &= side > margin;
+            right &= side < -margin;
+        }
+        return left || right;
     }
 
     /** Whether the point lies inside the outline (a line with an end inside crosses it, if no edge). */

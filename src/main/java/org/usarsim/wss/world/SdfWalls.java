@@ -5,6 +5,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.regex.Pattern;
 
 /**
  * The walls of a Gazebo world (an SDF document, docs/world.md "Walls from a Gazebo world"): every
@@ -21,6 +22,7 @@ final class SdfWalls {
     record Result(List<BoxWall> boxes, List<String> notes) {
     }
 
+    private static final Pattern SPACES = Pattern.compile("\\s+");
     /** How many names a note gives before it only counts. */
     private static final int NAMED = 5;
 
@@ -164,7 +166,7 @@ final class SdfWalls {
     }
 
     private double[] numbers(String text, String what) throws WorldFileException {
-        String[] words = text.isEmpty() ? new String[0] : text.split("\\s+");
+        String[] words = text.isEmpty() ? new String[0] : SPACES.split(text);
         double[] values = new double[words.length];
         for (int i = 0; i < words.length; i++) {
             try {

@@ -118,6 +118,13 @@ public final class BoxWall {
         if (inside(ax, ay)) {
             return true;
         }
+        // A proper crossing of an edge first (cheap); then touching, the dearer test.
+        for (int i = 0; i < xs.length; i++) {
+            int j = (i + 1) % xs.length;
+            if (Segments.cross(ax, ay, bx, by, xs[i], ys[i], xs[j], ys[j])) {
+                return true;
+            }
+        }
         for (int i = 0; i < xs.length; i++) {
             int j = (i + 1) % xs.length;
             if (Segments.meet(ax, ay, bx, by, xs[i], ys[i], xs[j], ys[j])) {

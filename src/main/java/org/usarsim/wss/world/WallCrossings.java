@@ -25,6 +25,11 @@ final class WallCrossings {
     private final double cell;
     private final int columns;
     private final int rows;
+    /** Per wall, its bounding box widened by {@link Segments#TOUCH}, in flat arrays: the first test, without touching the wall. */
+    private final double[] minXs;
+    private final double[] minYs;
+    private final double[] maxXs;
+    private final double[] maxYs;
     /** Per cell (row-major): the walls in it. */
     private final int[][] cells;
     /** Per thread: the query each wall was last tested in, so a wall in many cells is tested once. */
@@ -44,6 +49,16 @@ final class WallCrossings {
             bounds[i] = bounds(i);
         }
         materials = List.copyOf(indices.keySet());
+        minXs = new double[n];
+        minYs = new double[n];
+        maxXs = new double[n];
+        maxYs = new double[n];
+        for (int i = 0; i < n; i++) {
+            minXs[i] = bounds[i][0];
+            minYs[i] = bounds[i][1];
+            maxXs[i] = bounds[i][2];
+            maxYs[i] = bounds[i][3];
+        }
         double minX = Double.POSITIVE_INFINITY;
         double minY = Double.POSITIVE_INFINITY;
         double maxX = Double.NEGATIVE_INFINITY;
@@ -145,6 +160,10 @@ final class WallCrossings {
         // Column by column of the cells under the line's x range: the rows its y spans within that column, widened.
         double x0 = Math.min(ax, bx);
         double x1 = Math.max(ax, bx);
+        double lowX = x0;
+        double highX = x1;
+        double lowY = Math.min(ay, by);
+        double highY = Math.max(ay, by);
         int first = column(x0 - t);
         int last = column(x1 + t);
         for (int column = first; column <= last; column++) {
@@ -158,7 +177,8 @@ final class WallCrossings {
                 for (int wall : cells[row * columns + column]) {
                     if (stamps[wall] != stamp) {
                         stamps[wall] = stamp;
-                        if (blocks(wall, ax, ay, bx, by)) {
+                        if (lowX <= maxXs[wall] && highX >= minXs[wall] && lowY <= maxYs[wall] && highY >= minYs[wall]
+                                && blocks(wall, ax, ay, bx, by)) {
                             byMaterial[material[wall]]++;
                         }
                     }

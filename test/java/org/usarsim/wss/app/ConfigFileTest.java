@@ -87,6 +87,9 @@ class ConfigFileTest {
             Map.entry("obstacle.cacheDistance", "1.0"),
             Map.entry("obstacle.walls", ""),
             Map.entry("rosbridge.map", "/map"),
+            Map.entry("obstacle.materials", "Hard_wall*=concrete, Medium_wall*=brick, Soft_wall*=drywall, *glass*=glass, *=concrete"),
+            Map.entry("obstacle.loss", "concrete:15, brick:10, drywall:4, wood:4, glass:2, metal:30"),
+            Map.entry("obstacle.heightBand", "0.1..2.0"),
             Map.entry("replay.file", ""),
             Map.entry("replay.speed", "1"),
             Map.entry("replay.start", "0"),
@@ -394,7 +397,10 @@ class ConfigFileTest {
                 Map.entry("distance.margin", "0"),
                 Map.entry("distance.holdTime", "0"),
                 Map.entry("obstacle.attenuation", "6.325"),
-                Map.entry("obstacle.cacheDistance", "0.25")), model);
+                Map.entry("obstacle.cacheDistance", "0.25"),
+                Map.entry("obstacle.materials", "Hard_wall*=concrete, Medium_wall*=brick, Soft_wall*=drywall, *glass*=glass, *=concrete"),
+                Map.entry("obstacle.loss", "concrete:15, brick:10, drywall:4, wood:4, glass:2, metal:30"),
+                Map.entry("obstacle.heightBand", "0.1..2.0")), model);
         assertEquals(3.5, ConfigFile.of(properties, "t").modelValues().getDouble("distance.d0", -1), 0);
     }
 

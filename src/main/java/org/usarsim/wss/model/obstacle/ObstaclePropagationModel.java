@@ -45,11 +45,11 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             Setting.number("obstacle.cacheDistance", "Cache distance", "1.0").from(0).unit("m")
                     .help("How far a robot moves before the obstacles between it and the others are counted again"),
             Setting.text("obstacle.walls", "Walls file", "").orEmpty("the source's")
-                    .help("A world file (the world server's format) whose walls the WSS counts between two robots itself;"
+                    .help("A world file (the world server's format) or a Gazebo SDF world whose walls the WSS counts between two robots itself;"
                             + " empty: the source counts them (GETOBS, or the grid on rosbridge.map)"),
             Setting.text("rosbridge.map", "Map topic", "/map").orEmpty("none")
                     .help("With positions from rosbridge: the nav_msgs/OccupancyGrid topic whose occupied cells are the walls"),
-            Setting.text("obstacle.materials", "Wall materials", WallSettings.MATERIALS).orEmpty("none: the attenuation")
+            Setting.text("obstacle.materials", "Wall materials", WallSettings.MATERIALS).orEmpty("every wall the attenuation")
                     .help("An SDF world's walls: GLOB=MATERIAL, ... on model, link or collision names, the first match wins"),
             Setting.text("obstacle.loss", "Loss per material", WallSettings.LOSSES).orEmpty("none")
                     .help("The loss of one wall crossed of each material, MATERIAL:DB, ...; a wall of no material loses the attenuation"),

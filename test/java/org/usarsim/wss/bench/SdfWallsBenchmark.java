@@ -35,19 +35,17 @@ public final class SdfWallsBenchmark {
     }
 
     public static void main(String[] args) throws Exception {
-        int rounds = 30;
-        int robots = 100;
-        int walls = 5000;
-        long seed = 35;
-        for (int i = 0; i < args.length; i++) {
-            switch (args[i]) {
-                case "--rounds" -> rounds = Integer.parseInt(args[++i]);
-                case "--robots" -> robots = Integer.parseInt(args[++i]);
-                case "--walls" -> walls = Integer.parseInt(args[++i]);
-                case "--seed" -> seed = Long.parseLong(args[++i]);
-                default -> throw new IllegalArgumentException("unknown argument " + args[i]);
+        java.util.Map<String, Long> given = new java.util.HashMap<>(java.util.Map.of("--rounds", 30L, "--robots", 100L,
+                "--walls", 5000L, "--seed", 35L));
+        for (int i = 0; i + 1 < args.length; i += 2) {
+            if (given.replace(args[i], Long.parseLong(args[i + 1])) == null) {
+                throw new IllegalArgumentException("unknown argument " + args[i]);
             }
         }
+        int rounds = given.get("--rounds").intValue();
+        int robots = given.get("--robots").intValue();
+        int walls = given.get("--walls").intValue();
+        long seed = given.get("--seed");
         Random random = new Random(seed);
         Path file = Files.createTempFile("walls", ".sdf");
         try {
@@ -89,9 +87,9 @@ public final class SdfWallsBenchmark {
                     file.getFileName(), read.count(), String.join(", ", read.materials()), readNanos / 1e6, readCpu / 1e6, Files.size(file) / 1e6,
                     robots, pairs, rounds, seed);
             System.out.printf(Locale.ROOT, "all pairs' wall losses: median %.1f ms, max %.1f ms per round, median CPU %.1f ms"
-                    + " (%.0f dB in all)%n", median(nanos) / 1e6, max(nanos) / 1e6, median(cpuNanos) / 1e6, total);
+                    + " (%.0f dB in all)%n", GridCrossingsBenchmark.median(nanos) / 1e6, GridCrossingsBenchmark.max(nanos) / 1e6, GridCrossingsBenchmark.median(cpuNanos) / 1e6, total);
             System.out.printf(Locale.ROOT, "against the 200 ms poll interval: %.3f (wall clock), %.3f (CPU)%n",
-                    median(nanos) / 200e6, median(cpuNanos) / 200e6);
+                    GridCrossingsBenchmark.median(nanos) / 200e6, GridCrossingsBenchmark.median(cpuNanos) / 200e6);
         } finally {
             Files.deleteIfExists(file);
         }
@@ -146,15 +144,5 @@ public final class SdfWallsBenchmark {
                 + "</box></geometry></collision><visual name=\"visual\"><geometry><box><size>%.3f %.3f 2</size></box></geometry>"
                 + "</visual></link></model>%n", name, x, y, yaw, length, width, length, width));
         return 1;
-    }
-
-    private static long median(long[] values) {
-        long[] sorted = values.clone();
-        Arrays.sort(sorted);
-        return sorted[sorted.length / 2];
-    }
-
-    private static long max(long[] values) {
-        return Arrays.stream(values).max().orElse(0);
     }
 }

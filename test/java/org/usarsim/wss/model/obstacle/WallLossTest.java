@@ -136,6 +136,15 @@ class WallLossTest {
         assertEquals(DEFAULT.strength(10) - 7, cheap.strength(a, b, 5), 1e-9);
     }
 
+    /** The walls the map draws and a recording keeps (the model's own) carry their materials. */
+    @Test
+    void theModelsWallsCarryTheirMaterials(@TempDir Path dir) throws Exception {
+        Path world = Files.writeString(dir.resolve("w.world"), "wall 2,-5 2,5 concrete\nwall 4,-5 4,5\n");
+        ObstaclePropagationModel model = started(Map.of("obstacle.walls", world.toString()));
+        assertEquals(List.of(new org.usarsim.wss.model.Wall(2, -5, 2, 5, "concrete"), new org.usarsim.wss.model.Wall(4, -5, 4, 5)),
+                model.ownWalls());
+    }
+
     @Test
     void aMaterialWithNoLossAndBadSettingsRefuseTheStart(@TempDir Path dir) throws Exception {
         Path world = Files.writeString(dir.resolve("w.world"), "wall 2,-5 2,5 adamantium\n");

@@ -218,13 +218,13 @@ public final class GridCrossingsBenchmark {
         return segments;
     }
 
-    private static long median(long[] values) {
+    static long median(long[] values) {
         long[] sorted = values.clone();
         Arrays.sort(sorted);
         return sorted[sorted.length / 2];
     }
 
-    private static long max(long[] values) {
+    static long max(long[] values) {
         return Arrays.stream(values).max().orElse(0);
     }
 }

@@ -442,7 +442,7 @@ class DistanceModelDialogTest {
         preferences.store(OBSTACLE_MODEL, Map.of("usarsim.port", "7001"));
         open(new ObstaclePropagationModel(), false);
         List<JTextField> fields = Gui.onEdt(() -> Gui.all(dialog, JTextField.class));
-        assertEquals(DISTANCE_KEYS.size() + 5, fields.size(), "the Obstacles group's four and the cutoff distance");
+        assertEquals(DISTANCE_KEYS.size() + 8, fields.size(), "the Obstacles group's four, the Wall Materials' three and the cutoff distance");
         for (JTextField field : fields) {
             assertFalse(Gui.onEdt(field::isEnabled), field.getName() + " is enabled");
         }

@@ -90,6 +90,17 @@ class EntryLinesTest {
         }
     }
 
+    /** Issue 35: a wall's material is a fifth field; a wall without one is written and read as before. */
+    @Test
+    void aWallsMaterialIsAFifthFieldAndAWallWithoutOneIsWrittenAsBefore() {
+        StringBuilder text = new StringBuilder();
+        EntryLines.write(text, new Entry.Walls(10, List.of(new Wall(0, 0, 10, 0), new Wall(1, 2, 3, 4, "glass"))));
+        assertEquals("10 walls 2\n10 wall 0 0 10 0\n10 wall 1 2 3 4 glass\n", text.toString());
+        assertEquals(new EntryLines.WallRow(10, new Wall(0, 0, 10, 0, "")), EntryLines.read("10 wall 0 0 10 0"));
+        assertEquals(new EntryLines.WallRow(10, new Wall(1, 2, 3, 4, "glass")), EntryLines.read("10 wall 1 2 3 4 glass"));
+        assertThrows(IllegalArgumentException.class, () -> EntryLines.read("10 wall 1 2 3 4 glass more"));
+    }
+
     @Test
     void aStrengthIsWrittenAsGetssAnswersIt() {
         StringBuilder text = new StringBuilder();

@@ -66,7 +66,7 @@ class ReplayModelTest {
     /** Alpha, Bravo and Charlie polled every 200 ms; Bravo drives off at 400 and back at 800; Charlie's battery is empty at 1000. */
     private static Recordings run() {
         return new Recordings()
-                .entry(new Entry.Walls(180, List.of(new Wall(0, 5, 20, 5))))
+                .entry(new Entry.Walls(180, List.of(new Wall(0, 5, 20, 5), new Wall(0, -5, 20, -5, "glass"))))
                 .robot("Alpha", 0, 0, false).robot("Bravo", 10, 0, false).robot("Charlie", 20, 0, false)
                 .pair("Alpha", "Bravo", -60, true).pair("Alpha", "Charlie", -80, true).pair("Bravo", "Charlie", -61, true)
                 .poll(200)
@@ -146,7 +146,7 @@ class ReplayModelTest {
         assertEquals(List.of(new ModelPoll.Kick("Zed", false)), first.kicks());
         assertEquals(3, first.robots().size());
         assertEquals(3, first.pairs().size());
-        assertEquals(List.of(new Wall(0, 5, 20, 5)), first.walls());
+        assertEquals(List.of(new Wall(0, 5, 20, 5), new Wall(0, -5, 20, -5, "glass")), first.walls(), "with their materials");
         assertEquals(List.of(), events, "nothing changed at the first poll");
 
         after(400);
@@ -185,7 +185,7 @@ class ReplayModelTest {
         assertTrue(model.connectionIsPossibleForPair("Alpha", "Nobody"), "an unknown robot may connect until it is kicked");
         assertEquals(new Position(10, 0, 0), model.positionOf("Bravo").orElseThrow());
         assertTrue(model.positionOf("Nobody").isEmpty());
-        assertEquals(List.of(new Wall(0, 5, 20, 5)), model.walls());
+        assertEquals(List.of(new Wall(0, 5, 20, 5), new Wall(0, -5, 20, -5, "glass")), model.walls(), "with their materials");
         assertEquals(-93, model.cutoff());
         assertEquals(Double.NaN, model.rangeFor("Alpha", "Bravo"));
     }

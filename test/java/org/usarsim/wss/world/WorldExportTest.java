@@ -54,7 +54,7 @@ class WorldExportTest {
             EntryLines.write(text, new Entry.Poll(t, robots, List.of(new ModelPoll.Pair("Alpha", "Bravo", -60, 1, true))));
             if (t == 5000) {
                 EntryLines.write(text, new Entry.Walls(t, List.of(new org.usarsim.wss.model.Wall(10, 4, 10, 14),
-                        new org.usarsim.wss.model.Wall(-1.5, 2.25, 80, 2.25), new org.usarsim.wss.model.Wall(3, 3, 3, 3))));
+                        new org.usarsim.wss.model.Wall(-1.5, 2.25, 80, 2.25, "brick"), new org.usarsim.wss.model.Wall(3, 3, 3, 3))));
             }
         }
         if (ended) {
@@ -95,8 +95,8 @@ class WorldExportTest {
         assertEquals(100 + 100 + 86, checked);
         assertEquals(new Point(0.3, -2, 0.45), world.at(0).robot("Alpha").orElseThrow().position(), "before its first poll: its first position");
         assertEquals(new Point(15, 3, 0.45), world.at(500).robot("Alpha").orElseThrow().position(), "after its last: it stays");
-        assertEquals(List.of(new Wall(10, 4, 10, 14), new Wall(-1.5, 2.25, 80, 2.25)), world.at(0).walls(),
-                "the last walls recorded, the one of length 0 left out");
+        assertEquals(List.of(new Wall(10, 4, 10, 14), new Wall(-1.5, 2.25, 80, 2.25, "brick")), world.at(0).walls(),
+                "the last walls recorded with their materials, the one of length 0 left out");
     }
 
     @Test
@@ -113,7 +113,7 @@ class WorldExportTest {
         assertEquals(86, circler, "a circle: every point needed");
         assertTrue(lines.get(0).startsWith("# A world exported from the WSS recording run.rec"), lines.get(0));
         assertTrue(text.contains("# left out: the robot two%20words,"), text);
-        assertTrue(lines.contains("wall -1.5,2.25 80,2.25"), text);
+        assertTrue(lines.contains("wall -1.5,2.25 80,2.25 brick"), text);
         assertFalse(text.contains("cut short"), text);
     }
 

@@ -70,6 +70,8 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
     private static final String WALLS = "obstacle.walls";
     private static final String MAP = "rosbridge.map";
+    /** The Obstacle model's walls of its own by material (issue 35): shown when the model declares them. */
+    private static final List<String> MATERIAL_KEYS = List.of("obstacle.materials", "obstacle.loss", "obstacle.heightBand");
     /** The titles of the groups of the two sources; the one {@code positions} does not name adds {@link #NOT_USED}. */
     static final String USARSIM_TITLE = "USARSim Connection";
     static final String ROSBRIDGE_TITLE = "rosbridge";
@@ -107,6 +109,9 @@ final class DistanceModelDialog extends ModelSettingsDialog {
                 group("Link Stability", MARGIN, HOLD_TIME), group("Shadowing", SHADOWING_SIGMA, SHADOWING_DISTANCE, SEED)));
         if (obstacles) {
             groups.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE, WALLS, MAP));
+            if (MATERIAL_KEYS.stream().allMatch(key -> Setting.find(declared, key) != null)) {
+                groups.add(group("Wall Materials", MATERIAL_KEYS.toArray(String[]::new)));
+            }
         }
         grid.alignColumns();
 

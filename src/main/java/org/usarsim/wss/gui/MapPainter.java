@@ -97,9 +97,9 @@ final class MapPainter {
     }
 
     private void paintWalls(Graphics2D g, MapTransform t, MapData shown) {
-        g.setColor(WALL);
         g.setStroke(new BasicStroke(3, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
         for (Wall wall : shown.walls()) {
+            g.setColor(MapColours.wall(wall.material()));
             g.draw(new Line2D.Double(t.toScreen(wall.x1(), wall.y1()), t.toScreen(wall.x2(), wall.y2())));
         }
     }
@@ -272,6 +272,8 @@ final class MapPainter {
             entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THINNEST, Bitrate.format(MapLineWidth.LOWEST)));
             entries.add(new LegendEntry(Color.DARK_GRAY, false, MapLineWidth.THICKEST, Bitrate.format(MapLineWidth.TOP)));
         }
+        shown.walls().stream().map(Wall::material).filter(m -> !m.isEmpty()).distinct() // walls of materials: their colours
+                .forEach(m -> entries.add(new LegendEntry(MapColours.wall(m), false, 3, m)));
         // The scale's room at the right: the legend wraps onto a row above rather than run into it.
         int scaleLeft = width - 12 - (int) Math.round(step * t.scale()) - 12;
         for (LegendEntry entry : entries) {

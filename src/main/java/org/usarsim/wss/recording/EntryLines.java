@@ -62,7 +62,9 @@ public final class EntryLines {
             line(out, t, "walls").append(' ').append(walls.walls().size()).append('\n');
             for (Wall wall : walls.walls()) {
                 line(out, t, "wall").append(' ').append(metres(wall.x1())).append(' ').append(metres(wall.y1())).append(' ')
-                        .append(metres(wall.x2())).append(' ').append(metres(wall.y2())).append('\n');
+                        .append(metres(wall.x2())).append(' ').append(metres(wall.y2()));
+                // A wall's material, when it has one, is a fifth field: a recording without is read as before.
+                (wall.material().isEmpty() ? out : out.append(' ').append(escape(wall.material()))).append('\n');
             }
         } else if (entry instanceof Entry.Kick kick) {
             words(out, t, "kick", escape(kick.robot()), kick.batteryEmpty() ? "battery" : "absent");
@@ -256,8 +258,8 @@ public final class EntryLines {
             }
             case "walls" -> new WallsHead(t, size(f, 2, 3));
             case "wall" -> {
-                fields(f, 6);
-                yield new WallRow(t, new Wall(number(f[2]), number(f[3]), number(f[4]), number(f[5])));
+                fields(f, f.length == 7 ? 7 : 6);
+                yield new WallRow(t, new Wall(number(f[2]), number(f[3]), number(f[4]), number(f[5]), f.length == 7 ? unescape(f[6]) : ""));
             }
             case "kick" -> {
                 fields(f, 4);

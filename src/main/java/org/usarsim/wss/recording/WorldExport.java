@@ -105,7 +105,9 @@ public final class WorldExport {
         }
         for (Wall wall : kept) {
             out.append("wall ").append(EntryLines.metres(wall.x1())).append(',').append(EntryLines.metres(wall.y1())).append(' ')
-                    .append(EntryLines.metres(wall.x2())).append(',').append(EntryLines.metres(wall.y2())).append('\n');
+                    .append(EntryLines.metres(wall.x2())).append(',').append(EntryLines.metres(wall.y2()));
+            // Its material, when the world file's format can say it (docs/world.md, "wall").
+            (wall.material().matches("[A-Za-z0-9_-]+") ? out.append(' ').append(wall.material()) : out).append('\n');
         }
         return out.toString();
     }

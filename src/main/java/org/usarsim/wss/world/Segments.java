@@ -16,11 +16,7 @@ final class Segments {
 
     /** Whether segment a-b and segment c-d cross or touch. Either may be a single point. */
     static boolean meet(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
-        double a = side(cx, cy, dx, dy, ax, ay);
-        double b = side(cx, cy, dx, dy, bx, by);
-        double c = side(ax, ay, bx, by, cx, cy);
-        double d = side(ax, ay, bx, by, dx, dy);
-        if (opposite(a, b) && opposite(c, d)) {
+        if (cross(ax, ay, bx, by, cx, cy, dx, dy)) {
             return true;
         }
         // Segments that do not cross are as close as the closest end of one to the other.
@@ -28,6 +24,12 @@ final class Segments {
                 || pointToSegment(bx, by, cx, cy, dx, dy) <= TOUCH
                 || pointToSegment(cx, cy, ax, ay, bx, by) <= TOUCH
                 || pointToSegment(dx, dy, ax, ay, bx, by) <= TOUCH;
+    }
+
+    /** Whether segment a-b and segment c-d cross properly: each one's ends strictly either side of the other. */
+    static boolean cross(double ax, double ay, double bx, double by, double cx, double cy, double dx, double dy) {
+        return opposite(side(cx, cy, dx, dy, ax, ay), side(cx, cy, dx, dy, bx, by))
+                && opposite(side(ax, ay, bx, by, cx, cy), side(ax, ay, bx, by, dx, dy));
     }
 
     /** Positive when p is left of the line from s to e, negative when right, 0 on it. */

@@ -20,7 +20,7 @@ import java.util.regex.Pattern;
  * robot NAME X,Y,Z [battery SECONDS]
  * path NAME speed METRES_PER_SECOND loop|once X,Y[,Z] ...
  * at NAME SECONDS X,Y[,Z]
- * wall X1,Y1 X2,Y2
+ * wall X1,Y1 X2,Y2 [MATERIAL]
  * </pre>
  *
  * The first mistake stops the reading, with the message {@code FILE:LINE: what is wrong (the line)}.
@@ -180,17 +180,21 @@ final class WorldFile {
         return seconds == Math.rint(seconds) && Math.abs(seconds) < 1e15 ? Long.toString((long) seconds) : Double.toString(seconds);
     }
 
-    /** {@code wall X1,Y1 X2,Y2} */
+    /** {@code wall X1,Y1 X2,Y2 [MATERIAL]} */
     private void wall(String[] words) throws WorldFileException {
-        if (words.length != 3) {
-            throw error("a wall is 'wall X1,Y1 X2,Y2'");
+        if (words.length != 3 && words.length != 4) {
+            throw error("a wall is 'wall X1,Y1 X2,Y2' or 'wall X1,Y1 X2,Y2 MATERIAL'");
+        }
+        String material = words.length == 4 ? words[3].toLowerCase(java.util.Locale.ROOT) : "";
+        if (!material.isEmpty() && !MaterialRules.MATERIAL.matcher(material).matches()) {
+            throw error("a wall is 'wall X1,Y1 X2,Y2' or 'wall X1,Y1 X2,Y2 MATERIAL', a material letters, digits, _ and -");
         }
         double[] from = coordinates(words[1], 2, 2, "the wall's first end X1,Y1");
         double[] to = coordinates(words[2], 2, 2, "the wall's second end X2,Y2");
         if (from[0] == to[0] && from[1] == to[1]) {
             throw error("a wall of length 0");
         }
-        walls.add(new Wall(from[0], from[1], to[0], to[1]));
+        walls.add(new Wall(from[0], from[1], to[0], to[1], material));
     }
 
     private String name(String word) throws WorldFileException {

@@ -4,12 +4,15 @@ import java.io.IOException;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.logging.Logger;
+import java.util.stream.Collectors;
 import org.usarsim.wss.model.DialogLayout;
+import org.usarsim.wss.model.ModelInputException;
 import org.usarsim.wss.model.ModelStartException;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.model.RobotPair;
@@ -42,10 +45,16 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             Setting.number("obstacle.cacheDistance", "Cache distance", "1.0").from(0).unit("m")
                     .help("How far a robot moves before the obstacles between it and the others are counted again"),
             Setting.text("obstacle.walls", "Walls file", "").orEmpty("the source's")
-                    .help("A world file (the world server's format) whose walls the WSS counts between two robots itself;"
+                    .help("A world file (the world server's format) or a Gazebo SDF world whose walls the WSS counts between two robots itself;"
                             + " empty: the source counts them (GETOBS, or the grid on rosbridge.map)"),
             Setting.text("rosbridge.map", "Map topic", "/map").orEmpty("none")
-                    .help("With positions from rosbridge: the nav_msgs/OccupancyGrid topic whose occupied cells are the walls"));
+                    .help("With positions from rosbridge: the nav_msgs/OccupancyGrid topic whose occupied cells are the walls"),
+            Setting.text("obstacle.materials", "Wall materials", WallSettings.MATERIALS).orEmpty("every wall the attenuation")
+                    .help("An SDF world's walls: GLOB=MATERIAL, ... on model, link or collision names, the first match wins"),
+            Setting.text("obstacle.loss", "Loss per material", WallSettings.LOSSES).orEmpty("none")
+                    .help("The loss of one wall crossed of each material, MATERIAL:DB, ...; a wall of no material loses the attenuation"),
+            Setting.text("obstacle.heightBand", "Robots' height band", WallSettings.BAND).unit("m")
+                    .help("An SDF world's boxes are walls when their height meets LOW..HIGH metres"));
 
     /** Read at each start; volatile for the threads that ask for a strength. */
     private volatile double attenuation;
@@ -55,6 +64,10 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     private boolean getobsUnanswered;
     /** The walls of obstacle.walls, read at each start; null when the source counts. */
     private volatile WorldWalls ownWalls;
+    /** Their losses by material (obstacle.loss, the attenuation for a wall of none); null when the source counts. */
+    private WallLoss wallLoss;
+    /** The walls and losses the last poll counted itself, by pair: the wall-loss term reads them. */
+    private volatile Map<RobotPair, WallLoss.Crossing> crossings = Map.of();
     /** Whether the source is USARSim's, whose counts are GETOBS answers. */
     private boolean usarsim;
 
@@ -80,22 +93,37 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return List.copyOf(all);
     }
 
-    /** Reads the run's attenuation and cache distance, and the walls of obstacle.walls (refused when it cannot be read). */
+    /**
+     * Reads the run's attenuation and cache distance, and the walls of obstacle.walls with their
+     * materials' losses (refused when it cannot be read, or a material has no loss).
+     */
     @Override
     protected void started(ModelSettings settings) throws ModelStartException {
         String file = settings.getString("obstacle.walls", "").strip();
+        attenuation = settings.getDouble("obstacle.attenuation", 0);
         WorldWalls walls = null;
+        WallLoss losses = null;
         if (!file.isEmpty()) {
+            WallSettings read = WallSettings.of(settings);
             try {
-                walls = WorldWalls.read(Path.of(file));
+                walls = read.walls(Path.of(file));
             } catch (WorldFileException | InvalidPathException e) {
                 throw new ModelStartException("obstacle.walls: " + e.getMessage());
             }
-            LOG.info("counting the obstacles between robots from the " + walls.walls().size() + " walls of " + file);
+            try {
+                losses = new WallLoss(walls, read.losses(), attenuation);
+            } catch (IllegalArgumentException e) {
+                throw new ModelInputException("obstacle.walls: " + file + " has " + e.getMessage());
+            }
+            walls.notes().forEach(note -> LOG.info("obstacle.walls: " + file + ": " + note));
+            LOG.info("counting the obstacles between robots from the " + walls.count() + " walls of " + file
+                    + (walls.materials().equals(List.of("")) || walls.materials().isEmpty() ? ""
+                    : " (" + walls.materials().stream().map(m -> m.isEmpty() ? "no material" : m).collect(Collectors.joining(", ")) + ")"));
         }
         ownWalls = walls;
+        wallLoss = losses;
+        crossings = Map.of();
         usarsim = "usarsim".equals(settings.getString("positions", "usarsim"));
-        attenuation = settings.getDouble("obstacle.attenuation", 0);
         counts = new ObstacleCounts(settings.getDouble("obstacle.cacheDistance", 0));
         getobsUnanswered = false;
     }
@@ -105,12 +133,23 @@ public final class ObstaclePropagationModel extends SimulatorModel {
     protected List<Wall> ownWalls() {
         WorldWalls walls = ownWalls;
         return walls == null ? null
-                : walls.walls().stream().map(wall -> new Wall(wall.x1(), wall.y1(), wall.x2(), wall.y2())).toList();
+                : walls.walls().stream().map(wall -> new Wall(wall.x1(), wall.y1(), wall.x2(), wall.y2(), wall.material())).toList();
     }
 
     @Override
     protected double strength(ReportedRobot a, ReportedRobot b, double obstacles) {
-        return pathLoss().strength(a.distanceTo(b)) - obstacles * attenuation;
+        return pathLoss().strength(a.distanceTo(b)) - wallLoss(RobotPair.of(a.name(), b.name()), obstacles);
+    }
+
+    /**
+     * The wall-loss term, in dB: the losses of the walls of obstacle.walls the last poll counted
+     * between the pair, by material; else (the source's counts, or a count of another poll read
+     * while the next one is being published) the count times the attenuation, the original's term.
+     * NaN when the count is unknown.
+     */
+    double wallLoss(RobotPair pair, double obstacles) {
+        WallLoss.Crossing counted = crossings.get(pair);
+        return counted != null && counted.count() == obstacles ? counted.lossDb() : obstacles * attenuation;
     }
 
     /** The range less the attenuation of the obstacles between: a pair behind two walls reaches less far. */
@@ -144,7 +183,7 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         if (stale.isEmpty()) {
             return known.counts(pairs);
         }
-        WorldWalls walls = ownWalls;
+        WallLoss walls = wallLoss;
         Map<RobotPair, Double> answers = walls == null ? simulator.obstacles(stale) : counted(walls, stale, listed);
         for (RobotPair pair : stale) {
             known.put(pair, answers.getOrDefault(pair, Double.NaN), listed);
@@ -160,14 +199,22 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return known.counts(pairs);
     }
 
-    /** The walls of obstacle.walls between each pair, as the world server counts them for GETOBS. */
-    private static Map<RobotPair, Double> counted(WorldWalls walls, List<RobotPair> pairs, Map<String, ReportedRobot> listed) {
-        Map<RobotPair, Double> counted = new java.util.HashMap<>();
+    /**
+     * The walls of obstacle.walls between each stale pair, as the world server counts them for
+     * GETOBS, and their losses, kept for the wall-loss term with those of the pairs still fresh.
+     */
+    private Map<RobotPair, Double> counted(WallLoss walls, List<RobotPair> pairs, Map<String, ReportedRobot> listed) {
+        Map<RobotPair, Double> counted = new HashMap<>();
+        Map<RobotPair, WallLoss.Crossing> all = new HashMap<>(crossings);
+        all.keySet().retainAll(counts.counts(List.copyOf(all.keySet())).keySet());
         for (RobotPair pair : pairs) {
             ReportedRobot a = listed.get(pair.first());
             ReportedRobot b = listed.get(pair.second());
-            counted.put(pair, (double) walls.crossings(a.x(), a.y(), b.x(), b.y()));
+            WallLoss.Crossing crossing = walls.between(a.x(), a.y(), b.x(), b.y());
+            counted.put(pair, (double) crossing.count());
+            all.put(pair, crossing);
         }
+        crossings = Map.copyOf(all);
         return counted;
     }
 }

@@ -52,7 +52,7 @@ class ModelPreferencesTest {
     void nothingStoredGivesTheDefaults() {
         assertEquals(Setting.defaults(DISTANCE_MODEL.settings()), preferences.load(DISTANCE_MODEL));
         assertEquals(Setting.defaults(OBSTACLE_MODEL.settings()), preferences.settingValues(OBSTACLE_MODEL).asMap());
-        assertEquals(26, preferences.load(OBSTACLE_MODEL).size(),
+        assertEquals(29, preferences.load(OBSTACLE_MODEL).size(),
                 "positions.*, usarsim.*, rosbridge.*, distance.*, obstacle.*, shadowing.* and radio.seed");
         assertTrue(logged.isEmpty(), "no warning for missing values: " + logged);
     }

@@ -154,6 +154,16 @@ class ConfigFileTest {
     }
 
     @Test
+    void theIssuesNamesOfTheWallKeysAreTakenAsTheObstacleModels() throws Exception {
+        Properties file = props("wss.model", "ObstaclePropagationModel");
+        file.setProperty("wss.walls.materials", "Hard_wall*=metal");
+        file.setProperty("wss.walls.loss", "metal:25");
+        ConfigFile settings = ConfigFile.of(file, "t");
+        assertEquals("Hard_wall*=metal", settings.modelValues().asMap().get("obstacle.materials"));
+        assertEquals("metal:25", settings.modelValues().asMap().get("obstacle.loss"));
+    }
+
+    @Test
     void theOldNameOfTheIntervalIsTakenAsTheNewOne() throws Exception {
         Properties file = props("wss.model", "DistanceOnlyPropagationModel");
         file.setProperty("usarsim.interval", " 250 ");

@@ -50,8 +50,9 @@ public final class ObstaclePropagationModel extends SimulatorModel {
             Setting.text("rosbridge.map", "Map topic", "/map").orEmpty("none")
                     .help("With positions from rosbridge: the nav_msgs/OccupancyGrid topic whose occupied cells are the walls"),
             Setting.text("obstacle.materials", "Wall materials", WallSettings.MATERIALS).orEmpty("every wall the attenuation")
+                    .alias("wss.walls.materials")
                     .help("An SDF world's walls: GLOB=MATERIAL, ... on model, link or collision names, the first match wins"),
-            Setting.text("obstacle.loss", "Loss per material", WallSettings.LOSSES).orEmpty("none")
+            Setting.text("obstacle.loss", "Loss per material", WallSettings.LOSSES).orEmpty("none").alias("wss.walls.loss")
                     .help("The loss of one wall crossed of each material, MATERIAL:DB, ...; a wall of no material loses the attenuation"),
             Setting.text("obstacle.heightBand", "Robots' height band", WallSettings.BAND).unit("m")
                     .help("An SDF world's boxes are walls when their height meets LOW..HIGH metres"));

@@ -95,7 +95,6 @@ class ConfigFileTest {
             Map.entry("distance.holdTime", "0"),
             Map.entry("shadowing.sigma", "0"),
             Map.entry("shadowing.distance", "5"),
-            Map.entry("radio.seed", "1"),
             Map.entry("obstacle.attenuation", "6.325"),
             Map.entry("obstacle.cacheDistance", "1.0"),
             Map.entry("obstacle.walls", ""),
@@ -406,7 +405,7 @@ class ConfigFileTest {
         assertTrue(model.keySet().stream().noneMatch(key -> key.startsWith("wss.")), model.toString());
         assertTrue(model.keySet().stream().allMatch(key -> key.startsWith("positions") || key.startsWith("usarsim.")
                 || key.startsWith("rosbridge.") || key.startsWith("distance.") || key.startsWith("obstacle.")
-                || key.startsWith("shadowing.") || key.equals("radio.seed")), model.toString());
+                || key.startsWith("shadowing.")), model.toString());
         assertEquals(Map.ofEntries(
                 Map.entry("positions", "usarsim"),
                 Map.entry("positions.interval", "1000"),
@@ -435,8 +434,7 @@ class ConfigFileTest {
                 Map.entry("obstacle.loss", "concrete:15, brick:10, drywall:4, wood:4, glass:2, metal:30"),
                 Map.entry("obstacle.heightBand", "0.1..2.0"),
                 Map.entry("shadowing.sigma", "0"),
-                Map.entry("shadowing.distance", "5"),
-                Map.entry("radio.seed", "1")), model);
+                Map.entry("shadowing.distance", "5")), model);
         assertEquals(3.5, ConfigFile.of(properties, "t").modelValues().getDouble("distance.d0", -1), 0);
     }
 
@@ -498,7 +496,7 @@ class ConfigFileTest {
         ConfigFile settings = ConfigFile.of(properties, "t");
         Map<String, String> model = settings.modelValues().asMap();
         assertEquals("2", model.get("distance.n"));
-        assertEquals(22, model.size(), "positions.*, usarsim.*, rosbridge.*, distance.*, shadowing.* and radio.seed: " + model);
+        assertEquals(21, model.size(), "positions.*, usarsim.*, rosbridge.*, distance.* and shadowing.*: " + model);
         assertFalse(model.containsKey("obstacle.attenuation"), "not a setting of DistanceOnlyPropagationModel");
         assertEquals(List.of("obstacle.attenuation"), settings.ignoredKeys());
         assertEquals("3", settings.get("obstacle.attenuation"), "checked all the same");

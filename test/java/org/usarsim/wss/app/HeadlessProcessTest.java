@@ -119,10 +119,11 @@ class HeadlessProcessTest {
                 files.get(0).toString());
         List<String> lines = Files.readAllLines(files.get(0));
         String time = "\\d\\d:\\d\\d:\\d\\d\\.\\d{3}";
-        assertEquals(4, lines.size(), String.join("\n", lines));
-        assertTrue(lines.get(0).matches("REGISTERED," + time + ",R1,127\\.0\\.0\\.1,5000:5001"), lines.get(0));
-        assertTrue(lines.get(1).matches("REGISTERED," + time + ",R2,127\\.0\\.0\\.1,6000"), lines.get(1));
-        assertTrue(lines.stream().skip(2).allMatch(line -> line.matches("DEREGISTERED," + time + ",R[12]")), lines.toString());
+        assertEquals(5, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).matches("SETTING," + time + ",wss.seed,0"), "the run's seed first: " + lines.get(0));
+        assertTrue(lines.get(1).matches("REGISTERED," + time + ",R1,127\\.0\\.0\\.1,5000:5001"), lines.get(1));
+        assertTrue(lines.get(2).matches("REGISTERED," + time + ",R2,127\\.0\\.0\\.1,6000"), lines.get(2));
+        assertTrue(lines.stream().skip(3).allMatch(line -> line.matches("DEREGISTERED," + time + ",R[12]")), lines.toString());
     }
 
     @Test

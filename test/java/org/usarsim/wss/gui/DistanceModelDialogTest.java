@@ -43,7 +43,7 @@ class DistanceModelDialogTest {
     private static final List<String> DISTANCE_KEYS = List.of("positions", "positions.interval", "usarsim.host", "usarsim.port",
             "usarsim.timeout", "rosbridge.url", "rosbridge.topic", "rosbridge.type", "rosbridge.frame", "rosbridge.names",
             "rosbridge.stale", "rosbridge.grace", "rosbridge.maxMessage", "distance.cutoff", "distance.n", "distance.pd0", "distance.d0",
-            "distance.margin", "distance.holdTime", "shadowing.sigma", "shadowing.distance", "radio.seed");
+            "distance.margin", "distance.holdTime", "shadowing.sigma", "shadowing.distance");
 
     /** Four decimals, as the fields show computed values. */
     private static final double FOUR_DECIMALS = 0.5e-4 + 1e-9;

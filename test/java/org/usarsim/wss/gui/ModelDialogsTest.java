@@ -275,10 +275,11 @@ class ModelDialogsTest {
         org.usarsim.wss.model.rfcomms.RfCommsPropagationModel model = new org.usarsim.wss.model.rfcomms.RfCommsPropagationModel();
         CompletableFuture<Boolean> shown = show(model, true);
         Window dialog = dialog("RFComms Configuration");
-        for (String key : List.of("rfcomms.txPower", "rfcomms.capacity", "rfcomms.maxRange", "radio.seed", "usarsim.port")) {
+        for (String key : List.of("rfcomms.txPower", "rfcomms.capacity", "rfcomms.maxRange", "usarsim.port")) {
             assertTrue(hasField(dialog, key), key);
         }
         assertFalse(hasField(dialog, "distance.pd0"), "not RFComms'");
+        assertFalse(hasField(dialog, "wss.seed"), "the run's seed, not the model's");
         type(dialog, "rfcomms.txPower", "20");
         click(dialog, DialogParts.OK);
         assertTrue(shown.get(5, TimeUnit.SECONDS));

@@ -152,11 +152,11 @@ class EventLogTest {
     @Test
     void aSettingOfTheRandomDrawsIsOneLine() throws Exception {
         CsvEventLog log = CsvEventLog.create(dir);
-        log.setting("radio.seed", "42");
+        log.setting("wss.seed", "42");
         log.close();
         List<String> lines = Files.readAllLines(log.file());
         assertEquals(1, lines.size(), lines.toString());
-        assertTrue(lines.get(0).matches("SETTING,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},radio.seed,42"), lines.get(0));
+        assertTrue(lines.get(0).matches("SETTING,\\d\\d:\\d\\d:\\d\\d\\.\\d{3},wss.seed,42"), lines.get(0));
     }
 
     @Test

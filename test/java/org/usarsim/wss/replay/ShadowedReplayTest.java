@@ -1,6 +1,7 @@
 package org.usarsim.wss.replay;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -43,12 +44,13 @@ class ShadowedReplayTest {
 
     @Test
     void theRunsShadowedStrengthsAreTheSeedsAndTheReplayAnswersThem() throws Exception {
-        Map<String, String> given = Map.of("shadowing.sigma", "10", "shadowing.distance", "5", "radio.seed", "7");
+        Map<String, String> given = Map.of("shadowing.sigma", "10", "shadowing.distance", "5", "wss.seed", "7");
         DistanceOnlyPropagationModel live = new DistanceOnlyPropagationModel();
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : live.settings()) {
             settings.put(setting.key(), given.getOrDefault(setting.key(), setting.defaultValue()));
         }
+        settings.put("wss.seed", given.get("wss.seed")); // the run's seed, as Server.recordedSettings puts it after the model's
         Recorder recorder = Recorder.create(dir.resolve("shadowed.rec"), live.name(), settings);
         List<String> answered = new ArrayList<>();
         Shadowing field = new Shadowing(10, 5, 7);
@@ -73,7 +75,8 @@ class ShadowedReplayTest {
         }
 
         Recording recording = RecordingReader.read(recorder.file());
-        assertEquals("7", recording.header().settings().get("radio.seed"));
+        assertEquals("7", recording.header().settings().get("wss.seed"));
+        assertFalse(recording.header().settings().containsKey("radio.seed"), "no seed of the model's own");
         assertEquals("10", recording.header().settings().get("shadowing.sigma"));
         assertEquals("5", recording.header().settings().get("shadowing.distance"));
         List<String> recorded = new ArrayList<>();

@@ -20,6 +20,7 @@ import org.usarsim.wss.monitor.MonitorServer;
 import org.usarsim.wss.monitor.MonitorSetupException;
 import org.usarsim.wss.monitor.Watched;
 import org.usarsim.wss.recording.Recorder;
+import org.usarsim.wss.shaping.JitterConfig;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
@@ -88,6 +89,7 @@ final class Server implements AutoCloseable {
      */
     static Server create(HubConfig config, ModelProvider provider, ModelSettings values, Path eventLogDir, Path record)
             throws StartFailure {
+        values = withRunSeed(values, config);
         PropagationModel model = configured(provider, values);
         CsvEventLog eventLog = null;
         if (eventLogDir != null) {
@@ -116,7 +118,18 @@ final class Server implements AutoCloseable {
         return new Server(config, model, eventLog, recorder, modelValues);
     }
 
-    /** The settings of the model's random draws it declares (shadowing.*, radio.seed), with this run's values: the event log's SETTING lines. */
+    /**
+     * The model's values with the run's seed, {@code wss.seed}, as the hub's shaping has it: every
+     * model is handed it as a value (docs/models.md, the SPI), the one seed of the run.
+     */
+    static ModelSettings withRunSeed(ModelSettings values, HubConfig config) {
+        return values.with(ModelSettings.SEED, String.valueOf(config.shaping().jitter().seed()));
+    }
+
+    /**
+     * The settings the run's random draws depend on, with this run's values: the shadowing's the
+     * model declares (shadowing.*), then the run's seed (wss.seed, always): the event log's SETTING lines.
+     */
     static Map<String, String> randomSettings(PropagationModel model, ModelSettings values) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (String key : Shadowing.KEYS) {
@@ -125,11 +138,12 @@ final class Server implements AutoCloseable {
                 settings.put(key, values.getString(key, setting.defaultValue()));
             }
         }
+        settings.put(ModelSettings.SEED, values.getString(ModelSettings.SEED, String.valueOf(JitterConfig.DEFAULT_SEED)));
         return settings;
     }
 
     /** A recording's settings: every setting the model declares with this run's value, then the wss.shaping* keys and wss.seed. */
-    private static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
+    static Map<String, String> recordedSettings(PropagationModel model, ModelSettings values, ShapingConfig shaping) {
         Map<String, String> settings = new LinkedHashMap<>();
         for (Setting setting : model.settings()) {
             settings.put(setting.key(), values.getString(setting.key(), setting.defaultValue()));

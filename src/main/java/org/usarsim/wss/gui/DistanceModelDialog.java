@@ -62,10 +62,9 @@ final class DistanceModelDialog extends ModelSettingsDialog {
     private static final String HOLD_TIME = "distance.holdTime";
     private static final String SHADOWING_SIGMA = "shadowing.sigma";
     private static final String SHADOWING_DISTANCE = "shadowing.distance";
-    private static final String SEED = "radio.seed";
     /** The keys of the groups every layout shows: the positions, their two sources, the signal, the link stability. */
     private static final List<String> DISTANCE_KEYS = List.of(POSITIONS, INTERVAL, HOST, PORT, TIMEOUT, URL, TOPIC, TYPE, FRAME,
-            NAMES, STALE, GRACE, MAX_MESSAGE, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME, SHADOWING_SIGMA, SHADOWING_DISTANCE, SEED);
+            NAMES, STALE, GRACE, MAX_MESSAGE, CUTOFF, N, PD0, D0, MARGIN, HOLD_TIME, SHADOWING_SIGMA, SHADOWING_DISTANCE);
     private static final String ATTENUATION = "obstacle.attenuation";
     private static final String CACHE_DISTANCE = "obstacle.cacheDistance";
     private static final String WALLS = "obstacle.walls";
@@ -106,7 +105,7 @@ final class DistanceModelDialog extends ModelSettingsDialog {
         rosbridgeGroup = group(ROSBRIDGE_TITLE, URL, TOPIC, TYPE, FRAME, NAMES, STALE, GRACE, MAX_MESSAGE);
         List<JPanel> groups = new ArrayList<>(List.of(group("Positions", POSITIONS, INTERVAL), usarsimGroup, rosbridgeGroup,
                 group("Signal Strength Computation Parameters", CUTOFF, N, PD0, D0), distance.panel(grid, obstacles),
-                group("Link Stability", MARGIN, HOLD_TIME), group("Shadowing", SHADOWING_SIGMA, SHADOWING_DISTANCE, SEED)));
+                group("Link Stability", MARGIN, HOLD_TIME), group("Shadowing", SHADOWING_SIGMA, SHADOWING_DISTANCE)));
         if (obstacles) {
             groups.add(group("Obstacles", ATTENUATION, CACHE_DISTANCE, WALLS, MAP));
             if (MATERIAL_KEYS.stream().allMatch(key -> Setting.find(declared, key) != null)) {

@@ -226,7 +226,7 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
     }
 
     /** An operator moved the replay: where it is now (s, to the millisecond), its speed, PLAY or PAUSE. Never limited, as the log's lines are. */
-    /** A setting the run's random draws depend on (radio.seed, shadowing.*), written at the start: {@code SETTING,t,key,value}. */
+    /** A setting the run's random draws depend on (shadowing.*, wss.seed), written at the start: {@code SETTING,t,key,value}. */
     public void setting(String key, String value) {
         event("SETTING", key, value);
     }

@@ -17,8 +17,8 @@ public enum DialogLayout {
      * distance computed both ways, "Link Stability" and "Shadowing". It shows positions, positions.interval,
      * usarsim.host, usarsim.port, usarsim.timeout, the rosbridge.* keys (url, topic, type, frame,
      * names, stale, maxMessage), distance.cutoff, distance.n, distance.pd0, distance.d0,
-     * distance.margin, distance.holdTime, and "Shadowing": shadowing.sigma, shadowing.distance and
-     * radio.seed: a model that does not declare every one of them gets
+     * distance.margin, distance.holdTime, and "Shadowing": shadowing.sigma and shadowing.distance
+     * (the seed is the run's, wss.seed): a model that does not declare every one of them gets
      * {@link #GENERATED}.
      */
     DISTANCE,

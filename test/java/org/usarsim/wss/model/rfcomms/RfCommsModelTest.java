@@ -95,7 +95,7 @@ class RfCommsModelTest {
             assertEquals(loss.lost(100, 0, one), loss.lost(100, 0, two), "the same seed loses the same datagrams");
         }
         Placed reseeded = new Placed();
-        reseeded.started(checked(Map.of("rfcomms.txPower", "-30", "rfcomms.sigma", "0", "radio.seed", "2")));
+        reseeded.started(checked(Map.of("rfcomms.txPower", "-30", "rfcomms.sigma", "0", "wss.seed", "2")));
         reseeded.at.putAll(model.at);
         DatagramLoss other = reseeded.linkQualityForPair("A", "B").orElseThrow().datagramLoss();
         SplittableRandom three = new SplittableRandom(7);
@@ -104,7 +104,7 @@ class RfCommsModelTest {
         for (int i = 0; i < 100; i++) {
             differ += loss.lost(100, 0, three) != other.lost(100, 0, four) ? 1 : 0;
         }
-        assertTrue(differ > 0, "another radio.seed loses other datagrams");
+        assertTrue(differ > 0, "another wss.seed loses other datagrams");
         model.at.put("B", new Position(51, 0, 0));
         assertTrue(loss.lost(1, 0, new SplittableRandom(3)), "beyond max range: lost");
     }

@@ -25,6 +25,19 @@ class ShadowingTest {
     }
 
     @Test
+    void theSeedIsTheRunsWssSeedALongZeroWhenNotGiven() throws Exception {
+        ReportedRobot a = at("A", 1, 2);
+        ReportedRobot b = at("B", 30, -4);
+        long big = 1L << 40;
+        Shadowing seeded = Shadowing.of(SimulatorConfig.read(SimulatorSettings.ALL,
+                Map.of("shadowing.sigma", "10", "wss.seed", String.valueOf(big))).values());
+        assertEquals(new Shadowing(10, 5, big).db(a, b), seeded.db(a, b), "the run's wss.seed, read as a long");
+        Shadowing unseeded = Shadowing.of(SimulatorConfig.read(SimulatorSettings.ALL, Map.of("shadowing.sigma", "10")).values());
+        assertEquals(new Shadowing(10, 5, 0).db(a, b), unseeded.db(a, b), "the jitter's default, 0");
+        assertTrue(SimulatorSettings.ALL.stream().noneMatch(setting -> setting.key().endsWith(".seed")), "no seed of the model's own");
+    }
+
+    @Test
     void theSameSeedAndPositionsGiveTheSameValuesWhicheverRobotIsFirst() throws Exception {
         assertEquals(8, Shadowing.of(SimulatorConfig.read(SimulatorSettings.ALL, Map.of("shadowing.sigma", "8")).values()).sigma());
         Shadowing one = new Shadowing(10, 5, 42);

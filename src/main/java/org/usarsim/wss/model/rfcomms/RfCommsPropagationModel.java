@@ -17,7 +17,6 @@ import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.simulator.PollClock;
 import org.usarsim.wss.model.simulator.ReportedRobot;
-import org.usarsim.wss.model.simulator.Shadowing;
 import org.usarsim.wss.model.simulator.SimulatorModel;
 
 /**
@@ -45,14 +44,14 @@ public class RfCommsPropagationModel extends SimulatorModel {
     /** The presets, by the value of rfcomms.preset: gz-sim's defaults and the SubT simulator's. */
     static final Map<String, RfChannel> PRESETS = Map.of("gz-sim", RfChannel.GZ_SIM, "subt", RfChannel.SUBT);
 
-    /** The simulator models' keys this model has no use for: the log-distance formula's and the shadowing's (radio.seed it uses). */
+    /** The simulator models' keys this model has no use for: the log-distance formula's and the shadowing's (the run's wss.seed it uses). */
     private static final Set<String> NOT_USED = Set.of("distance.pd0", "distance.n", "distance.d0", "shadowing.sigma",
             "shadowing.distance");
 
     private final List<Setting> settings = declare(super.settings());
     /** The channel of the current run (gz-sim's before the first start). */
     private volatile RfChannel channel = RfChannel.GZ_SIM;
-    /** The run's radio.seed, mixed into every datagram's draws. */
+    /** The run's wss.seed, mixed into every datagram's draws. */
     private volatile long seed;
     /** Each robot's radio's capacity windows, sending and receiving, of the current run. */
     private volatile Map<String, CapacityWindow> sending = new ConcurrentHashMap<>();
@@ -133,7 +132,7 @@ public class RfCommsPropagationModel extends SimulatorModel {
     @Override
     protected void started(ModelSettings values) throws ModelStartException {
         channel = channelOf(values);
-        seed = values.getInt(Shadowing.SEED, 0) * 0x9E3779B97F4A7C15L;
+        seed = values.getLong(ModelSettings.SEED, 0) * 0x9E3779B97F4A7C15L;
         sending = new ConcurrentHashMap<>();
         receiving = new ConcurrentHashMap<>();
         rules = new ConcurrentHashMap<>();
@@ -179,7 +178,7 @@ public class RfCommsPropagationModel extends SimulatorModel {
      * RFComms' AttemptSend for a datagram from {@code from} to {@code to}: refused when the sender's
      * window is full (else counted there), lost by the drawn power's BER at the distance the last
      * poll knew (lost when either position is unknown), refused when the receiver's window is full.
-     * The draws come from the port's generator and {@code radio.seed}: the same traffic and seeds
+     * The draws come from the port's generator and {@code wss.seed}: the same traffic and seeds
      * lose the same datagrams.
      */
     DatagramLoss datagramLoss(String from, String to) {
@@ -192,7 +191,7 @@ public class RfCommsPropagationModel extends SimulatorModel {
             if (!admitted(sending, from, nowNs, bytes)) {
                 return true;
             }
-            // the port's generator gives the datagram's own, which radio.seed changes: the draws depend on both seeds alone
+            // the port's generator gives the datagram's own, which wss.seed changes: the draws depend on both seeds alone
             if (channel.lost(a.get().distanceTo(b.get()), bytes, new SplittableRandom(random.nextLong() ^ seed))) {
                 return true;
             }

@@ -24,12 +24,14 @@ import org.usarsim.wss.model.RobotPair;
  */
 public final class Shadowing {
 
-    /** The settings: the sigma in dB (0: none), the decorrelation distance in metres, the seed. */
+    /**
+     * The settings: the sigma in dB (0: none), the decorrelation distance in metres. The seed is the
+     * run's, {@link ModelSettings#SEED} ({@code wss.seed}), which the server passes as a value.
+     */
     public static final String SIGMA = "shadowing.sigma";
     public static final String DISTANCE = "shadowing.distance";
-    public static final String SEED = "radio.seed";
-    /** The three, in the order the CSV event log writes them at a run's start. */
-    public static final List<String> KEYS = List.of(SIGMA, DISTANCE, SEED);
+    /** The two, in the order the CSV event log writes them at a run's start (before wss.seed). */
+    public static final List<String> KEYS = List.of(SIGMA, DISTANCE);
 
     /** The cosines summed per pair. */
     static final int FEATURES = 64;
@@ -57,7 +59,7 @@ public final class Shadowing {
     /** The shadowing a run's checked settings ask for: {@link #NONE} with a sigma of 0. */
     static Shadowing of(ModelSettings settings) {
         double sigma = settings.getDouble(SIGMA, 0);
-        return sigma > 0 ? new Shadowing(sigma, settings.getDouble(DISTANCE, 5), settings.getInt(SEED, 0)) : NONE;
+        return sigma > 0 ? new Shadowing(sigma, settings.getDouble(DISTANCE, 5), settings.getLong(ModelSettings.SEED, 0)) : NONE;
     }
 
     /** The term in dB between two robots where they are: 0 without shadowing; the same whichever is given first. */

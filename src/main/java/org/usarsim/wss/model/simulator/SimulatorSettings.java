@@ -62,8 +62,5 @@ final class SimulatorSettings {
                             + " correlated in space (docs/models.md, \"Shadowing\"); 10 dB indoors"),
             Setting.number(Shadowing.DISTANCE, "Decorrelation distance", "5").above(0).unit("m")
                     .help("How far a robot moves before its shadowing is unrelated to the one it left (Gudmundson's model):"
-                            + " 5 m indoors, 50 m outdoors"),
-            Setting.integer(Shadowing.SEED, "Seed", 1).from(0).to(Integer.MAX_VALUE)
-                    .help("The seed of the radio's random draws (shadowing, RFComms' losses): the same seed and the same"
-                            + " positions give the same strengths, run after run"));
+                            + " 5 m indoors, 50 m outdoors"));
 }

@@ -9,14 +9,16 @@ import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Wall;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * What the map shows at one instant, gathered off the event thread (NetworkView) and never changed
  * after: the robots (each with its position, or null when the model has none, and its range
  * through open space, NaN when the model has none), a line per pair (with its rate when links are
- * shaped), the walls and the model's cutoff (NaN when it has none).
+ * shaped), the walls, the model's cutoff (NaN when it has none) and the server's routes (its
+ * base, the robots cut off from it, each pair's best route: docs/routes.md).
  */
-record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff) {
+record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff, RouteTable routes) {
 
     static final MapData EMPTY = new MapData(List.of(), List.of(), List.of(), Double.NaN);
 
@@ -24,6 +26,12 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
         robots = List.copyOf(robots);
         lines = List.copyOf(lines);
         walls = List.copyOf(walls);
+        java.util.Objects.requireNonNull(routes);
+    }
+
+    /** Without routes. */
+    MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff) {
+        this(robots, lines, walls, cutoff, RouteTable.EMPTY);
     }
 
     /**
@@ -34,6 +42,11 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
      * rate). Strengths are the model's now. Off the event thread.
      */
     static MapData gather(HubSnapshot hub, PropagationModel model) {
+        return gather(hub, model, RouteTable.EMPTY);
+    }
+
+    /** As {@link #gather(HubSnapshot, PropagationModel)}, with the server's routes (its base, who is cut off, each pair's route). */
+    static MapData gather(HubSnapshot hub, PropagationModel model, RouteTable routes) {
         List<Robot> robots = new ArrayList<>();
         for (HubSnapshot.RobotEntry entry : hub.robots()) {
             String name = entry.name();
@@ -54,7 +67,7 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
                 lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
             }
         }
-        return new MapData(robots, lines, model.walls(), model.cutoff());
+        return new MapData(robots, lines, model.walls(), model.cutoff(), routes);
     }
 
     /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */
@@ -78,6 +91,16 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
         boolean forced() {
             return state.isForced();
         }
+    }
+
+    /** The line of the pair (names in either order), or null. */
+    Line line(String a, String b) {
+        for (Line line : lines) {
+            if (line.first().equals(a) && line.second().equals(b) || line.first().equals(b) && line.second().equals(a)) {
+                return line;
+            }
+        }
+        return null;
     }
 
     /** The robot of that name, or null. */

@@ -22,8 +22,9 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>The map moves without the hub's events (the model polls positions on its own): at every poll
  * of the event thread the view thread also gathers the {@link MapData} from the model's query
- * methods (never the hub's lock) and the robots of the last snapshot, and {@link #pollMap} hands it
- * over the same way.
+ * methods (never the hub's lock) and the robots of the last snapshot, with the server's current
+ * routes ({@link Servers.Running#routes}: the one place the window reads them, for the map and the
+ * Routes tab alike), and {@link #pollMap} hands it over the same way.
  */
 final class NetworkView implements WssEventListener {
 
@@ -109,7 +110,7 @@ final class NetworkView implements WssEventListener {
                 last = from.snapshot();
             }
             HubSnapshot snapshot = last;
-            MapData map = MapData.gather(snapshot, of);
+            MapData map = MapData.gather(snapshot, of, from.routes());
             synchronized (sourceLock) {
                 if (source == from) {
                     if (hub) {

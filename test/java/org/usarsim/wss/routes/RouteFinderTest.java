@@ -170,6 +170,7 @@ class RouteFinderTest {
                                 continue;
                             }
                             List<Hop> path = Exhaustive.hopsOf(route.path(), hops);
+                            assertEquals(path, route.legs(), where);
                             assertEquals(route.path().size(), route.path().stream().distinct().count(), where);
                             assertEquals(rule.bound(path), route.rateBound(), where);
                             assertTrue(rank(rule, route) <= expected[0], where);

@@ -243,7 +243,7 @@ public final class RouteFinder {
             List<String> robots = new ArrayList<>();
             robots.add(names.get(source));
             path.forEach(hop -> robots.add(hop.to()));
-            return new Route(names.get(source), robots.get(robots.size() - 1), robots, rule.weakest(path), rule.bound(path));
+            return new Route(names.get(source), robots.get(robots.size() - 1), robots, path, rule.weakest(path), rule.bound(path));
         }
     }
 }

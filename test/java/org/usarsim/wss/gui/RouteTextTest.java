@@ -11,7 +11,8 @@ import org.usarsim.wss.routes.Route;
 class RouteTextTest {
 
     private static final Hop WEAK = new Hop("R1", "R2", -82.04, 6_000_000);
-    private static final Route THREE = new Route("Alpha", "Scout", List.of("Alpha", "R1", "R2", "Scout"), WEAK, 1_200_000);
+    private static final Route THREE = new Route("Alpha", "Scout", List.of("Alpha", "R1", "R2", "Scout"),
+            List.of(new Hop("Alpha", "R1", -70, 24_000_000), WEAK, new Hop("R2", "Scout", -75, 18_000_000)), WEAK, 1_200_000);
 
     @Test
     void theStatusLineSaysHowThenTheStartThenTheRoute() {
@@ -21,9 +22,10 @@ class RouteTextTest {
         RoutePick both = new RoutePick("Alpha", "Scout");
         assertEquals("Alpha -> Scout: 3 hops via R1, R2, bound 1.2 Mbit/s; weakest hop R1 -> R2 at 6 Mbit/s",
                 RouteText.status(both, THREE, true));
-        Route unshaped = new Route("Alpha", "Scout", THREE.path(), new Hop("R1", "R2", -82.04, 0), 0);
+        Route unshaped = new Route("Alpha", "Scout", THREE.path(), List.of(), new Hop("R1", "R2", -82.04, 0), 0);
         assertEquals("Alpha -> Scout: 3 hops via R1, R2; weakest hop R1 -> R2 at -82.0 dBm", RouteText.status(both, unshaped, false));
-        Route direct = new Route("Alpha", "Scout", List.of("Alpha", "Scout"), new Hop("Alpha", "Scout", -60, 54_000_000), 54_000_000);
+        Route direct = new Route("Alpha", "Scout", List.of("Alpha", "Scout"), List.of(new Hop("Alpha", "Scout", -60, 54_000_000)),
+                new Hop("Alpha", "Scout", -60, 54_000_000), 54_000_000);
         assertEquals("Alpha -> Scout: 1 hop, direct, bound 54 Mbit/s; weakest hop Alpha -> Scout at 54 Mbit/s",
                 RouteText.status(both, direct, true));
         assertEquals("Alpha -> Scout: no route (no chain of links up joins them)", RouteText.status(both, Route.none("Alpha", "Scout"), true));

@@ -161,7 +161,8 @@ final class MapPainter {
     /**
      * The lines first, then their labels, over every line (on their light patch) and off the
      * others' lines where they can be. A line that would run through another robot's dot (three
-     * robots in a line) is drawn as a curve bowed around it, its label along the curve.
+     * robots in a line) is drawn as a curve bowed around it, its label along the curve. While a
+     * route is drawn, the other lines are faded and only its hops are labelled ({@link RoutePainter}).
      */
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
         Map<MapData.Line, List<Point2D>> drawn = new LinkedHashMap<>();
@@ -174,7 +175,7 @@ final class MapPainter {
             Point2D control = control(a, b, t, shown, line);
             Shape path = control == null ? new Line2D.Double(a, b) : new QuadCurve2D.Double(a.getX(), a.getY(), control.getX(),
                     control.getY(), b.getX(), b.getY());
-            g.setColor(MapColours.of(line, shown.cutoff()));
+            g.setColor(route == null || onRoute(line) ? MapColours.of(line, shown.cutoff()) : RoutePainter.faded(MapColours.of(line, shown.cutoff())));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
             g.draw(path);
             labels.line(path);
@@ -189,7 +190,7 @@ final class MapPainter {
         int i = 0;
         for (Map.Entry<MapData.Line, List<Point2D>> entry : drawn.entrySet()) {
             Shape own = paths.get(i++);
-            String text = onRoute(entry.getKey()) ? "" : lineLabel(entry.getKey()); // a hop's label says it
+            String text = route != null ? "" : lineLabel(entry.getKey()); // a route drawn: its hops' labels only
             if (!text.isEmpty()) {
                 List<Point2D> abc = entry.getValue();
                 double width = metrics.stringWidth(text) + 4;

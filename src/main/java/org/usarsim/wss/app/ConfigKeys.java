@@ -29,6 +29,9 @@ final class ConfigKeys {
     /** What wss.shaping.rates takes, in words. */
     static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
+    /** The robot every other's route is watched to (docs/routes.md). */
+    static final String ROUTE_BASE = "wss.route.base";
+
     /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
             Setting.integer("wss.port", "Control port", ControlPort.DEFAULT).from(0).to(65535).noun("a port number").note("0: any free port")
@@ -95,7 +98,10 @@ final class ConfigKeys {
                     .help("A fixed UDP port forgets a sender (and closes its socket toward the target) after this long without"
                             + " a datagram either way"),
             Setting.choice("wss.logLevel", "Log level", "INFO", List.of("SEVERE", "WARNING", "INFO", "FINE", "FINER", "FINEST"))
-                    .help("How much the log says; FINE adds every control command and its reply"));
+                    .help("How much the log says; FINE adds every control command and its reply"),
+            Setting.text(ROUTE_BASE, "Route base", "").orEmpty("none").noun("a robot's name")
+                    .help("Robots without a route to this robot are cut off: the log and the event log say so once per change"
+                            + " (CUT_OFF, ROUTE; docs/routes.md)"));
 
     private ConfigKeys() {
     }

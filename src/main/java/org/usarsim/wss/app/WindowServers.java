@@ -49,6 +49,7 @@ final class WindowServers implements Servers {
         Path recording = record ? configFile.record().orElseGet(() -> Recorder.runFileIn(configFile.eventLogDir())) : null;
         Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null, recording);
         server.hub().addListener(listener);
+        server.hub().setRouteBase(configFile.routeBase());
         current.set(server);
         try {
             server.start();

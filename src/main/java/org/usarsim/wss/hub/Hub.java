@@ -105,11 +105,12 @@ public final class Hub implements AutoCloseable {
         Descriptors descriptors = new Descriptors(executor::giveBackRemembered);
         LinkSide linkSide = new LinkSide(executor, answers, config, warnings, keepAlive, descriptors, events, airtime, clock, LOG);
         this.opener = new PortOpener(executor, applier, portSelector, linkSide, descriptors, answers, config);
-        this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors);
-        this.modelSide = new ModelSide(executor, answers);
+        this.routes = new RouteKeeper(this::snapshot, RouteRule.of(config.shaping()), executor::announce);
+        this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors,
+                routes::current);
+        this.modelSide = new ModelSide(executor, answers, routes::stale);
         this.sampler = config.shaping().on() ? new Sampler(modelSide::measure) : null;
         events.add(new EventLogger(warnings));
-        this.routes = new RouteKeeper(this::snapshot, RouteRule.of(config.shaping()), null, table -> { });
         events.add(routes);
     }
 

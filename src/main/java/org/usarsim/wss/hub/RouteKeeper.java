@@ -6,8 +6,11 @@ import java.util.function.Consumer;
 import java.util.function.Supplier;
 import java.util.logging.Level;
 import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.routes.BaseWatch;
+import org.usarsim.wss.routes.Route;
 import org.usarsim.wss.routes.RouteFinder;
 import org.usarsim.wss.routes.RouteListener;
 import org.usarsim.wss.routes.RouteRule;
@@ -18,7 +21,8 @@ import org.usarsim.wss.routes.RouteTable;
  * when a pair, a robot, a rate or a poll changed something, and one daemon thread,
  * {@code wss-routes}, that recomputes them from a {@link HubSnapshot} (taken off the hub's lock but
  * for its copy), coalescing every change that came meanwhile; a new table, when it differs from the
- * last, is handed to the {@link RouteListener}s and to {@code changed} (the base's lines).
+ * last, is handed to the {@link RouteListener}s, and what it changed of the robots' routes to the
+ * base ({@link BaseWatch}) to the hub's events.
  */
 final class RouteKeeper implements WssEventListener {
 
@@ -26,7 +30,10 @@ final class RouteKeeper implements WssEventListener {
 
     private final Supplier<HubSnapshot> snapshots;
     private final RouteRule rule;
-    private final Consumer<RouteTable> changed;
+    /** Where the base's lines go: the hub's events, in order with the rest. */
+    private final Consumer<HubEvent> announce;
+    /** Only on the routes' thread. */
+    private final BaseWatch baseWatch = new BaseWatch();
     private final List<RouteListener> listeners = new CopyOnWriteArrayList<>();
     private volatile RouteTable current = RouteTable.EMPTY;
     /** Guarded by this. */
@@ -35,11 +42,10 @@ final class RouteKeeper implements WssEventListener {
     private String base;
     private Thread thread;
 
-    RouteKeeper(Supplier<HubSnapshot> snapshots, RouteRule rule, String base, Consumer<RouteTable> changed) {
+    RouteKeeper(Supplier<HubSnapshot> snapshots, RouteRule rule, Consumer<HubEvent> announce) {
         this.snapshots = snapshots;
         this.rule = rule;
-        this.base = base;
-        this.changed = changed;
+        this.announce = announce;
     }
 
     synchronized void start() {
@@ -121,7 +127,11 @@ final class RouteKeeper implements WssEventListener {
                 LOG.log(Level.WARNING, "a route listener failed: " + e, e);
             }
         }
-        changed.accept(table);
+        for (BaseWatch.Change change : baseWatch.next(table)) {
+            Route route = change.route();
+            announce.accept(change.cutOff() ? new HubEvent.CutOff(change.robot())
+                    : new HubEvent.RoutedToBase(change.robot(), route.hops(), route.pathText(), route.rateBound()));
+        }
     }
 
     // ---- what makes the routes stale: every change of robots, pairs, rates or a poll; not data ----

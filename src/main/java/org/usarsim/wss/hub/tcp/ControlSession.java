@@ -13,6 +13,8 @@ import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.Force;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.model.Replay;
@@ -129,6 +131,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (command.type().equals("FORCE") && !command.hasNoSegment()) {
             return force(command); // an operator's, not a robot's: no INIT needed
         }
+        if (command.type().equals("ROUTE") && !command.hasNoSegment()) {
+            return route(command); // an operator's too
+        }
         if (command.type().equals("REPLAY")) {
             return replay(command); // an operator's too; alone, it asks where the replay is
         }
@@ -198,9 +203,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
      */
     private String force(Command command) throws ProtocolException {
         if (!hub.isOperator(address)) {
-            hub.warn(LOG, "operator commands refused", address,
-                    peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators", null);
-            return Replies.error(Replies.NOT_AN_OPERATOR);
+            return refused("FORCE");
         }
         String first = Arguments.robot(command);
         String second = Arguments.peer(command);
@@ -245,6 +248,34 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         return Replies.forceOk();
     }
 
+    /** An operator command from an address not in wss.operators: said (limited), and its error. */
+    private String refused(String what) {
+        hub.warn(LOG, "operator commands refused", address,
+                peer + ": " + what + " refused: " + address.getHostAddress() + " is not in wss.operators", null);
+        return Replies.error(Replies.NOT_AN_OPERATOR);
+    }
+
+    /**
+     * The operator command ROUTE (docs/routes.md, docs/protocol.md section 9): {@code ROUTE {Robot A} {Peer B}}, the
+     * best route from A to B as last found. Only from an address of wss.operators, as FORCE: a
+     * robot's own routing must find what the WSS knows; the names need not be registered.
+     */
+    private String route(Command command) throws ProtocolException {
+        if (!hub.isOperator(address)) {
+            return refused("ROUTE");
+        }
+        String from = Arguments.robot(command);
+        String to = Arguments.peer(command);
+        if (from.equals(to)) {
+            return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
+        }
+        RouteTable routes = hub.routes();
+        Route route = routes.route(from, to);
+        long rate = routes.rule().shaped() ? route.rateBound() : -1;
+        return route.exists() ? Replies.route(from, to, route.hops(), route.pathText(), route.weakest().toString(), rate)
+                : Replies.noRoute(from, to, rate);
+    }
+
     /**
      * The operator command REPLAY (docs/protocol.md section 8): {@code REPLAY {Time s} {Speed x} {State Pause|Play}},
      * any of them or none (then it only asks). Only from an address of wss.operators, and only while
@@ -252,9 +283,7 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
      */
     private String replay(Command command) throws ProtocolException {
         if (!hub.isOperator(address)) {
-            hub.warn(LOG, "operator commands refused", address,
-                    peer + ": REPLAY refused: " + address.getHostAddress() + " is not in wss.operators", null);
-            return Replies.error(Replies.NOT_AN_OPERATOR);
+            return refused("REPLAY");
         }
         Optional<Replay> found = hub.replay();
         if (found.isEmpty()) {

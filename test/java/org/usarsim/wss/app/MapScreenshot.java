@@ -61,7 +61,8 @@ import org.usarsim.wss.world.WorldServer;
  * taken before the replay model existed). With {@code screenshot.route=A,B} every robot asks a DNS of
  * every other too (routes go over the pairs the hub knows), and the map draws the route from A to B
  * (docs/images/map-route.png, with {@code wss.route.base} for the cut-off robots); with
- * {@code screenshot.tab=Routes} the window shows that tab instead of the map (docs/images/routes-table.png).
+ * {@code screenshot.tab=Routes} the window shows that tab instead of the map, with {@code screenshot.filter=TEXT}
+ * typed in its filter (docs/images/routes-table.png).
  *
  *     xvfb-run -a -s "-screen 0 1280x900x24" java -cp target/classes:target/test-classes \
  *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png [KEY=VALUE...]
@@ -84,6 +85,7 @@ public final class MapScreenshot {
         String fakeReplay = (String) properties.remove("screenshot.replay");
         String route = (String) properties.remove("screenshot.route");
         String tab = (String) properties.remove("screenshot.tab");
+        String filter = (String) properties.remove("screenshot.filter");
         long millis = (long) (Double.parseDouble(args[2]) * 1000);
         String selected = args[3];
         Path out = Path.of(args[4]);
@@ -164,6 +166,9 @@ public final class MapScreenshot {
         }
         if (tab != null) {
             map.showTab(tab);
+        }
+        if (filter != null) {
+            map.filter("routes", filter);
         }
         Thread.sleep(500); // a poll and a refresh of the window after the last move
         if (route != null) {

@@ -191,6 +191,11 @@ public final class MapProbe {
         });
     }
 
+    /** Types the text into the filter field of the table of that name ("routes", say). */
+    public void filter(String table, String text) {
+        Gui.run(() -> Gui.find(frame.getContentPane(), javax.swing.JTextField.class, table + "Filter").setText(text));
+    }
+
     /** Picks the two robots whose route the map draws, as a click on each does. */
     public void pick(String from, String to) {
         Gui.run(() -> map.pick(RoutePick.NONE.click(from).click(to)));

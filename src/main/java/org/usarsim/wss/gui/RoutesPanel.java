@@ -9,7 +9,8 @@ import org.usarsim.wss.routes.RouteTable;
  * To, Hops (empty when there is none), Route (the robots in order, or "no route"), Weakest hop
  * (its pair, strength and with links shaped rate) and Rate bound (with links shaped, the rate
  * one stream could have over the whole route; {@link RateCell}). Filtered as the other tables, by
- * "From To"; rows replaced only when the route table changed.
+ * "From To"; rows replaced only when the route table changed. A route longer than its column is
+ * cut, its whole text the cell's tooltip ({@link SidewaysTable}).
  */
 final class RoutesPanel extends FilteredTablePanel<Route> {
 
@@ -28,14 +29,13 @@ final class RoutesPanel extends FilteredTablePanel<Route> {
                         "The route's weakest link: the slowest with links shaped, the weakest in dBm without"),
                 new RowsModel.Column<>("Rate bound", RateCell.class, route -> new RateCell(route.rateBound()), "Rate bound",
                         "With links shaped, the rate one stream could have over the whole route; - when not shaped or no route")));
-        leastWidths(StatsPanel.NAME, StatsPanel.NAME, "99", "Explorer1234 > Relay > Explorer1234", "Explorer1234 > Relay, -100.0 dBm, 54 Mbit/s",
-                "54 Mbit/s");
-        // A long route: the column grows to it (and the table scrolls sideways) rather than cut it.
-        fitsContent(ROUTE_COLUMN);
+        // A route of three hops whole, and at the size the window opens one of five or six; a longer one may be cut (its
+        // whole text is the cell's tooltip), so that the Weakest hop and the Rate bound show beside it rather than a
+        // sideways scroll away.
+        leastWidths(StatsPanel.NAME, StatsPanel.NAME, "99", "Explorer1234 > Relay1 > Relay2 > Scout",
+                "Explorer1234 > Relay1, -100.0 dBm, 54 Mbit/s", "54 Mbit/s");
+        narrow(0, 1, 2, 4, 5); // the room the window has beyond the least widths goes to the route
     }
-
-    /** The Route column, by model index. */
-    private static final int ROUTE_COLUMN = 3;
 
     /** Event thread: the routes of this table. */
     void show(RouteTable routes) {

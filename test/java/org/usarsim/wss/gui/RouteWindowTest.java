@@ -24,7 +24,6 @@ import javax.swing.JComponent;
 import javax.swing.JTabbedPane;
 import javax.swing.JTable;
 import javax.swing.JTextField;
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Tag;
 import org.junit.jupiter.api.Test;
@@ -98,26 +97,27 @@ class RouteWindowTest {
     }
 
     private OpenWindow window;
-    private final List<TestRobot> robots = new ArrayList<>();
 
     @BeforeAll
     static void display() {
         Gui.requireDisplay();
     }
 
-    @AfterEach
-    void close() throws Exception {
-        for (TestRobot robot : robots) {
-            robot.close();
-        }
-        if (window != null) {
-            window.close();
+    @Test
+    void twoClicksPickTheRouteTheMapDrawsAndTheRoutesTabListsEveryPair() throws Exception {
+        List<TestRobot> robots = new ArrayList<>();
+        try (OpenWindow opened = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(ChainModel::new)),
+                "ChainModel")) {
+            window = opened;
+            pickAndList(robots);
+        } finally {
+            for (TestRobot robot : robots) {
+                robot.close();
+            }
         }
     }
 
-    @Test
-    void twoClicksPickTheRouteTheMapDrawsAndTheRoutesTabListsEveryPair() throws Exception {
-        window = new OpenWindow(TestHub.config(true, 65536, 600, 1000, 30), List.of(ModelProvider.of(ChainModel::new)), "ChainModel");
+    private void pickAndList(List<TestRobot> robots) throws Exception {
         JButton start = onEdt(() -> find(window.frame.getContentPane(), JButton.class, "start"));
         run(start::doClick);
         until("the server runs", () -> start.getText().equals("Stop"));

@@ -141,8 +141,8 @@ class RouteFinderTest {
         long[] rates = {6 * M, 9 * M, 12 * M, 18 * M, 24 * M, 36 * M, 48 * M, 54 * M};
         int pairs = 0;
         int best = 0;
-        for (int round = 0; round < 300; round++) {
-            int n = 3 + random.nextInt(5);
+        for (int round = 0; round < 120; round++) {
+            int n = 3 + random.nextInt(4);
             List<String> robots = new ArrayList<>();
             for (int i = 0; i < n; i++) {
                 robots.add("R" + i);

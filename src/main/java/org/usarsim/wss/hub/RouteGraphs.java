@@ -11,12 +11,12 @@ import org.usarsim.wss.routes.RouteRule;
  * every pair whose state lets it talk now (up by the model or forced up; {@code PairState.isUp}),
  * each with the model's strength and, with links shaped, the pair's rate that way.
  */
-final class RouteGraphs {
+public final class RouteGraphs {
 
     private RouteGraphs() {
     }
 
-    static RouteGraph of(HubSnapshot snapshot, RouteRule rule, String base) {
+    public static RouteGraph of(HubSnapshot snapshot, RouteRule rule, String base) {
         List<String> robots = snapshot.robots().stream().map(HubSnapshot.RobotEntry::name).toList();
         List<Hop> hops = new ArrayList<>();
         for (HubSnapshot.PairEntry pair : snapshot.pairs()) {

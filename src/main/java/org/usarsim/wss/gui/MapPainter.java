@@ -45,12 +45,10 @@ final class MapPainter {
     /** The picked route drawn over the lines ({@link RoutePainter}); null: none. */
     private final DrawnRoute route;
 
-    /** A painting of a canvas of this size, font and background, {@code selected} the robot whose range is drawn (null: none). */
-    MapPainter(int width, int height, Font font, Color background, String selected) {
-        this(width, height, font, background, selected, null);
-    }
-
-    /** As the other, with the picked route drawn over the lines (null: none). */
+    /**
+     * A painting of a canvas of this size, font and background, {@code selected} the robot whose
+     * range is drawn (null: none), {@code route} the picked route drawn over the lines (null: none).
+     */
     MapPainter(int width, int height, Font font, Color background, String selected, DrawnRoute route) {
         this.width = width;
         this.height = height;
@@ -175,7 +173,8 @@ final class MapPainter {
             Point2D control = control(a, b, t, shown, line);
             Shape path = control == null ? new Line2D.Double(a, b) : new QuadCurve2D.Double(a.getX(), a.getY(), control.getX(),
                     control.getY(), b.getX(), b.getY());
-            g.setColor(route == null || onRoute(line) ? MapColours.of(line, shown.cutoff()) : RoutePainter.faded(MapColours.of(line, shown.cutoff())));
+            Color colour = MapColours.of(line, shown.cutoff());
+            g.setColor(route == null || onRoute(line) ? colour : RoutePainter.faded(colour));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
             g.draw(path);
             labels.line(path);

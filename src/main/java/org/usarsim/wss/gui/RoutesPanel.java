@@ -39,7 +39,7 @@ final class RoutesPanel extends FilteredTablePanel<Route> {
 
     /** Event thread: the routes of this table. */
     void show(RouteTable routes) {
-        if (!routes.equals(shown)) {
+        if (routes != shown && !routes.equals(shown)) { // the same table at most ticks: no comparison then
             shown = routes;
             show(routes.all());
         }

@@ -156,6 +156,8 @@ class RouteWindowTest {
         assertTrue(onEdt(() -> near(paint(map), map.screenOf("Lost"), MapSymbols.CUT_OFF)), "Lost drawn cut off");
         assertTrue(onEdt(() -> near(paint(map), map.screenOf("Alpha"), MapSymbols.BASE)), "Alpha drawn as the base");
 
+        click(map, "R1", 2); // a double click fits the map, and picks nothing
+        assertEquals(new RoutePick("Alpha", "Scout"), onEdt(map::pick), "a double click keeps the pick");
         click(map, "R1");
         assertEquals(RoutePick.NONE, onEdt(map::pick), "a third click clears");
         assertNull(onEdt(map::route));
@@ -186,14 +188,21 @@ class RouteWindowTest {
 
     /** A left click on the robot's dot, as the mouse gives it. */
     private static void click(MapPanel map, String robot) {
+        click(map, robot, 1);
+    }
+
+    /** As many left clicks on the robot's dot as {@code clicks}, one after the other: a double click for 2. */
+    private static void click(MapPanel map, String robot, int clicks) {
         run(() -> {
             Point2D at = map.screenOf(robot);
             JComponent canvas = map.canvas();
             long now = System.currentTimeMillis();
-            canvas.dispatchEvent(new MouseEvent(canvas, MouseEvent.MOUSE_PRESSED, now, MouseEvent.BUTTON1_DOWN_MASK,
-                    (int) Math.round(at.getX()), (int) Math.round(at.getY()), 1, false, MouseEvent.BUTTON1));
-            canvas.dispatchEvent(new MouseEvent(canvas, MouseEvent.MOUSE_RELEASED, now, 0,
-                    (int) Math.round(at.getX()), (int) Math.round(at.getY()), 1, false, MouseEvent.BUTTON1));
+            for (int count = 1; count <= clicks; count++) {
+                canvas.dispatchEvent(new MouseEvent(canvas, MouseEvent.MOUSE_PRESSED, now, MouseEvent.BUTTON1_DOWN_MASK,
+                        (int) Math.round(at.getX()), (int) Math.round(at.getY()), count, false, MouseEvent.BUTTON1));
+                canvas.dispatchEvent(new MouseEvent(canvas, MouseEvent.MOUSE_RELEASED, now, 0,
+                        (int) Math.round(at.getX()), (int) Math.round(at.getY()), count, false, MouseEvent.BUTTON1));
+            }
         });
     }
 

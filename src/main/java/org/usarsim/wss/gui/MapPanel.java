@@ -220,6 +220,8 @@ final class MapPanel extends JPanel {
     private final class Canvas extends JComponent {
 
         private Point2D dragFrom;
+        /** The pick before the last single click: a double click's first click is taken back. */
+        private RoutePick beforeClick = RoutePick.NONE;
 
         Canvas() {
             setOpaque(true);
@@ -235,9 +237,10 @@ final class MapPanel extends JPanel {
                         dragFrom = e.getPoint();
                         if (e.getClickCount() == 2) {
                             userTransform = null;
-                            repaint();
+                            pick(beforeClick); // a double click fits; its first click picks nothing
                         } else {
                             String robot = robotAt(e.getX(), e.getY());
+                            beforeClick = pick;
                             if (robot != null) {
                                 select(robot);
                                 pick(pick.click(robot));

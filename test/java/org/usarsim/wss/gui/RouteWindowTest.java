@@ -38,7 +38,8 @@ import org.usarsim.wss.model.StubModel;
  * Issue 34, item 3, on the real window under a display: robots in a chain, 10 m apart with a range
  * of 12 m (Alpha, R1, R2, R3, Scout) and Lost 30 m off it, Alpha the base. A click on Alpha's dot and
  * one on Scout's picks the route, which the map draws over four hops with their strengths and the
- * status line says; a third click clears, and so does Escape; a click still selects the robot.
+ * status line says; a double click keeps the pick; a third click clears, and so does Escape; a click
+ * still selects the robot.
  * Lost is drawn cut off. The Routes tab lists every ordered pair and filters them.
  */
 @Tag("slow")

@@ -44,24 +44,23 @@ public final class RouteFinder {
             index.put(names.get(i), i);
         }
         int n = names.size();
-        List<Hop> usable = new ArrayList<>();
-        for (Hop hop : graph.hops()) {
-            Integer from = index.get(hop.from());
-            Integer to = index.get(hop.to());
+        List<long[]> usable = new ArrayList<>(); // {from x n + to, index in the graph's hops}
+        List<Hop> given = graph.hops();
+        for (int h = 0; h < given.size(); h++) {
+            Integer from = index.get(given.get(h).from());
+            Integer to = index.get(given.get(h).to());
             if (from != null && to != null && !from.equals(to)) {
-                usable.add(hop);
+                usable.add(new long[] {(long) from * n + to, h});
             }
         }
-        usable.sort((a, b) -> {
-            int byFrom = Integer.compare(index.get(a.from()), index.get(b.from()));
-            return byFrom != 0 ? byFrom : Integer.compare(index.get(a.to()), index.get(b.to()));
-        });
-        hops = usable.toArray(new Hop[0]);
+        usable.sort((a, b) -> Long.compare(a[0], b[0]));
+        hops = new Hop[usable.size()];
         hopTo = new int[hops.length];
         outStart = new int[n + 1];
         for (int h = 0; h < hops.length; h++) {
-            hopTo[h] = index.get(hops[h].to());
-            outStart[index.get(hops[h].from()) + 1]++;
+            hops[h] = given.get((int) usable.get(h)[1]);
+            hopTo[h] = (int) (usable.get(h)[0] % n);
+            outStart[(int) (usable.get(h)[0] / n) + 1]++;
         }
         for (int i = 0; i < n; i++) {
             outStart[i + 1] += outStart[i];
@@ -100,20 +99,35 @@ public final class RouteFinder {
         return rule == RouteRule.FASTEST_SHARED_AIRTIME ? hop.bitsPerSecond() : 0;
     }
 
-    /** Every ordered pair's best route over the graph. */
+    /** Every ordered pair's best route over the graph, each robot's found when first asked ({@link RouteTable}). */
     public static RouteTable table(RouteGraph graph) {
-        return new RouteFinder(graph).table();
+        return new RouteTable(graph, new RouteFinder(graph));
     }
 
-    /** Every ordered pair's best route. */
-    public RouteTable table() {
-        Map<String, Map<String, Route>> all = new HashMap<>();
-        for (String robot : names) {
-            Map<String, Route> to = new HashMap<>();
-            from(robot).forEach(route -> to.put(route.to(), route));
-            all.put(robot, to);
+    /**
+     * The best routes from every robot that can reach {@code target} to it, by source: one search
+     * over the hops turned round (a route's rank and hops are the same either way: the same
+     * consecutive hops), each route turned back.
+     */
+    public List<Route> to(String target) {
+        List<Hop> turned = new ArrayList<>(hops.length);
+        Map<Hop, Hop> original = new HashMap<>();
+        for (Hop hop : hops) {
+            Hop back = new Hop(hop.to(), hop.from(), hop.strength(), hop.bitsPerSecond());
+            turned.add(back);
+            original.put(back, hop);
         }
-        return new RouteTable(rule, base, names, all);
+        List<Route> routes = new ArrayList<>();
+        for (Route back : new RouteFinder(new RouteGraph(names, turned, rule, base)).from(target)) {
+            List<String> path = new ArrayList<>(back.path());
+            Collections.reverse(path);
+            List<Hop> legs = new ArrayList<>();
+            for (int i = back.legs().size() - 1; i >= 0; i--) {
+                legs.add(original.get(back.legs().get(i)));
+            }
+            routes.add(new Route(path.get(0), target, path, legs, rule.weakest(legs), rule.bound(legs)));
+        }
+        return routes;
     }
 
     /** The best routes from one robot to each other it can reach, by destination (none when it is not in the graph). */

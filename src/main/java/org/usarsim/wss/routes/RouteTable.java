@@ -5,29 +5,37 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 
 /**
- * Every ordered pair's best route at one instant ({@link RouteFinder#table}), with the rule it was
- * found by and the base robots are cut off from. Immutable; equal when the routes are.
+ * Every ordered pair's best route over one {@link RouteGraph} ({@link RouteFinder#table}), with the
+ * rule it was found by and the base robots are cut off from. Immutable, and found lazily: a
+ * robot's routes are searched when first asked (one search, about 1/N of the whole table), every
+ * robot's route to the base by one search from the base; safe on any thread. Two tables are
+ * equal when their graphs are (the same robots, hops, rule and base: the same routes).
  */
 public final class RouteTable {
 
     /** No robots, no routes, no base. */
-    public static final RouteTable EMPTY = new RouteTable(RouteRule.STRONGEST, null, List.of(), Map.of());
+    public static final RouteTable EMPTY = RouteFinder.table(RouteGraph.empty(RouteRule.STRONGEST, null));
 
     private final RouteRule rule;
     private final String base;
     private final List<String> robots;
-    /** From, to: the route (only those that exist). */
-    private final Map<String, Map<String, Route>> routes;
+    private final Set<Hop> hops;
+    private final RouteFinder finder;
+    /** From, to: the routes found so far (those that exist). */
+    private final Map<String, Map<String, Route>> found = new ConcurrentHashMap<>();
+    /** Each robot's route to the base, once asked. */
+    private volatile Map<String, Route> toBase;
 
-    RouteTable(RouteRule rule, String base, List<String> robots, Map<String, Map<String, Route>> routes) {
-        this.rule = rule;
-        this.base = base;
-        this.robots = List.copyOf(robots);
-        Map<String, Map<String, Route>> copy = new HashMap<>();
-        routes.forEach((from, to) -> copy.put(from, Map.copyOf(to)));
-        this.routes = Map.copyOf(copy);
+    RouteTable(RouteGraph graph, RouteFinder finder) {
+        this.rule = graph.rule();
+        this.base = graph.base();
+        this.robots = graph.robots().stream().distinct().sorted().toList();
+        this.hops = Set.copyOf(graph.hops());
+        this.finder = finder;
     }
 
     /** The rule the routes were found by (whether they have rates). */
@@ -45,13 +53,40 @@ public final class RouteTable {
         return robots;
     }
 
-    /** The best route from one robot to another: {@link Route#none} when there is none (or either is not here). */
+    /**
+     * The best route from one robot to another: {@link Route#none} when there is none (or either
+     * is not here). A route to the base is the one {@link #toBase} gives.
+     */
     public Route route(String from, String to) {
-        Route route = routes.getOrDefault(from, Map.of()).get(to);
-        return route == null ? Route.none(from, to) : route;
+        Route route = to.equals(base) ? toBaseRoutes().get(from) : routesFrom(from).get(to);
+        return route == null || from.equals(to) ? Route.none(from, to) : route;
     }
 
-    /** Every ordered pair of robots' route, those without one too, by from then to. */
+    private Map<String, Route> routesFrom(String from) {
+        if (!robots.contains(from)) {
+            return Map.of();
+        }
+        return found.computeIfAbsent(from, robot -> {
+            Map<String, Route> to = new HashMap<>();
+            finder.from(robot).forEach(route -> to.put(route.to(), route));
+            return to;
+        });
+    }
+
+    private Map<String, Route> toBaseRoutes() {
+        Map<String, Route> routes = toBase;
+        if (routes == null) {
+            Map<String, Route> by = new HashMap<>();
+            if (base != null) {
+                finder.to(base).forEach(route -> by.put(route.from(), route));
+            }
+            routes = Map.copyOf(by);
+            toBase = routes;
+        }
+        return routes;
+    }
+
+    /** Every ordered pair of robots' route, those without one too, by from then to (every robot's search: not on the event thread). */
     public List<Route> all() {
         List<Route> all = new ArrayList<>();
         for (String from : robots) {
@@ -68,8 +103,8 @@ public final class RouteTable {
     public List<Route> from(String robot) {
         List<Route> from = new ArrayList<>();
         for (String to : robots) {
-            Route route = routes.getOrDefault(robot, Map.of()).get(to);
-            if (route != null) {
+            Route route = route(robot, to);
+            if (route.exists()) {
                 from.add(route);
             }
         }
@@ -83,7 +118,7 @@ public final class RouteTable {
 
     /** Whether the robot is cut off: there is a base, it is not the robot, and the robot has no route to it. */
     public boolean isCutOff(String robot) {
-        return base != null && !base.equals(robot) && !route(robot, base).exists();
+        return base != null && !base.equals(robot) && !toBase(robot).exists();
     }
 
     /** The robots cut off from the base, by name (none without a base). */
@@ -94,16 +129,16 @@ public final class RouteTable {
     @Override
     public boolean equals(Object other) {
         return other instanceof RouteTable table && rule == table.rule && Objects.equals(base, table.base)
-                && robots.equals(table.robots) && routes.equals(table.routes);
+                && robots.equals(table.robots) && hops.equals(table.hops);
     }
 
     @Override
     public int hashCode() {
-        return Objects.hash(rule, base, robots, routes);
+        return Objects.hash(rule, base, robots, hops);
     }
 
     @Override
     public String toString() {
-        return "RouteTable" + all();
+        return "RouteTable" + robots + " " + hops;
     }
 }

@@ -34,7 +34,7 @@ class RouteLegendTest {
 
     @Test
     void aCompletePickDrawsItsRouteWithEachHopsRateThatWay() {
-        MapData data = new MapData(List.of(), List.of(), List.of(), Double.NaN, table("Base"));
+        MapData data = new MapData(List.of(), List.of(), List.of(), Double.NaN, table("Base"), List.of());
         assertNull(DrawnRoute.of(RoutePick.NONE, data));
         assertNull(DrawnRoute.of(new RoutePick("Base", null), data));
         DrawnRoute drawn = DrawnRoute.of(new RoutePick("Base", "Scout"), data);

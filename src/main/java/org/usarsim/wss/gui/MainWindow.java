@@ -214,7 +214,7 @@ public final class MainWindow {
         MapData mapData = view.pollMap();
         if (mapData != null) {
             map.show(mapData);
-            routes.show(mapData.routes());
+            routes.show(mapData.routes(), mapData.allRoutes());
         }
         log.append(windowLog.drain());
         replayBar.follow();

@@ -9,6 +9,7 @@ import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Wall;
+import org.usarsim.wss.routes.Route;
 import org.usarsim.wss.routes.RouteTable;
 
 /**
@@ -16,9 +17,11 @@ import org.usarsim.wss.routes.RouteTable;
  * after: the robots (each with its position, or null when the model has none, and its range
  * through open space, NaN when the model has none), a line per pair (with its rate when links are
  * shaped), the walls, the model's cutoff (NaN when it has none) and the server's routes (its
- * base, the robots cut off from it, each pair's best route: docs/routes.md).
+ * base, the robots cut off from it, each pair's best route: docs/routes.md), with every ordered
+ * pair's route found already ({@code allRoutes}: the Routes tab's rows; finding them is the search
+ * the event thread must not do).
  */
-record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff, RouteTable routes) {
+record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff, RouteTable routes, List<Route> allRoutes) {
 
     static final MapData EMPTY = new MapData(List.of(), List.of(), List.of(), Double.NaN);
 
@@ -27,11 +30,12 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
         lines = List.copyOf(lines);
         walls = List.copyOf(walls);
         java.util.Objects.requireNonNull(routes);
+        allRoutes = List.copyOf(allRoutes);
     }
 
     /** Without routes. */
     MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cutoff) {
-        this(robots, lines, walls, cutoff, RouteTable.EMPTY);
+        this(robots, lines, walls, cutoff, RouteTable.EMPTY, List.of());
     }
 
     /**
@@ -42,11 +46,14 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
      * rate). Strengths are the model's now. Off the event thread.
      */
     static MapData gather(HubSnapshot hub, PropagationModel model) {
-        return gather(hub, model, RouteTable.EMPTY);
+        return gather(hub, model, RouteTable.EMPTY, List.of());
     }
 
-    /** As {@link #gather(HubSnapshot, PropagationModel)}, with the server's routes (its base, who is cut off, each pair's route). */
-    static MapData gather(HubSnapshot hub, PropagationModel model, RouteTable routes) {
+    /**
+     * As {@link #gather(HubSnapshot, PropagationModel)}, with the server's routes (its base, who is
+     * cut off, each pair's route) and every ordered pair's route found ({@link RouteTable#all}).
+     */
+    static MapData gather(HubSnapshot hub, PropagationModel model, RouteTable routes, List<Route> allRoutes) {
         List<Robot> robots = new ArrayList<>();
         for (HubSnapshot.RobotEntry entry : hub.robots()) {
             String name = entry.name();
@@ -67,7 +74,7 @@ record MapData(List<Robot> robots, List<Line> lines, List<Wall> walls, double cu
                 lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
             }
         }
-        return new MapData(robots, lines, model.walls(), model.cutoff(), routes);
+        return new MapData(robots, lines, model.walls(), model.cutoff(), routes, allRoutes);
     }
 
     /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */

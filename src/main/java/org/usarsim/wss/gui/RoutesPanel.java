@@ -37,11 +37,11 @@ final class RoutesPanel extends FilteredTablePanel<Route> {
         narrow(0, 1, 2, 4, 5); // the room the window has beyond the least widths goes to the route
     }
 
-    /** Event thread: the routes of this table. */
-    void show(RouteTable routes) {
+    /** Event thread: the routes of this table, every ordered pair's found already (off the event thread: {@link MapData#allRoutes}). */
+    void show(RouteTable routes, List<Route> all) {
         if (routes != shown && !routes.equals(shown)) { // the same table at most ticks: no comparison then
             shown = routes;
-            show(routes.all());
+            show(all);
         }
     }
 }

@@ -64,6 +64,7 @@ class ConfigFileTest {
             Map.entry("wss.fixed", ""),
             Map.entry("wss.udpIdleSeconds", "60"),
             Map.entry("wss.logLevel", "INFO"),
+            Map.entry("wss.route.base", ""),
             Map.entry("positions", "usarsim"),
             Map.entry("positions.interval", "1000"),
             Map.entry("usarsim.host", "127.0.0.1"),

@@ -2,11 +2,9 @@ package org.usarsim.wss.bench;
 
 import java.util.ArrayList;
 import java.util.Arrays;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
 import org.usarsim.wss.hub.HubConfig;
 import org.usarsim.wss.hub.HubSnapshot;
@@ -14,11 +12,8 @@ import org.usarsim.wss.hub.RouteGraphs;
 import org.usarsim.wss.hub.TestHub;
 import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.model.ModelPoll;
+import org.usarsim.wss.model.PollingStub;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.RobotPair;
-import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.StubModel;
-import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.model.simulator.PathLoss;
 import org.usarsim.wss.routes.RouteFinder;
 import org.usarsim.wss.routes.RouteGraph;
@@ -50,52 +45,22 @@ public final class RouteBenchmark {
     private RouteBenchmark() {
     }
 
-    /** Polls as a simulator model does: the poll told, then every pair's state in one go. */
-    static final class MovingMesh extends StubModel {
-        private volatile WssEventListener listener;
-        private final Map<RobotPair, Double> strengths = new ConcurrentHashMap<>();
-
-        @Override
-        public String name() {
-            return "MovingMesh";
+    /** Robot i on its circle at this time; every pair's strength by the path loss, up within the cutoff. */
+    private static void poll(PollingStub model, int robots, double seconds) {
+        List<ModelPoll.Robot> listed = new ArrayList<>();
+        double[][] at = new double[robots][];
+        for (int i = 0; i < robots; i++) {
+            at[i] = Circles.at(i, seconds);
+            listed.add(new ModelPoll.Robot("R" + i, new Position(at[i][0], at[i][1], 0), false));
         }
-
-        @Override
-        public List<Setting> settings() {
-            return List.of();
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-            this.listener = listener;
-        }
-
-        @Override
-        public double getSignalStrengthForPair(String from, String to) {
-            return strengths.getOrDefault(RobotPair.of(from, to), Double.NaN);
-        }
-
-        void poll(int robots, double seconds) {
-            List<ModelPoll.Robot> listed = new ArrayList<>();
-            double[][] at = new double[robots][];
-            for (int i = 0; i < robots; i++) {
-                at[i] = Circles.at(i, seconds);
-                listed.add(new ModelPoll.Robot("R" + i, new Position(at[i][0], at[i][1], 0), false));
+        List<ModelPoll.Pair> pairs = new ArrayList<>();
+        for (int i = 0; i < robots; i++) {
+            for (int j = i + 1; j < robots; j++) {
+                double dBm = LOSS.strength(Math.max(1, Math.hypot(at[i][0] - at[j][0], at[i][1] - at[j][1])));
+                pairs.add(new ModelPoll.Pair("R" + i, "R" + j, dBm, 0, dBm >= LOSS.cutoff()));
             }
-            List<ModelPoll.Pair> pairs = new ArrayList<>();
-            Map<RobotPair, Boolean> states = new LinkedHashMap<>();
-            for (int i = 0; i < robots; i++) {
-                for (int j = i + 1; j < robots; j++) {
-                    double dBm = LOSS.strength(Math.max(1, Math.hypot(at[i][0] - at[j][0], at[i][1] - at[j][1])));
-                    RobotPair pair = RobotPair.of("R" + i, "R" + j);
-                    strengths.put(pair, dBm);
-                    pairs.add(new ModelPoll.Pair(pair.first(), pair.second(), dBm, 0, dBm >= LOSS.cutoff()));
-                    states.put(pair, dBm >= LOSS.cutoff());
-                }
-            }
-            listener.polled(new ModelPoll(listed, List.of(), pairs, List.of()));
-            links().applyLinkStates(states);
         }
+        model.poll(listed, pairs);
     }
 
     public static void main(String[] args) throws Exception {
@@ -110,7 +75,7 @@ public final class RouteBenchmark {
         }
         ShapingConfig shaping = new ShapingConfig(true, RateTable.DEFAULT, ShapingConfig.DEFAULT_DELAY_MS, true);
         HubConfig config = TestHub.config(false, 65536, 600, 1000, 30).withShaping(shaping, Map.of());
-        MovingMesh model = new MovingMesh();
+        PollingStub model = new PollingStub();
         List<TestRobot> clients = new ArrayList<>();
         List<Long> whole = new ArrayList<>();
         List<Long> finding = new ArrayList<>();
@@ -128,7 +93,7 @@ public final class RouteBenchmark {
             long pairsUp = 0;
             while (System.nanoTime() < end) {
                 long pollAt = System.nanoTime();
-                model.poll(robots, (pollAt - start) / 1e9);
+                poll(model, robots, (pollAt - start) / 1e9);
                 long t0 = System.nanoTime();
                 HubSnapshot snapshot = server.hub.snapshot();
                 RouteGraph graph = RouteGraphs.of(snapshot, RouteRule.of(shaping), "R0");

@@ -5,10 +5,8 @@ import static org.junit.jupiter.api.Assertions.assertNotEquals;
 
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -18,11 +16,8 @@ import org.usarsim.wss.hub.TestRobot;
 import org.usarsim.wss.hub.Wait;
 import org.usarsim.wss.model.ModelPoll;
 import org.usarsim.wss.model.ModelSettings;
+import org.usarsim.wss.model.PollingStub;
 import org.usarsim.wss.model.Position;
-import org.usarsim.wss.model.RobotPair;
-import org.usarsim.wss.model.Setting;
-import org.usarsim.wss.model.StubModel;
-import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.recording.Recorder;
 import org.usarsim.wss.recording.Recording;
 import org.usarsim.wss.recording.RecordingReader;
@@ -44,42 +39,12 @@ class RouteReplayTest {
     @TempDir
     Path dir;
 
-    /** Polls as a simulator model does: the poll to the listeners, then every pair's state in one go. */
-    static final class PollingStub extends StubModel {
-        private volatile WssEventListener listener;
-        private final Map<String, Double> strengths = new ConcurrentHashMap<>();
-
-        @Override
-        public String name() {
-            return "PollingStub";
+    private static void poll(PollingStub model, List<ModelPoll.Pair> pairs) {
+        List<ModelPoll.Robot> robots = new ArrayList<>();
+        for (String name : List.of("A", "B", "C")) {
+            robots.add(new ModelPoll.Robot(name, new Position(robots.size() * 10, 0, 0), false));
         }
-
-        @Override
-        public List<Setting> settings() {
-            return List.of();
-        }
-
-        @Override
-        public void setEventListener(WssEventListener listener) {
-            this.listener = listener;
-        }
-
-        @Override
-        public double getSignalStrengthForPair(String from, String to) {
-            return strengths.getOrDefault(RobotPair.of(from, to).toString(), Double.NaN);
-        }
-
-        void poll(List<ModelPoll.Pair> pairs) {
-            List<ModelPoll.Robot> robots = new ArrayList<>();
-            for (String name : List.of("A", "B", "C")) {
-                robots.add(new ModelPoll.Robot(name, new Position(robots.size() * 10, 0, 0), false));
-            }
-            pairs.forEach(pair -> strengths.put(RobotPair.of(pair.first(), pair.second()).toString(), pair.strength()));
-            listener.polled(new ModelPoll(robots, List.of(), pairs, List.of()));
-            Map<RobotPair, Boolean> states = new LinkedHashMap<>();
-            pairs.forEach(pair -> states.put(RobotPair.of(pair.first(), pair.second()), pair.live()));
-            links().applyLinkStates(states);
-        }
+        model.poll(robots, pairs);
     }
 
     private static ModelPoll.Pair pair(String a, String b, double dBm, boolean live) {
@@ -108,10 +73,10 @@ class RouteReplayTest {
                 a.init("A", 5001);
                 b.init("B", 5002);
                 c.init("C", 5003);
-                model.poll(List.of(pair("A", "B", -50, true), pair("A", "C", -90, false), pair("B", "C", -75, true)));
+                poll(model, List.of(pair("A", "B", -50, true), pair("A", "C", -90, false), pair("B", "C", -75, true)));
                 Wait.until("A to C through B, at its rate", () -> server.hub.routes().route("A", "C").rateBound() == relayed(-50, -75));
                 first = server.hub.routes();
-                model.poll(List.of(pair("A", "B", -50, true), pair("A", "C", -70, true), pair("B", "C", -95, false)));
+                poll(model, List.of(pair("A", "B", -50, true), pair("A", "C", -70, true), pair("B", "C", -95, false)));
                 Wait.until("B to C through A", () -> server.hub.routes().route("B", "C").rateBound() == relayed(-50, -70));
                 second = server.hub.routes();
             }

@@ -185,6 +185,38 @@ class RouteFinderTest {
         assertTrue(best >= pairs * 0.995, best + " of " + pairs);
     }
 
+    /** Routes to the base come from one search from the base over the hops turned round: the same rank and hops as each robot's own. */
+    @Test
+    void aRouteToTheBaseRanksAsTheRobotsOwnSearchFindsIt() {
+        Random random = new Random(7);
+        long[] rates = {6 * M, 12 * M, 24 * M, 54 * M};
+        for (int round = 0; round < 50; round++) {
+            List<String> robots = List.of("B", "R1", "R2", "R3", "R4", "R5");
+            List<Hop> hops = new ArrayList<>();
+            for (String a : robots) {
+                for (String b : robots) {
+                    if (!a.equals(b) && random.nextDouble() < 0.5) {
+                        hops.add(new Hop(a, b, -40 - random.nextInt(50), rates[random.nextInt(rates.length)]));
+                    }
+                }
+            }
+            RouteGraph graph = new RouteGraph(robots, hops, RouteRule.FASTEST_SHARED_AIRTIME, "B");
+            RouteTable table = RouteFinder.table(graph);
+            RouteFinder finder = new RouteFinder(graph);
+            for (String robot : robots.subList(1, robots.size())) {
+                Route own = finder.from(robot).stream().filter(route -> route.to().equals("B")).findFirst().orElse(Route.none(robot, "B"));
+                Route toBase = table.toBase(robot);
+                assertEquals(own.hops(), toBase.hops(), own + " / " + toBase);
+                assertEquals(own.rateBound(), toBase.rateBound(), own + " / " + toBase);
+                assertEquals(table.route(robot, "B"), toBase);
+                if (toBase.exists()) {
+                    assertEquals(Exhaustive.hopsOf(toBase.path(), hops), toBase.legs());
+                    assertEquals(robot, toBase.from());
+                }
+            }
+        }
+    }
+
     private static long rank(RouteRule rule, Route route) {
         if (rule.shaped()) {
             return route.rateBound();

@@ -101,7 +101,7 @@ public final class RouteFinder {
 
     /** Every ordered pair's best route over the graph, each robot's found when first asked ({@link RouteTable}). */
     public static RouteTable table(RouteGraph graph) {
-        return new RouteTable(graph, new RouteFinder(graph));
+        return new RouteTable(graph);
     }
 
     /**
@@ -109,16 +109,17 @@ public final class RouteFinder {
      * over the hops turned round (a route's rank and hops are the same either way: the same
      * consecutive hops), each route turned back.
      */
-    public List<Route> to(String target) {
-        List<Hop> turned = new ArrayList<>(hops.length);
+    public static List<Route> to(RouteGraph graph, String target) {
+        RouteRule rule = graph.rule();
+        List<Hop> turned = new ArrayList<>(graph.hops().size());
         Map<Hop, Hop> original = new HashMap<>();
-        for (Hop hop : hops) {
+        for (Hop hop : graph.hops()) {
             Hop back = new Hop(hop.to(), hop.from(), hop.strength(), hop.bitsPerSecond());
             turned.add(back);
             original.put(back, hop);
         }
         List<Route> routes = new ArrayList<>();
-        for (Route back : new RouteFinder(new RouteGraph(names, turned, rule, base)).from(target)) {
+        for (Route back : new RouteFinder(new RouteGraph(graph.robots(), turned, rule, graph.base())).from(target)) {
             List<String> path = new ArrayList<>(back.path());
             Collections.reverse(path);
             List<Hop> legs = new ArrayList<>();

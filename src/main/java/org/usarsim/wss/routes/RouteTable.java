@@ -24,18 +24,20 @@ public final class RouteTable {
     private final String base;
     private final List<String> robots;
     private final Set<Hop> hops;
-    private final RouteFinder finder;
+    private final RouteGraph graph;
+    /** Made when a robot's routes are first asked (the routes to the base need none). */
+    private RouteFinder finder;
     /** From, to: the routes found so far (those that exist). */
     private final Map<String, Map<String, Route>> found = new ConcurrentHashMap<>();
     /** Each robot's route to the base, once asked. */
     private volatile Map<String, Route> toBase;
 
-    RouteTable(RouteGraph graph, RouteFinder finder) {
+    RouteTable(RouteGraph graph) {
+        this.graph = graph;
         this.rule = graph.rule();
         this.base = graph.base();
         this.robots = graph.robots().stream().distinct().sorted().toList();
         this.hops = Set.copyOf(graph.hops());
-        this.finder = finder;
     }
 
     /** The rule the routes were found by (whether they have rates). */
@@ -68,9 +70,16 @@ public final class RouteTable {
         }
         return found.computeIfAbsent(from, robot -> {
             Map<String, Route> to = new HashMap<>();
-            finder.from(robot).forEach(route -> to.put(route.to(), route));
+            finder().from(robot).forEach(route -> to.put(route.to(), route));
             return to;
         });
+    }
+
+    private synchronized RouteFinder finder() {
+        if (finder == null) {
+            finder = new RouteFinder(graph);
+        }
+        return finder;
     }
 
     private Map<String, Route> toBaseRoutes() {
@@ -78,7 +87,7 @@ public final class RouteTable {
         if (routes == null) {
             Map<String, Route> by = new HashMap<>();
             if (base != null) {
-                finder.to(base).forEach(route -> by.put(route.from(), route));
+                RouteFinder.to(graph, base).forEach(route -> by.put(route.from(), route));
             }
             routes = Map.copyOf(by);
             toBase = routes;

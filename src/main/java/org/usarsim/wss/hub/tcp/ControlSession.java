@@ -205,11 +205,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (!hub.isOperator(address)) {
             return refused("FORCE");
         }
-        String first = Arguments.robot(command);
-        String second = Arguments.peer(command);
-        if (first.equals(second)) {
-            return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
-        }
+        List<String> pair = Arguments.pair(command);
+        String first = pair.get(0);
+        String second = pair.get(1);
         String state = command.value("State");
         String wanted = state == null ? "" : state.toLowerCase(Locale.ROOT);
         if (!List.of("down", "up", "model").contains(wanted)) {
@@ -264,16 +262,12 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (!hub.isOperator(address)) {
             return refused("ROUTE");
         }
-        String from = Arguments.robot(command);
-        String to = Arguments.peer(command);
-        if (from.equals(to)) {
-            return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
-        }
+        List<String> pair = Arguments.pair(command);
         RouteTable routes = hub.routes();
-        Route route = routes.route(from, to);
+        Route route = routes.route(pair.get(0), pair.get(1));
         long rate = routes.rule().shaped() ? route.rateBound() : -1;
-        return route.exists() ? Replies.route(from, to, route.hops(), route.pathText(), route.weakest().toString(), rate)
-                : Replies.noRoute(from, to, rate);
+        return route.exists() ? Replies.route(route.from(), route.to(), route.hops(), route.pathText(), route.weakest().toString(), rate)
+                : Replies.noRoute(route.from(), route.to(), rate);
     }
 
     /**

@@ -74,6 +74,7 @@ class ConfigFileTest {
             Map.entry("wss.monitor.maxClients", "16"),
             Map.entry("wss.monitor.keystore", ""),
             Map.entry("wss.monitor.keystorePasswordFile", ""),
+            Map.entry("wss.route.base", ""),
             Map.entry("positions", "usarsim"),
             Map.entry("positions.interval", "1000"),
             Map.entry("usarsim.host", "127.0.0.1"),

@@ -58,7 +58,11 @@ import org.usarsim.wss.world.WorldServer;
  * pair and the map draws each line as wide as its rate. With {@code screenshot.replay=TIME/DURATION}
  * the model also offers a replay's controls (a {@link FakeReplay} standing at TIME of DURATION
  * seconds, at 1x, playing), so that the window shows its time bar (docs/images/replay-bar.png,
- * taken before the replay model existed).
+ * taken before the replay model existed). With {@code screenshot.route=A,B} every robot asks a DNS of
+ * every other too (routes go over the pairs the hub knows), and the map draws the route from A to B
+ * (docs/images/map-route.png, with {@code wss.route.base} for the cut-off robots); with
+ * {@code screenshot.tab=Routes} the window shows that tab instead of the map, with {@code screenshot.filter=TEXT}
+ * typed in its filter (docs/images/routes-table.png).
  *
  *     xvfb-run -a -s "-screen 0 1280x900x24" java -cp target/classes:target/test-classes \
  *         org.usarsim.wss.app.MapScreenshot WORLD PROPERTIES SECONDS ROBOT OUT.png [KEY=VALUE...]
@@ -79,6 +83,9 @@ public final class MapScreenshot {
             properties.setProperty(keyValue[0], keyValue[1]);
         }
         String fakeReplay = (String) properties.remove("screenshot.replay");
+        String route = (String) properties.remove("screenshot.route");
+        String tab = (String) properties.remove("screenshot.tab");
+        String filter = (String) properties.remove("screenshot.filter");
         long millis = (long) (Double.parseDouble(args[2]) * 1000);
         String selected = args[3];
         Path out = Path.of(args[4]);
@@ -134,14 +141,14 @@ public final class MapScreenshot {
             if (words[0].equals("robot")) {
                 Socket robot = new Socket("127.0.0.1", port);
                 // With links shaped each robot gives a port, so that the others may ask a DNS of it.
-                robot.getOutputStream().write(("INIT {Robot " + words[1] + "}" + (shaped ? " {Port 7000}" : "") + "\r\n")
+                robot.getOutputStream().write(("INIT {Robot " + words[1] + "}" + (shaped || route != null ? " {Port 7000}" : "") + "\r\n")
                         .getBytes(StandardCharsets.UTF_8));
                 readLine(robot.getInputStream());
                 robots.add(robot);
                 names.add(words[1]);
             }
         }
-        if (shaped) { // a DNS makes a pair known to the hub, which shapes it from then on
+        if (shaped || route != null) { // a DNS makes a pair known to the hub, which shapes it and routes over it from then on
             for (int i = 0; i < robots.size(); i++) {
                 for (int j = i + 1; j < robots.size(); j++) {
                     robots.get(i).getOutputStream().write(("DNS {Robot " + names.get(j) + "}\r\n").getBytes(StandardCharsets.UTF_8));
@@ -153,7 +160,20 @@ public final class MapScreenshot {
         map.showMap();
         Thread.sleep(Math.max(0, millis - (System.nanoTime() - started) / 1_000_000));
         map.select(selected);
+        if (route != null) {
+            String[] ends = route.split(",");
+            map.pick(ends[0], ends[1]);
+        }
+        if (tab != null) {
+            map.showTab(tab);
+        }
+        if (filter != null) {
+            map.filter("routes", filter);
+        }
         Thread.sleep(500); // a poll and a refresh of the window after the last move
+        if (route != null) {
+            System.out.println(map.status());
+        }
         BufferedImage image = Gui.onEdt(() -> {
             JFrame window = frame.get();
             BufferedImage shot = new BufferedImage(window.getRootPane().getWidth(), window.getRootPane().getHeight(),

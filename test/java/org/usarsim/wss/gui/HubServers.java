@@ -76,6 +76,11 @@ public final class HubServers implements Servers {
             }
 
             @Override
+            public org.usarsim.wss.routes.RouteTable routes() {
+                return hub.routes();
+            }
+
+            @Override
             public void stop() {
                 hub.close();
             }

@@ -183,6 +183,29 @@ public final class MapProbe {
         return edt(() -> line(a, b).state() == state);
     }
 
+    /** Brings the tab of this title to the front ("Routes", say). */
+    public void showTab(String title) {
+        Gui.run(() -> {
+            JTabbedPane tabs = Gui.find(frame.getContentPane(), JTabbedPane.class, "tabs");
+            tabs.setSelectedIndex(tabs.indexOfTab(title));
+        });
+    }
+
+    /** Types the text into the filter field of the table of that name ("routes", say). */
+    public void filter(String table, String text) {
+        Gui.run(() -> Gui.find(frame.getContentPane(), javax.swing.JTextField.class, table + "Filter").setText(text));
+    }
+
+    /** Picks the two robots whose route the map draws, as a click on each does. */
+    public void pick(String from, String to) {
+        Gui.run(() -> map.pick(RoutePick.NONE.click(from).click(to)));
+    }
+
+    /** The line above the map: how to pick, or the route picked. */
+    public String status() {
+        return edt(map::status);
+    }
+
     /** Selects the robot whose range the map draws. */
     public void select(String robot) {
         Gui.run(() -> map.select(robot));

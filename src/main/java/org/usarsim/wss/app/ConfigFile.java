@@ -246,6 +246,12 @@ public final class ConfigFile {
         return Level.parse(get("wss.logLevel"));
     }
 
+    /** The base robots' routes are watched to ({@code wss.route.base}), null for none (docs/routes.md). */
+    String routeBase() {
+        String base = get(ConfigKeys.ROUTE_BASE).strip();
+        return base.isEmpty() ? null : base;
+    }
+
     /** The hub's configuration: the server's settings as {@link HubConfigBuilder} builds them. */
     HubConfig hubConfig() {
         return new HubConfigBuilder(values).build();

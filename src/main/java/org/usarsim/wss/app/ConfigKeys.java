@@ -33,6 +33,9 @@ final class ConfigKeys {
     /** What wss.shaping.rates takes, in words. */
     static final String RATES_WORDS = "steps dBm:rate from the strongest signal to the weakest (-72:54M,-77:36M)";
 
+    /** The robot every other's route is watched to (docs/routes.md). */
+    static final String ROUTE_BASE = "wss.route.base";
+
     /** The server's own settings. */
     static final List<Setting> SERVER = List.of(
             Setting.integer("wss.port", "Control port", ControlPort.DEFAULT).from(0).to(65535).noun("a port number").note("0: any free port")
@@ -121,7 +124,10 @@ final class ConfigKeys {
             Setting.text(MonitorConfig.KEYSTORE, "Monitor keystore", "").orEmpty("none: plain HTTP, loopback only").noun("a file path")
                     .help("A PKCS12 keystore: the monitor serves HTTPS with its key"),
             Setting.text(MonitorConfig.KEYSTORE_PASSWORD_FILE, "Monitor keystore password", "").orEmpty("none").noun("a file path")
-                    .help("A file, readable by its owner only, whose first line is the keystore's password"));
+                    .help("A file, readable by its owner only, whose first line is the keystore's password"),
+            Setting.text(ROUTE_BASE, "Route base", "").orEmpty("none").noun("a robot's name")
+                    .help("Robots without a route to this robot are cut off: the log and the event log say so once per change"
+                            + " (CUT_OFF, ROUTE; docs/routes.md)"));
 
     private ConfigKeys() {
     }

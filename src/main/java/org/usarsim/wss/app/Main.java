@@ -208,6 +208,7 @@ public final class Main {
         try {
             server = Server.create(configFile.hubConfig(), model, configFile.modelValues(),
                     configFile.eventLog() ? configFile.eventLogDir() : null, configFile.record().orElse(null));
+            server.hub().setRouteBase(configFile.routeBase());
         } catch (Server.StartFailure e) {
             throw new RunFailure(CANNOT_START, e.getMessage());
         }

@@ -12,6 +12,8 @@ import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.Setting;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.routes.RouteListener;
+import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.recording.Recorder;
 import org.usarsim.wss.shaping.ShapingConfig;
 
@@ -49,6 +51,7 @@ final class WindowServers implements Servers {
         Server server = Server.create(config, model, values, eventLog ? configFile.eventLogDir() : null, recording);
         server.hub().addListener(listener);
         server.monitor(configFile.monitorConfig());
+        server.hub().setRouteBase(configFile.routeBase());
         current.set(server);
         try {
             server.start();
@@ -80,6 +83,21 @@ final class WindowServers implements Servers {
             @Override
             public void release(String robotA, String robotB) {
                 server.hub().release(robotA, robotB);
+            }
+
+            @Override
+            public RouteTable routes() {
+                return server.hub().routes();
+            }
+
+            @Override
+            public void addRouteListener(RouteListener listener) {
+                server.hub().addRouteListener(listener);
+            }
+
+            @Override
+            public void removeRouteListener(RouteListener listener) {
+                server.hub().removeRouteListener(listener);
             }
 
             @Override

@@ -119,6 +119,14 @@ class FilteredTablePanel<T> extends JPanel {
         table.leastWidths(samples);
     }
 
+    /** Event thread: the columns of these model indexes never wider than their least width (numbers that need no more). */
+    void narrow(int... columns) {
+        for (int column : columns) {
+            javax.swing.table.TableColumn shown = table.getColumnModel().getColumn(table.convertColumnIndexToView(column));
+            shown.setMaxWidth(shown.getMinWidth());
+        }
+    }
+
     /** Event thread: after each change of rows, the column of model index {@code column} as wide as its widest cell. */
     void fitsContent(int column) {
         this.fitted = column;

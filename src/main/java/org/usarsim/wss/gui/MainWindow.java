@@ -35,8 +35,8 @@ import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
- * The main window (the manual's Figure 1): the control bar, three tabs ("Connections": "Connected
- * Robots", the ports and connections tables; "Map"; "Link statistics"), under them the time bar
+ * The main window (the manual's Figure 1): the control bar, four tabs ("Connections": "Connected
+ * Robots", the ports and connections tables; "Map"; "Link statistics"; "Routes"), under them the time bar
  * while the model replays a recording ({@link ReplayBar}), and the log. Starts and
  * stops a server through {@link Servers}, off the event thread; shows the hub through a
  * {@link NetworkView} and the log through a {@link WindowLog}, both taken on a Swing timer every
@@ -56,6 +56,7 @@ public final class MainWindow {
     private final LinksPanel links = new LinksPanel();
     private final ForceMenu forceMenu;
     private final StatsPanel stats;
+    private final RoutesPanel routes = new RoutesPanel();
     private final LogPanel log = new LogPanel();
     /** Above the tabs while an attached window's connection is lost. */
     private final JLabel banner = new JLabel();
@@ -183,6 +184,7 @@ public final class MainWindow {
         tabs.addTab("Connections", tables);
         tabs.addTab("Map", map);
         tabs.addTab("Link statistics", stats);
+        tabs.addTab("Routes", routes);
         JPanel tabsAndReplay = new JPanel(new BorderLayout());
         tabsAndReplay.add(tabs, BorderLayout.CENTER);
         tabsAndReplay.add(replayBar, BorderLayout.SOUTH);
@@ -264,6 +266,7 @@ public final class MainWindow {
         MapData mapData = source.pollMap();
         if (mapData != null) {
             map.show(mapData);
+            routes.show(mapData.routes(), mapData.allRoutes());
         }
         log.append(source.drainLog());
         String lost = source.banner();

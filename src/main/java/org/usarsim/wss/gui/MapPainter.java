@@ -42,14 +42,20 @@ final class MapPainter {
     private final Font font;
     private final Color background;
     private final String selected;
+    /** The picked route drawn over the lines ({@link RoutePainter}); null: none. */
+    private final DrawnRoute route;
 
-    /** A painting of a canvas of this size, font and background, {@code selected} the robot whose range is drawn (null: none). */
-    MapPainter(int width, int height, Font font, Color background, String selected) {
+    /**
+     * A painting of a canvas of this size, font and background, {@code selected} the robot whose
+     * range is drawn (null: none), {@code route} the picked route drawn over the lines (null: none).
+     */
+    MapPainter(int width, int height, Font font, Color background, String selected, DrawnRoute route) {
         this.width = width;
         this.height = height;
         this.font = font;
         this.background = background;
         this.selected = selected;
+        this.route = route;
     }
 
     /** Paints {@code shown} with {@code t}; where it put the names and the labels. */
@@ -153,7 +159,8 @@ final class MapPainter {
     /**
      * The lines first, then their labels, over every line (on their light patch) and off the
      * others' lines where they can be. A line that would run through another robot's dot (three
-     * robots in a line) is drawn as a curve bowed around it, its label along the curve.
+     * robots in a line) is drawn as a curve bowed around it, its label along the curve. While a
+     * route is drawn, the other lines are faded and only its hops are labelled ({@link RoutePainter}).
      */
     private void paintLines(Graphics2D g, MapTransform t, MapData shown, LabelPlacer labels) {
         Map<MapData.Line, List<Point2D>> drawn = new LinkedHashMap<>();
@@ -166,11 +173,15 @@ final class MapPainter {
             Point2D control = control(a, b, t, shown, line);
             Shape path = control == null ? new Line2D.Double(a, b) : new QuadCurve2D.Double(a.getX(), a.getY(), control.getX(),
                     control.getY(), b.getX(), b.getY());
-            g.setColor(MapColours.of(line, shown.cutoff()));
+            Color colour = MapColours.of(line, shown.cutoff());
+            g.setColor(route == null || onRoute(line) ? colour : RoutePainter.faded(colour));
             g.setStroke(lineStroke(MapLineWidth.of(line), line.forced()));
             g.draw(path);
             labels.line(path);
             drawn.put(line, List.of(a, control == null ? middle(a, b) : control, b));
+        }
+        if (route != null) { // over the lines, its hops' labels first
+            RoutePainter.paint(g, route, (a, b) -> curve(drawn, shown.line(a, b), a), labels, font);
         }
         List<Shape> paths = labels.lines();
         g.setFont(font.deriveFont(Font.PLAIN, 10f));
@@ -178,7 +189,7 @@ final class MapPainter {
         int i = 0;
         for (Map.Entry<MapData.Line, List<Point2D>> entry : drawn.entrySet()) {
             Shape own = paths.get(i++);
-            String text = lineLabel(entry.getKey());
+            String text = route != null ? "" : lineLabel(entry.getKey()); // a route drawn: its hops' labels only
             if (!text.isEmpty()) {
                 List<Point2D> abc = entry.getValue();
                 double width = metrics.stringWidth(text) + 4;
@@ -190,6 +201,18 @@ final class MapPainter {
                 }
             }
         }
+    }
+
+    /** The line as drawn from robot {@code from}: start, control point, end; null when it is not drawn. */
+    private static List<Point2D> curve(Map<MapData.Line, List<Point2D>> drawn, MapData.Line line, String from) {
+        List<Point2D> abc = line == null ? null : drawn.get(line);
+        return abc == null || line.first().equals(from) ? abc : List.of(abc.get(2), abc.get(1), abc.get(0));
+    }
+
+    /** Whether the pair is a hop of the route drawn. */
+    private boolean onRoute(MapData.Line line) {
+        return route != null && route.hops().stream().anyMatch(hop -> hop.from().equals(line.first()) && hop.to().equals(line.second())
+                || hop.from().equals(line.second()) && hop.to().equals(line.first()));
     }
 
     /** How far a line bowed around a robot in its way passes from the straight one, at most, in pixels. */
@@ -221,7 +244,7 @@ final class MapPainter {
     }
 
     /** Text in the current colour and font on a light patch, legible over lines and walls. */
-    private void label(Graphics2D g, String text, double x, double y) {
+    static void label(Graphics2D g, String text, double x, double y) {
         FontMetrics metrics = g.getFontMetrics();
         Color ink = g.getColor();
         g.setColor(new Color(255, 255, 255, 210));
@@ -249,6 +272,7 @@ final class MapPainter {
             // On a light patch, as the labels: a wall or a line under the name does not strike it through.
             label(g, robot.name(), at.getX() + DOT, at.getY() - DOT / 2.0);
         }
+        MapSymbols.paint(g, shown.routes(), robot -> screenOf(t, shown, robot)); // after the names' patches: never under one
     }
 
     /** Where a robot's name is drawn: right of its dot, its baseline half a dot above. */
@@ -274,6 +298,7 @@ final class MapPainter {
         }
         shown.walls().stream().map(Wall::material).filter(m -> !m.isEmpty()).distinct() // walls of materials: their colours
                 .forEach(m -> entries.add(new LegendEntry(MapColours.wall(m), false, 3, m)));
+        MapSymbols.legend(shown.routes(), route != null).forEach((text, mark) -> entries.add(new LegendEntry(null, false, 0, text, mark)));
         // The scale's room at the right: the legend wraps onto a row above rather than run into it.
         int scaleLeft = width - 12 - (int) Math.round(step * t.scale()) - 12;
         for (LegendEntry entry : entries) {
@@ -282,9 +307,13 @@ final class MapPainter {
                 x = 10;
                 y -= metrics.getHeight() + 4;
             }
-            g.setColor(entry.colour());
-            g.setStroke(lineStroke(entry.width(), entry.dashed()));
-            g.drawLine(x, y - 4, x + 24, y - 4);
+            if (entry.mark() != null) {
+                entry.mark().draw(g, x + 12, y - 4);
+            } else {
+                g.setColor(entry.colour());
+                g.setStroke(lineStroke(entry.width(), entry.dashed()));
+                g.drawLine(x, y - 4, x + 24, y - 4);
+            }
             g.setColor(Color.DARK_GRAY);
             g.drawString(entry.text(), x + 30, y);
             x += 40 + metrics.stringWidth(entry.text());
@@ -301,8 +330,12 @@ final class MapPainter {
         g.drawString(label, right - pixels / 2 - metrics.stringWidth(label) / 2, y - 10);
     }
 
-    /** A line of the legend: a sample of a line drawn so, and what it means. */
-    private record LegendEntry(Color colour, boolean dashed, float width, String text) {
+    /** A line of the legend: a sample of a line drawn so (or a mark drawn around a dot), and what it means. */
+    private record LegendEntry(Color colour, boolean dashed, float width, String text, MapSymbols.Mark mark) {
+
+        LegendEntry(Color colour, boolean dashed, float width, String text) {
+            this(colour, dashed, width, text, null);
+        }
     }
 
     /**

@@ -28,8 +28,10 @@ import org.usarsim.wss.model.Wall;
  * by {@link MapColours}, as wide as {@link MapLineWidth} says (its rate, with links shaped), dashed
  * when forced, the selected robot's range as a circle, the walls, and
  * beside it the robots without a position. Fits the world until the user zooms (wheel) or pans
- * (drag); a double click fits it again. A click on a dot selects the robot; a right click on a line
- * opens the {@link ForceMenu}. Event thread only; painting ({@link MapPainter}) reads the {@link MapData} it was given.
+ * (drag); a double click fits it again. A click on a dot selects the robot and picks it as one end
+ * of a route ({@link RoutePick}: the status line above the map says how, and the route picked); a
+ * right click on a line opens the {@link ForceMenu}. Event thread only; painting ({@link MapPainter})
+ * reads the {@link MapData} it was given.
  */
 final class MapPanel extends JPanel {
 
@@ -46,6 +48,9 @@ final class MapPanel extends JPanel {
     /** The user's zoom and pan; null while the map fits the world by itself. */
     private MapTransform userTransform;
     private String selected;
+    /** The two robots picked for a route, and the line above the map that says it. */
+    private RoutePick pick = RoutePick.NONE;
+    private final JLabel status = new JLabel(RouteText.HOW);
     /** The labels' places of the last painting (tests read what the map drew). */
     private LabelPlacer lastLabels = new LabelPlacer(new Rectangle2D.Double());
 
@@ -60,8 +65,17 @@ final class MapPanel extends JPanel {
         JScrollPane scroll = new JScrollPane(list);
         scroll.setPreferredSize(new Dimension(160, 100));
         side.add(scroll, BorderLayout.CENTER);
+        status.setName("mapStatus");
+        add(status, BorderLayout.NORTH);
         add(canvas, BorderLayout.CENTER);
         add(side, BorderLayout.EAST);
+        getInputMap(WHEN_ANCESTOR_OF_FOCUSED_COMPONENT).put(javax.swing.KeyStroke.getKeyStroke("ESCAPE"), "clearRoute");
+        getActionMap().put("clearRoute", new javax.swing.AbstractAction() {
+            @Override
+            public void actionPerformed(java.awt.event.ActionEvent e) {
+                pick(RoutePick.NONE);
+            }
+        });
     }
 
     /** Shows what the last poll gathered. */
@@ -72,7 +86,38 @@ final class MapPanel extends JPanel {
             unplaced.clear();
             unplaced.addAll(without);
         }
+        showRoute();
         canvas.repaint();
+    }
+
+    /** The robots picked for a route. */
+    RoutePick pick() {
+        return pick;
+    }
+
+    /** Picks the route's robots (event thread): the map draws their route, the status line says it. */
+    void pick(RoutePick newPick) {
+        pick = Objects.requireNonNull(newPick);
+        showRoute();
+        canvas.repaint();
+    }
+
+    /** The route the map draws now, over the picture it shows; null while two robots are not picked. */
+    DrawnRoute route() {
+        return DrawnRoute.of(pick, data);
+    }
+
+    /** The status line above the map, as it reads now. */
+    String status() {
+        return status.getText();
+    }
+
+    private void showRoute() {
+        DrawnRoute route = route();
+        String text = RouteText.status(pick, route == null ? null : route.route(), route != null && route.shaped());
+        if (!text.equals(status.getText())) {
+            status.setText(text);
+        }
     }
 
     /** What the map shows now. */
@@ -175,11 +220,14 @@ final class MapPanel extends JPanel {
     private final class Canvas extends JComponent {
 
         private Point2D dragFrom;
+        /** The pick before the last single click: a double click's first click is taken back. */
+        private RoutePick beforeClick = RoutePick.NONE;
 
         Canvas() {
             setOpaque(true);
             setBackground(Color.WHITE);
             setPreferredSize(new Dimension(600, 400));
+            setFocusable(true);
             MouseAdapter mouse = new MouseAdapter() {
                 @Override
                 public void mousePressed(MouseEvent e) {
@@ -189,12 +237,15 @@ final class MapPanel extends JPanel {
                         dragFrom = e.getPoint();
                         if (e.getClickCount() == 2) {
                             userTransform = null;
-                            repaint();
+                            pick(beforeClick); // a double click fits; its first click picks nothing
                         } else {
                             String robot = robotAt(e.getX(), e.getY());
+                            beforeClick = pick;
                             if (robot != null) {
                                 select(robot);
+                                pick(pick.click(robot));
                             }
+                            requestFocusInWindow(); // Escape clears the pick
                         }
                     }
                 }
@@ -238,7 +289,7 @@ final class MapPanel extends JPanel {
         protected void paintComponent(Graphics graphics) {
             Graphics2D g = (Graphics2D) graphics.create();
             try {
-                lastLabels = new MapPainter(getWidth(), getHeight(), getFont(), getBackground(), selected).paint(g, transform(), data);
+                lastLabels = new MapPainter(getWidth(), getHeight(), getFont(), getBackground(), selected, route()).paint(g, transform(), data);
             } finally {
                 g.dispose();
             }

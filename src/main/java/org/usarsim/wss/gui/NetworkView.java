@@ -1,5 +1,6 @@
 package org.usarsim.wss.gui;
 
+import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
@@ -10,6 +11,8 @@ import java.util.logging.Logger;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * The window's read model of the hub. The hub's events (any thread) only mark it stale: an event
@@ -22,8 +25,9 @@ import org.usarsim.wss.model.WssEventListener;
  *
  * <p>The map moves without the hub's events (the model polls positions on its own): at every poll
  * of the event thread the view thread also gathers the {@link MapData} from the model's query
- * methods (never the hub's lock) and the robots of the last snapshot, and {@link #pollMap} hands it
- * over the same way.
+ * methods (never the hub's lock) and the robots of the last snapshot, with the server's current
+ * routes ({@link Servers.Running#routes}: the one place the window reads them, for the map and the
+ * Routes tab alike), and {@link #pollMap} hands it over the same way.
  */
 final class NetworkView implements WssEventListener {
 
@@ -48,6 +52,9 @@ final class NetworkView implements WssEventListener {
     private PropagationModel model;
     /** The last snapshot of the source, whose robots the map shows (view thread). */
     private HubSnapshot last = HubSnapshot.EMPTY;
+    /** The route table read last, and every ordered pair's route in it (view thread). */
+    private RouteTable routes = RouteTable.EMPTY;
+    private List<Route> allRoutes = List.of();
     /** Whether gathering the map failed since it last worked, and was said (view thread). */
     private boolean mapFailed;
 
@@ -109,7 +116,7 @@ final class NetworkView implements WssEventListener {
                 last = from.snapshot();
             }
             HubSnapshot snapshot = last;
-            MapData map = MapData.gather(snapshot, of);
+            MapData map = MapData.gather(snapshot, of, routes(from), allRoutes);
             synchronized (sourceLock) {
                 if (source == from) {
                     if (hub) {
@@ -129,6 +136,20 @@ final class NetworkView implements WssEventListener {
         } finally {
             taking.set(false);
         }
+    }
+
+    /**
+     * The server's current routes, each pair's found here when the table is new (its routes are
+     * searched when first asked: here, not on the event thread), and who is cut off from the base.
+     */
+    private RouteTable routes(Servers.Running from) {
+        RouteTable now = from.routes();
+        if (now != routes) {
+            allRoutes = now.all();
+            now.cutOff();
+            routes = now;
+        }
+        return now;
     }
 
     void close() {

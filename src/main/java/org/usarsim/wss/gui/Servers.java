@@ -5,6 +5,8 @@ import org.usarsim.wss.model.ModelProvider;
 import org.usarsim.wss.model.PropagationModel;
 import org.usarsim.wss.model.ModelSettings;
 import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.routes.RouteListener;
+import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
@@ -38,6 +40,24 @@ public interface Servers {
 
         /** Its robots, ports and links at one instant (takes the hub's lock briefly: never on the event thread). */
         HubSnapshot snapshot();
+
+        /**
+         * The routes as last computed (docs/routes.md): a reference read, no lock, cheap on any
+         * thread; {@link RouteTable#EMPTY} before the first.
+         */
+        default RouteTable routes() {
+            return RouteTable.EMPTY;
+        }
+
+        /**
+         * Told each time the routes change, on the hub's {@code wss-routes} thread (hand it to the
+         * event thread); not when they stay the same.
+         */
+        default void addRouteListener(RouteListener listener) {
+        }
+
+        default void removeRouteListener(RouteListener listener) {
+        }
 
         /** Stops it as SIGTERM does: every socket closed, the event log and the recording closed. */
         void stop();

@@ -6,6 +6,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.OptionalDouble;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 import org.usarsim.wss.hub.core.DnsResult;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.HubClock;
@@ -23,6 +24,7 @@ import org.usarsim.wss.hub.tcp.PortSelector;
 import org.usarsim.wss.hub.tcp.PortSockets;
 import org.usarsim.wss.model.Replay;
 import org.usarsim.wss.model.RobotPair;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * The hub as the control sessions see it ({@link ControlHub}): each command one step of the core
@@ -43,10 +45,13 @@ final class ControlSide extends SocketSide implements ControlHub {
     private final ModelAnswers answers;
     private final HubConfig config;
     private final HubClock clock;
+    /** The routes as last found (ROUTE). */
+    private final Supplier<RouteTable> routes;
 
     ControlSide(StepExecutor executor, PortOpener opener, ChangeApplier sockets, ModelAnswers answers, HubConfig config, HubClock clock,
-            WarningLimiter warnings, KeepAlive keepAlive, Descriptors descriptors) {
+            WarningLimiter warnings, KeepAlive keepAlive, Descriptors descriptors, Supplier<RouteTable> routes) {
         super(warnings, keepAlive, descriptors);
+        this.routes = routes;
         this.executor = executor;
         this.opener = opener;
         this.sockets = sockets;
@@ -110,6 +115,11 @@ final class ControlSide extends SocketSide implements ControlHub {
         toDrain.forEach(sockets -> sockets.stop(closes));
         closes.await();
         executor.run((core, now, out) -> core.left(name, session, now, out));
+    }
+
+    @Override
+    public RouteTable routes() {
+        return routes.get();
     }
 
     @Override

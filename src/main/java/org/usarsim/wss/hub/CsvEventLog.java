@@ -242,6 +242,18 @@ public final class CsvEventLog implements WssEventListener, AutoCloseable {
         event("RATE", from, to, bitsPerSecond);
     }
 
+    /** A robot is cut off from the base (docs/routes.md): {@code CUT_OFF,t,robot}. */
+    @Override
+    public void cutOff(String robot) {
+        event("CUT_OFF", robot);
+    }
+
+    /** A robot has a route to the base, or another one: {@code ROUTE,t,robot,hops,rate} (the rate empty unshaped). */
+    @Override
+    public void routedToBase(String robot, int hops, String path, long bitsPerSecond) {
+        event("ROUTE", robot, hops, bitsPerSecond > 0 ? Long.toString(bitsPerSecond) : "");
+    }
+
     /**
      * Stops taking events, waits (at most 10 s, for a disk that hangs) until the writer has
      * written everything queued before, with the count of any dropped, and closed the file.

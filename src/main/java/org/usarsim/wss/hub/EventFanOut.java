@@ -158,4 +158,14 @@ final class EventFanOut implements EventSink {
             }
         }
     }
+
+    @Override
+    public void cutOff(String robot) {
+        each(l -> l.cutOff(robot));
+    }
+
+    @Override
+    public void routedToBase(String robot, int hops, String path, long bitsPerSecond) {
+        each(l -> l.routedToBase(robot, hops, path, bitsPerSecond));
+    }
 }

@@ -103,6 +103,17 @@ final class EventLogger implements WssEventListener {
     }
 
     @Override
+    public void cutOff(String robot) {
+        limits.info(LOG, "routes to the base", robot + " is cut off from the base");
+    }
+
+    @Override
+    public void routedToBase(String robot, int hops, String path, long bitsPerSecond) {
+        limits.info(LOG, "routes to the base", "route " + robot + " to the base: " + path + ", " + hops + (hops == 1 ? " hop" : " hops")
+                + (bitsPerSecond > 0 ? ", " + Bitrate.format(bitsPerSecond) : ""));
+    }
+
+    @Override
     public void pairReleased(String first, String second) {
         limits.info(LOG, "released pairs", "released " + first + " - " + second + " to the model");
     }

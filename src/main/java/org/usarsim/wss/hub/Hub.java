@@ -32,6 +32,9 @@ import org.usarsim.wss.protocol.Command;
 import org.usarsim.wss.protocol.CommandParser;
 import org.usarsim.wss.protocol.ProtocolException;
 import org.usarsim.wss.protocol.Replies;
+import org.usarsim.wss.routes.RouteListener;
+import org.usarsim.wss.routes.RouteRule;
+import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -76,6 +79,8 @@ public final class Hub implements AutoCloseable {
     private final Airtime airtime;
     /** Asks the model a few times a second what the shaped pairs' rates are now; null when links are not shaped. */
     private final Sampler sampler;
+    /** The current routes, recomputed on their own thread when pairs change (docs/routes.md). */
+    private final RouteKeeper routes;
     /** Guarded by this: set once the control port accepts; whether {@link #close} was called. */
     private ControlListener controlListener;
     private boolean closed;
@@ -106,10 +111,13 @@ public final class Hub implements AutoCloseable {
         Descriptors descriptors = new Descriptors(executor::giveBackRemembered);
         LinkSide linkSide = new LinkSide(executor, answers, config, warnings, keepAlive, descriptors, events, airtime, clock, LOG);
         this.opener = new PortOpener(executor, applier, portSelector, linkSide, descriptors, answers, config);
-        this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors);
-        this.modelSide = new ModelSide(executor, answers);
+        this.routes = new RouteKeeper(this::snapshot, RouteRule.of(config.shaping()), executor::announce);
+        this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors,
+                routes::current);
+        this.modelSide = new ModelSide(executor, answers, routes::stale);
         this.sampler = config.shaping().on() ? new Sampler(modelSide::measure) : null;
         events.add(new EventLogger(warnings));
+        events.add(routes);
     }
 
     public void addListener(WssEventListener listener) {
@@ -162,6 +170,7 @@ public final class Hub implements AutoCloseable {
             stopParts();
             throw new IOException("stopped while starting");
         }
+        routes.start();
         if (sampler != null) {
             sampler.start();
         }
@@ -201,6 +210,7 @@ public final class Hub implements AutoCloseable {
         if (sampler != null) {
             sampler.close();
         }
+        routes.close();
         relays.forEach(UdpRelay::close);
         applier.close(); // no port memory timer runs any more
         executor.close(); // the core closes: every port stops, every link closes
@@ -273,6 +283,25 @@ public final class Hub implements AutoCloseable {
             return null;
         });
         return open;
+    }
+
+    /** The routes as last computed (docs/routes.md): {@link RouteTable#EMPTY} until the first, soon after the start. */
+    public RouteTable routes() {
+        return routes.current();
+    }
+
+    /** Told each time the routes change, on the hub's {@code wss-routes} thread. */
+    public void addRouteListener(RouteListener listener) {
+        routes.addListener(listener);
+    }
+
+    public void removeRouteListener(RouteListener listener) {
+        routes.removeListener(listener);
+    }
+
+    /** The base robots are cut off from ({@code wss.route.base}; null: none); the routes are found again with it. */
+    public void setRouteBase(String robot) {
+        routes.base(robot);
     }
 
     /** The robots, the WSS ports, the established links and the pairs' statistics, all at one instant. */

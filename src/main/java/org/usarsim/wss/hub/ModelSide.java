@@ -21,36 +21,45 @@ final class ModelSide implements RobotLinkModel {
 
     private final StepExecutor executor;
     private final ModelAnswers answers;
+    /** Told after each verdict of the model on pairs (a pair first seen up says no event): the routes follow. */
+    private final Runnable pairsDecided;
 
-    ModelSide(StepExecutor executor, ModelAnswers answers) {
+    ModelSide(StepExecutor executor, ModelAnswers answers, Runnable pairsDecided) {
         this.executor = executor;
         this.answers = answers;
+        this.pairsDecided = pairsDecided;
     }
 
     @Override
     public boolean breakConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        return executor.step((core, now, out) -> core.breakPair(pair, now, out));
+        boolean changed = executor.step((core, now, out) -> core.breakPair(pair, now, out));
+        pairsDecided.run();
+        return changed;
     }
 
     @Override
     public boolean resumeConnectionsForPair(String robotA, String robotB) {
         RobotPair pair = RobotPair.of(robotA, robotB);
-        return executor.step((core, now, out) -> core.resumePair(pair, now, out));
+        boolean changed = executor.step((core, now, out) -> core.resumePair(pair, now, out));
+        pairsDecided.run();
+        return changed;
     }
 
     /** Every pair's break or resume in one step: their ports stop (or listen again) together, in one turn. */
     @Override
     public Set<RobotPair> applyLinkStates(Map<RobotPair, Boolean> inRange) {
-        return executor.step((core, now, out) -> {
-            Set<RobotPair> changed = new LinkedHashSet<>();
+        Set<RobotPair> changed = executor.step((core, now, out) -> {
+            Set<RobotPair> those = new LinkedHashSet<>();
             inRange.forEach((pair, live) -> {
                 if (live ? core.resumePair(pair, now, out) : core.breakPair(pair, now, out)) {
-                    changed.add(pair);
+                    those.add(pair);
                 }
             });
-            return changed;
+            return those;
         });
+        pairsDecided.run();
+        return changed;
     }
 
     @Override

@@ -92,4 +92,19 @@ public interface WssEventListener {
      */
     default void polled(ModelPoll poll) {
     }
+
+    /**
+     * A robot is cut off from the base ({@code wss.route.base}, docs/routes.md): no route of
+     * robots that are up now leads from it to the base. Once per change, not per poll.
+     */
+    default void cutOff(String robot) {
+    }
+
+    /**
+     * A robot has a route to the base (again, or another one: other hops, or a rate that moved by
+     * 10 % or more; docs/routes.md): its hops, its path ({@code A,R1,BASE}) and with links shaped
+     * the rate one stream could have over it (bit/s; 0 unshaped). Once per change, not per poll.
+     */
+    default void routedToBase(String robot, int hops, String path, long bitsPerSecond) {
+    }
 }

@@ -36,6 +36,19 @@ public final class Arguments {
                 Replies.PEER_NAME_TOO_LONG);
     }
 
+    /**
+     * An operator's pair (FORCE, ROUTE): {@code Robot}, then {@code Peer}, each checked as its own,
+     * and not the same name ({@code Peer.Must.Not.Be.The.Robot}).
+     */
+    public static List<String> pair(Command command) throws ProtocolException {
+        String robot = robot(command);
+        String peer = peer(command);
+        if (robot.equals(peer)) {
+            throw new ProtocolException(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
+        }
+        return List.of(robot, peer);
+    }
+
     private static String name(String name, String emptyReason, String whitespaceReason, String tooLongReason)
             throws ProtocolException {
         if (name == null || name.isEmpty()) {

@@ -129,6 +129,21 @@ public final class Replies {
     }
 
     /**
+     * ROUTE's answer (docs/routes.md): the route from robot to peer, its hops, its path
+     * ({@code A,R1,B}), its weakest hop ({@code R1,B}), and with links shaped ({@code rate} 0 or
+     * more; -1 unshaped) the rate one stream could have over it.
+     */
+    public static String route(String robot, String peer, int hops, String path, String weakest, long rate) {
+        return "ROUTEREPLY {Robot " + robot + "} {Peer " + peer + "} {Hops " + hops + "} {Path " + path + "} {Weakest " + weakest + "}"
+                + (rate >= 0 ? " {Rate " + rate + "}" : "");
+    }
+
+    /** ROUTE's answer when there is no route: {@code {Hops -1}}, and {@code {Rate 0}} with links shaped ({@code rate} 0; -1 unshaped). */
+    public static String noRoute(String robot, String peer, long rate) {
+        return "ROUTEREPLY {Robot " + robot + "} {Peer " + peer + "} {Hops -1}" + (rate >= 0 ? " {Rate " + rate + "}" : "");
+    }
+
+    /**
      * REPLAY done (or only asked): where the replay is after the change, in seconds, its duration,
      * its speed, whether it plays, and the recorded time of the poll it applied last (what GETSS
      * answers from). Numbers to the millisecond, trailing zeros dropped.

@@ -143,4 +143,18 @@ public sealed interface HubEvent {
             sink.warn(category, client, message);
         }
     }
+
+    /** A robot is cut off from the base (docs/routes.md). */
+    record CutOff(String robot) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.cutOff(robot);
+        }
+    }
+
+    /** A robot has a route to the base, or another one (docs/routes.md). */
+    record RoutedToBase(String robot, int hops, String path, long bitsPerSecond) implements HubEvent {
+        public void deliverTo(EventSink sink) {
+            sink.routedToBase(robot, hops, path, bitsPerSecond);
+        }
+    }
 }

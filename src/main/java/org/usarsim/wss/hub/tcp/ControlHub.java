@@ -8,6 +8,7 @@ import java.util.OptionalDouble;
 import org.usarsim.wss.hub.core.Force;
 import org.usarsim.wss.hub.core.RatePin;
 import org.usarsim.wss.model.Replay;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * What the control side asks of the hub, and all it knows of it: the commands of the control
@@ -41,6 +42,9 @@ public interface ControlHub extends SocketRules {
 
     /** FORCE ... {State Model}. */
     void release(String robotA, String robotB);
+
+    /** ROUTE: the routes as last found (docs/routes.md). */
+    RouteTable routes();
 
     /** REPLAY: the model's replay controls; empty when the model replays nothing. */
     Optional<Replay> replay();

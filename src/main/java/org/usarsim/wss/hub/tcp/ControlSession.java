@@ -10,6 +10,8 @@ import java.nio.channels.SocketChannel;
 import java.util.List;
 import java.util.OptionalDouble;
 import java.util.logging.Logger;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.hub.core.RobotSession;
 import org.usarsim.wss.protocol.Arguments;
 import org.usarsim.wss.protocol.Command;
@@ -122,6 +124,9 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
         if (command.type().equals("FORCE") && !command.hasNoSegment()) {
             return force(command); // an operator's, not a robot's: no INIT needed
         }
+        if (command.type().equals("ROUTE") && !command.hasNoSegment()) {
+            return route(command); // an operator's too
+        }
         if (command.type().equals("REPLAY")) {
             return replay(command); // an operator's too; alone, it asks where the replay is
         }
@@ -188,19 +193,39 @@ public final class ControlSession implements Runnable, LineSplitter.Sink, RobotS
     /** FORCE (docs/protocol.md section 7), only from an address of wss.operators: {@link OperatorCommands#force}. */
     private String force(Command command) throws ProtocolException {
         if (!hub.isOperator(address)) {
-            hub.warn(LOG, "operator commands refused", address,
-                    peer + ": FORCE refused: " + address.getHostAddress() + " is not in wss.operators", null);
-            return Replies.error(Replies.NOT_AN_OPERATOR);
+            return refused("FORCE");
         }
         return OperatorCommands.force(hub, command, address, peer);
+    }
+
+    /** An operator command from an address not in wss.operators: said (limited), and its error. */
+    private String refused(String what) {
+        hub.warn(LOG, "operator commands refused", address,
+                peer + ": " + what + " refused: " + address.getHostAddress() + " is not in wss.operators", null);
+        return Replies.error(Replies.NOT_AN_OPERATOR);
+    }
+
+    /**
+     * The operator command ROUTE (docs/routes.md, docs/protocol.md section 9): {@code ROUTE {Robot A} {Peer B}}, the
+     * best route from A to B as last found. Only from an address of wss.operators, as FORCE: a
+     * robot's own routing must find what the WSS knows; the names need not be registered.
+     */
+    private String route(Command command) throws ProtocolException {
+        if (!hub.isOperator(address)) {
+            return refused("ROUTE");
+        }
+        List<String> pair = Arguments.pair(command);
+        RouteTable routes = hub.routes();
+        Route route = routes.route(pair.get(0), pair.get(1));
+        long rate = routes.rule().shaped() ? route.rateBound() : -1;
+        return route.exists() ? Replies.route(route.from(), route.to(), route.hops(), route.pathText(), route.weakest().toString(), rate)
+                : Replies.noRoute(route.from(), route.to(), rate);
     }
 
     /** REPLAY (docs/protocol.md section 8), only from an address of wss.operators: {@link OperatorCommands#replay}. */
     private String replay(Command command) throws ProtocolException {
         if (!hub.isOperator(address)) {
-            hub.warn(LOG, "operator commands refused", address,
-                    peer + ": REPLAY refused: " + address.getHostAddress() + " is not in wss.operators", null);
-            return Replies.error(Replies.NOT_AN_OPERATOR);
+            return refused("REPLAY");
         }
         return OperatorCommands.replay(hub, command, address, peer);
     }

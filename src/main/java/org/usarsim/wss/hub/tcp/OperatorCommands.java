@@ -33,11 +33,9 @@ public final class OperatorCommands {
      * The names need not be registered. {@code who} names the asker in the log line ({@code address:port}).
      */
     public static String force(ControlHub hub, Command command, InetAddress address, String who) throws ProtocolException {
-        String first = Arguments.robot(command);
-        String second = Arguments.peer(command);
-        if (first.equals(second)) {
-            return Replies.error(Replies.PEER_MUST_NOT_BE_THE_ROBOT);
-        }
+        List<String> pair = Arguments.pair(command);
+        String first = pair.get(0);
+        String second = pair.get(1);
         String state = command.value("State");
         String wanted = state == null ? "" : state.toLowerCase(Locale.ROOT);
         if (!List.of("down", "up", "model").contains(wanted)) {

@@ -1,0 +1,188 @@
+package org.usarsim.wss.hub;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+import java.util.logging.Level;
+import java.util.logging.Logger;
+import org.usarsim.wss.hub.core.HubEvent;
+import org.usarsim.wss.model.ModelPoll;
+import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.routes.BaseWatch;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteFinder;
+import org.usarsim.wss.routes.RouteListener;
+import org.usarsim.wss.routes.RouteRule;
+import org.usarsim.wss.routes.RouteTable;
+
+/**
+ * Keeps the current routes (docs/routes.md): a listener of the hub's events that marks them stale
+ * when a pair, a robot, a rate or a poll changed something, and one daemon thread,
+ * {@code wss-routes}, that recomputes them from a {@link HubSnapshot} (taken off the hub's lock but
+ * for its copy), coalescing every change that came meanwhile; a new table, when it differs from the
+ * last, is handed to the {@link RouteListener}s, and what it changed of the robots' routes to the
+ * base ({@link BaseWatch}) to the hub's events.
+ */
+final class RouteKeeper implements WssEventListener {
+
+    private static final Logger LOG = Logger.getLogger(RouteKeeper.class.getName());
+
+    private final Supplier<HubSnapshot> snapshots;
+    private final RouteRule rule;
+    /** Where the base's lines go: the hub's events, in order with the rest. */
+    private final Consumer<HubEvent> announce;
+    /** Only on the routes' thread. */
+    private final BaseWatch baseWatch = new BaseWatch();
+    private final List<RouteListener> listeners = new CopyOnWriteArrayList<>();
+    private volatile RouteTable current = RouteTable.EMPTY;
+    /** Guarded by this. */
+    private boolean stale;
+    private boolean closed;
+    private String base;
+    private Thread thread;
+
+    RouteKeeper(Supplier<HubSnapshot> snapshots, RouteRule rule, Consumer<HubEvent> announce) {
+        this.snapshots = snapshots;
+        this.rule = rule;
+        this.announce = announce;
+    }
+
+    synchronized void start() {
+        thread = new Thread(this::run, "wss-routes");
+        thread.setDaemon(true);
+        thread.start();
+        stale();
+    }
+
+    synchronized void close() {
+        closed = true;
+        notifyAll();
+    }
+
+    /** The routes as last computed ({@link RouteTable#EMPTY} before the first). */
+    RouteTable current() {
+        return current;
+    }
+
+    void addListener(RouteListener listener) {
+        listeners.add(listener);
+    }
+
+    void removeListener(RouteListener listener) {
+        listeners.remove(listener);
+    }
+
+    /** Robots are cut off from this one from now on (null: none). */
+    synchronized void base(String robot) {
+        base = robot;
+        stale();
+    }
+
+    synchronized String base() {
+        return base;
+    }
+
+    /** Something that routes depend on changed: they are recomputed soon, once for all that came meanwhile. */
+    synchronized void stale() {
+        stale = true;
+        notifyAll();
+    }
+
+    private void run() {
+        while (true) {
+            String of;
+            synchronized (this) {
+                while (!stale && !closed) {
+                    try {
+                        wait();
+                    } catch (InterruptedException e) {
+                        return;
+                    }
+                }
+                if (closed) {
+                    return;
+                }
+                stale = false;
+                of = base;
+            }
+            try {
+                recompute(of);
+            } catch (RuntimeException e) {
+                LOG.log(Level.WARNING, "finding the routes failed: " + e, e); // the next change tries again
+            }
+        }
+    }
+
+    private void recompute(String of) {
+        RouteTable table = RouteFinder.table(RouteGraphs.of(snapshots.get(), rule, of));
+        if (table.equals(current)) {
+            return;
+        }
+        current = table;
+        for (RouteListener listener : listeners) {
+            try {
+                listener.routesChanged(table);
+            } catch (RuntimeException e) {
+                LOG.log(Level.WARNING, "a route listener failed: " + e, e);
+            }
+        }
+        for (BaseWatch.Change change : baseWatch.next(table)) {
+            Route route = change.route();
+            announce.accept(change.cutOff() ? new HubEvent.CutOff(change.robot())
+                    : new HubEvent.RoutedToBase(change.robot(), route.hops(), route.pathText(), route.rateBound()));
+        }
+    }
+
+    // ---- what makes the routes stale: every change of robots, pairs, rates or a poll; not data ----
+
+    @Override
+    public void robotRegistered(String robot, String address, List<Integer> ports) {
+        stale();
+    }
+
+    @Override
+    public void robotDeregistered(String robot) {
+        stale();
+    }
+
+    @Override
+    public void connectionOutOfRange(String from, String to, double strength, double distance) {
+        stale();
+    }
+
+    @Override
+    public void connectionInRange(String from, String to) {
+        stale();
+    }
+
+    @Override
+    public void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
+        stale(); // a pair first seen
+    }
+
+    @Override
+    public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
+        stale();
+    }
+
+    @Override
+    public void rateChanged(String from, String to, long bitsPerSecond) {
+        stale();
+    }
+
+    @Override
+    public void pairForced(String first, String second, boolean up) {
+        stale();
+    }
+
+    @Override
+    public void pairReleased(String first, String second) {
+        stale();
+    }
+
+    @Override
+    public void polled(ModelPoll poll) {
+        stale(); // strengths move with the robots
+    }
+}

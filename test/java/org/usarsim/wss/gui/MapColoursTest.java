@@ -49,7 +49,7 @@ class MapColoursTest {
         g.fillRect(0, 0, 800, 500);
         MapData data = new MapData(List.of(), List.of(), walls, -93);
         // The walls high up the canvas, the legend at its bottom.
-        new MapPainter(800, 500, new Font(Font.SANS_SERIF, Font.PLAIN, 12), Color.WHITE, null)
+        new MapPainter(800, 500, new Font(Font.SANS_SERIF, Font.PLAIN, 12), Color.WHITE, null, null)
                 .paint(g, new MapTransform(20, 100, 200), data);
         g.dispose();
         return image;

@@ -128,10 +128,11 @@ final class Publisher implements WssEventListener, Runnable {
                     }
                 }
                 now = System.nanoTime();
-                if (!streams.isEmpty()) {
+                boolean open = !streams.isEmpty();
+                if (open) {
                     cadence.streaming(now);
                 }
-                recording = cadence.recording(now, everStreamed);
+                recording = cadence.recording(now, open, everStreamed);
                 if (cadence.due(now, changed.get())) {
                     boolean counts = cadence.compared(now);
                     boolean hub = changed.getAndSet(false);

@@ -54,6 +54,7 @@ public final class MonitorBenchmark {
         int pairs = 5;
         int viewers = 8;
         int stop = 60;
+        String only = "all";
         for (int i = 0; i < args.length; i++) {
             switch (args[i]) {
                 case "--robots" -> robots = Integer.parseInt(args[++i]);
@@ -62,10 +63,12 @@ public final class MonitorBenchmark {
                 case "--pairs" -> pairs = Integer.parseInt(args[++i]);
                 case "--viewers" -> viewers = Integer.parseInt(args[++i]);
                 case "--stop" -> stop = Integer.parseInt(args[++i]);
+                case "--only" -> only = args[++i];
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
             }
         }
-        new MonitorBenchmark().run(robots, connections, phase, pairs, viewers, stop);
+        new MonitorBenchmark().run(robots, only.equals("stop") ? 0 : connections, phase, only.equals("stop") ? 0 : pairs, viewers,
+                only.equals("forwarding") ? 0 : stop);
     }
 
     private void run(int robots, int connections, int phase, int pairs, int viewers, int stop) throws Exception {
@@ -135,9 +138,17 @@ public final class MonitorBenchmark {
                 }
                 ratios.add(with / none);
             }
-            System.out.println("  forwarding with " + viewers + " viewers / none: " + new PairedRatios(ratios.stream().mapToDouble(Double::doubleValue).toArray()).summary());
-            System.out.printf(Locale.ROOT, "  monitor CPU per viewer: median %.2f ms/s (%s)%n", median(perViewerMs), perViewerMs);
-            stopped(wss, viewers, stop);
+            if (pairs > 0) {
+                System.out.println("  forwarding with " + viewers + " viewers / none: "
+                        + new PairedRatios(ratios.stream().mapToDouble(Double::doubleValue).toArray()).summary());
+                System.out.printf(Locale.ROOT, "  monitor CPU per viewer: median %.2f ms/s (%s)%n", median(perViewerMs), perViewerMs);
+            }
+            if (stop > 0) {
+                for (Socket sender : senders) {
+                    sender.close();
+                }
+                stopped(wss, viewers, stop, clients.size());
+            }
             for (Socket sender : senders) {
                 sender.close();
             }
@@ -148,7 +159,13 @@ public final class MonitorBenchmark {
     }
 
     /** A viewer stopped with SIGSTOP beside {@code viewers} others: the heap, the cut, the others' bytes. */
-    private void stopped(WssProcess wss, int viewers, int seconds) throws Exception {
+    private void stopped(WssProcess wss, int viewers, int seconds, int robots) throws Exception {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+        while (metric("wss_monitor_streams") > 0 && System.nanoTime() < deadline) {
+            Thread.sleep(500); // the last phase's streams end at their next write (a keepalive within 15 s)
+        }
+        Flapping flapping = new Flapping(wss.controlPort, robots);
+        flapping.start();
         Path dir = Files.createTempDirectory("wss-bench-viewers");
         List<Process> others = viewers(viewers, dir);
         Process frozen = viewers(1, null).get(0);
@@ -182,11 +199,64 @@ public final class MonitorBenchmark {
                 cutAt < 0 ? "NOT" : "within " + cutAt + " s", starved, viewers * (seconds / 5));
         System.out.printf(Locale.ROOT, "  metrics: streams %d, cut %d, events dropped %d%n", metric("wss_monitor_streams"),
                 metric("wss_monitor_streams_cut_total"), metric("wss_monitor_events_dropped_total"));
+        flapping.stop();
+        System.out.printf(Locale.ROOT, "  meanwhile an operator forced %d pairs down and back, %d FORCEs%n", Flapping.PAIRS, flapping.forces());
         new ProcessBuilder("kill", "-CONT", Long.toString(frozen.pid())).start().waitFor();
         boolean ended = frozen.waitFor(10, TimeUnit.SECONDS);
         System.out.println("  resumed (SIGCONT): its stream " + (ended ? "had ended (curl exited " + frozen.exitValue() + ")" : "still open"));
         end(others);
         end(List.of(frozen));
+    }
+
+    /**
+     * A busy hub for the stopped viewer's test: an operator on the control port forces
+     * {@link #PAIRS} pairs down and back up every 100 ms, so that every comparison has ports,
+     * pairs and lines to tell.
+     */
+    private static final class Flapping implements Runnable {
+        static final int PAIRS = 100;
+        private final ControlClient operator;
+        private final int robots;
+        private final Thread thread = new Thread(this, "flapping");
+        private volatile boolean running = true;
+        private long forces;
+
+        Flapping(int controlPort, int robots) throws IOException {
+            this.operator = ControlClient.operator(controlPort);
+            this.robots = robots;
+        }
+
+        void start() {
+            thread.setDaemon(true);
+            thread.start();
+        }
+
+        void stop() throws Exception {
+            running = false;
+            thread.join();
+            operator.close();
+        }
+
+        long forces() {
+            return forces;
+        }
+
+        @Override
+        public void run() {
+            boolean down = true;
+            try {
+                while (running) {
+                    for (int k = 0; k < PAIRS; k++) {
+                        operator.ask("FORCE {Robot R" + k % robots + "} {Peer R" + (k + 1) % robots + "} {State " + (down ? "Down" : "Model") + "}");
+                        forces++;
+                    }
+                    down = !down;
+                    Thread.sleep(100);
+                }
+            } catch (Exception e) {
+                System.out.println("  flapping ended: " + e);
+            }
+        }
     }
 
     private List<Process> viewers(int count, Path dir) throws IOException {

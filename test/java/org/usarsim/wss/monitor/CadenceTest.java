@@ -28,9 +28,18 @@ class CadenceTest {
     @Test
     void theHistoryIsRecordedUntilAMinuteAfterTheLastStream() {
         Cadence cadence = new Cadence();
-        assertFalse(cadence.recording(0, false));
+        assertFalse(cadence.recording(0, false, false));
         cadence.streaming(5 * MS);
-        assertTrue(cadence.recording(5 * MS + Cadence.LINGER_NS - 1, true));
-        assertFalse(cadence.recording(5 * MS + Cadence.LINGER_NS, true));
+        assertTrue(cadence.recording(5 * MS + Cadence.LINGER_NS - 1, false, true));
+        assertFalse(cadence.recording(5 * MS + Cadence.LINGER_NS, false, true));
+    }
+
+    @Test
+    void withNoLingerItRecordsWhileAStreamIsOpenAndStopsAtOnceAfter() {
+        Cadence cadence = new Cadence(0);
+        cadence.streaming(5 * MS);
+        assertTrue(cadence.recording(5 * MS, true, true), "a stream open at this very instant");
+        assertTrue(cadence.recording(9 * MS, true, true));
+        assertFalse(cadence.recording(9 * MS, false, true));
     }
 }

@@ -60,8 +60,8 @@ final class Cadence {
         lastStream = now;
     }
 
-    /** Whether the history is still recorded: a stream was open within the linger ({@link #LINGER_NS} unless told). */
-    boolean recording(long now, boolean everStreamed) {
-        return everStreamed && now - lastStream < lingerNs;
+    /** Whether the history is recorded: a stream is open, or one was within the linger ({@link #LINGER_NS} unless told). */
+    boolean recording(long now, boolean open, boolean everStreamed) {
+        return open || everStreamed && now - lastStream < lingerNs;
     }
 }

@@ -114,17 +114,25 @@ final class Publisher implements WssEventListener, Runnable {
         while (!stopped) {
             try {
                 long now = System.nanoTime();
-                Object item = waiting.poll(cadence.waitNs(now, changed.get()), TimeUnit.NANOSECONDS);
-                if (item instanceof Join join) {
-                    start(join);
-                } else if (item instanceof LogLine line && recording) {
-                    publish("log", line.json());
+                Object first = waiting.poll(cadence.waitNs(now, changed.get()), TimeUnit.NANOSECONDS);
+                List<Object> items = new java.util.ArrayList<>();
+                if (first != null) {
+                    items.add(first);
+                    waiting.drainTo(items); // all that waits, not one item per comparison
+                }
+                for (Object item : items) {
+                    if (item instanceof Join join) {
+                        start(join);
+                    } else if (item instanceof LogLine line && recording) {
+                        publish("log", line.json());
+                    }
                 }
                 now = System.nanoTime();
-                if (!streams.isEmpty()) {
+                boolean open = !streams.isEmpty();
+                if (open) {
                     cadence.streaming(now);
                 }
-                recording = cadence.recording(now, everStreamed);
+                recording = cadence.recording(now, open, everStreamed);
                 if (cadence.due(now, changed.get())) {
                     boolean counts = cadence.compared(now);
                     boolean hub = changed.getAndSet(false);

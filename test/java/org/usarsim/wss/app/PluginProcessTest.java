@@ -119,7 +119,7 @@ class PluginProcessTest {
         assertTrue(log.stream().anyMatch(line -> line.endsWith("INFO Tuned configured with tuned.level 5, tuned.gain 0.25")),
                 log.toString());
         assertTrue(log.stream().anyMatch(line -> line.endsWith("WARNING " + config + ": usarsim.port is not a setting of Tuned"
-                + " (it is one of DistanceOnlyPropagationModel, ObstaclePropagationModel): ignored")), log.toString());
+                + " (it is one of DistanceOnlyPropagationModel, ObstaclePropagationModel, RFComms): ignored")), log.toString());
         assertStrength(Integer.parseInt(listening.group(1)), "-50.25");
     }
 

@@ -538,6 +538,8 @@ class WindowTest {
             List<Path> logs = files.toList();
             assertEquals(1, logs.size(), logs.toString());
             List<String> lines = Files.readAllLines(logs.get(0));
+            assertTrue(lines.get(0).startsWith("SETTING,") && lines.get(0).endsWith(",wss.seed,0"), lines.toString());
+            lines = lines.subList(1, lines.size());
             assertTrue(lines.get(0).startsWith("REGISTERED,") && lines.get(0).contains(",r1,127.0.0.2,"), lines.toString());
             assertTrue(lines.get(1).startsWith("DEREGISTERED,") && lines.get(1).endsWith(",r1"), lines.toString());
         }

@@ -93,4 +93,43 @@ class ServerStateTest {
         replay.follow(state.replay());
         assertFalse(replay.running());
     }
+
+    /** r1 reaches r2 (one hop, the base r2); r2 has no route back: the monitor lists only the routes that exist. */
+    private static final String ROUTES = """
+            {"base":"r2","rule":"FASTEST_SHARED_AIRTIME","shaped":true,"cutOff":[],
+             "routes":[{"from":"r1","to":"r2","hops":1,"path":["r1","r2"],
+                        "legs":[{"from":"r1","to":"r2","strength":-61.5,"rate":2000000}],
+                        "weakest":{"from":"r1","to":"r2","strength":-61.5,"rate":2000000},"rateBound":2000000,"shaped":true}]}
+            """;
+
+    @Test
+    void theRoutesAreATableOfTheServersRoutesAndEveryOrderedPairsRow() throws Exception {
+        ServerState state = new ServerState();
+        state.replace(json(STATE.replace("\"lines\":[", "\"routes\":" + ROUTES + ",\"lines\":[")));
+        ServerView view = state.view();
+        assertEquals(List.of("r1", "r2"), view.routes().route("r1", "r2").path());
+        assertEquals(2_000_000, view.routes().route("r1", "r2").rateBound());
+        assertEquals(-61.5, view.routes().route("r1", "r2").legs().get(0).strength());
+        assertTrue(view.routes().rule().shaped());
+        assertEquals("r2", view.routes().base());
+        assertFalse(view.routes().isCutOff("r1"));
+        assertFalse(view.routes().route("r2", "r1").exists());
+        assertEquals(List.of("r1 r2 1", "r2 r1 -1"), view.allRoutes().stream().map(r -> r.from() + " " + r.to() + " " + r.hops()).toList());
+
+        assertTrue(state.apply("routes", json("{\"base\":\"r2\",\"rule\":\"STRONGEST\",\"shaped\":false,\"cutOff\":[\"r1\"],\"routes\":[]}")));
+        view = state.view();
+        assertTrue(view.routes().isCutOff("r1"));
+        assertFalse(view.routes().route("r1", "r2").exists());
+        assertEquals(2, view.allRoutes().size());
+        state.apply("removed", json("{\"robots\":[\"r2\"]}"));
+        assertEquals(List.of(), state.view().allRoutes(), "no row for a robot gone");
+    }
+
+    @Test
+    void aStateWithoutRoutesHasNone() throws Exception {
+        ServerState state = new ServerState();
+        state.replace(json(STATE));
+        assertEquals(0, state.view().routes().robots().size());
+        assertEquals(List.of(), state.view().allRoutes());
+    }
 }

@@ -49,7 +49,7 @@ import org.usarsim.wss.shaping.ShapingConfig;
 
 /**
  * A window attached to a real hub's monitor endpoint over real sockets (docs/monitor.md,
- * "Attaching the window"): its tables follow the hub, its title names the server, the bar is the
+ * "Attaching the window"): its tables (the Routes tab too) follow the hub, its title names the server, the bar is the
  * server's, a viewer gets no force menu, and a lost connection shows the banner until it is back.
  */
 @Timeout(60)
@@ -138,6 +138,8 @@ class AttachedWindowTest {
             until("the attached window shows both robots", () -> cells(table("robots")).stream().map(row -> row.get(0)).toList()
                     .equals(List.of("r1", "r2")));
             until("the pair is up", () -> stateOf("r1", "r2").equals("up"));
+            until("the Routes tab shows the server's route r1 - r2 (its monitor's routes)", () -> cells(table("routes")).stream()
+                    .anyMatch(row -> row.subList(0, 3).equals(List.of("r1", "r2", "1"))));
             hub.force("r1", "r2", Force.DOWN);
             until("the pair is forced down", () -> stateOf("r1", "r2").equals("forced down"));
             hub.release("r1", "r2");

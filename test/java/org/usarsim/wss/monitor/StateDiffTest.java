@@ -22,7 +22,8 @@ class StateDiffTest {
     }
 
     private static Reading reading(List<RobotView> robots, List<PairEntry> pairs) {
-        return new Reading(robots, List.of(), List.of(), pairs, List.of(new Line("A", "B", PairState.UP, -50, 0)), null, null);
+        return new Reading(robots, List.of(), List.of(), pairs, List.of(new Line("A", "B", PairState.UP, -50, 0)), null, null,
+                RoutesJson.EMPTY);
     }
 
     private static List<String> types(List<StateDiff.Change> changes) {
@@ -55,8 +56,34 @@ class StateDiffTest {
     void whatIsGoneIsOneRemovedEvent() {
         StateDiff diff = new StateDiff();
         diff.step(reading(List.of(robot("A", 0), robot("B", 1)), List.of()), false);
-        List<StateDiff.Change> gone = diff.step(new Reading(List.of(robot("A", 0)), List.of(), List.of(), List.of(), List.of(), null, null), false);
+        List<StateDiff.Change> gone = diff.step(new Reading(List.of(robot("A", 0)), List.of(), List.of(), List.of(), List.of(), null, null,
+                RoutesJson.EMPTY), false);
         assertEquals(List.of("removed"), types(gone));
         assertEquals(Map.of("robots", List.of("B"), "lines", List.of(Map.of("first", "A", "second", "B"))), gone.get(0).data());
+    }
+
+    private static Reading withRoutes(RoutesJson routes) {
+        return new Reading(List.of(), List.of(), List.of(), List.of(), List.of(), null, null, routes);
+    }
+
+    private static RoutesJson routes(boolean up) {
+        List<org.usarsim.wss.routes.Hop> hops = up ? List.of(new org.usarsim.wss.routes.Hop("A", "B", -50, 0),
+                new org.usarsim.wss.routes.Hop("B", "A", -50, 0)) : List.of();
+        return RoutesJson.of(org.usarsim.wss.routes.RouteFinder.table(
+                new org.usarsim.wss.routes.RouteGraph(List.of("A", "B"), hops, org.usarsim.wss.routes.RouteRule.STRONGEST, "B")));
+    }
+
+    @Test
+    void theRoutesAreOneWholeEventWhenTheirTableChangedAndNoneForAnEqualOne() {
+        StateDiff diff = new StateDiff();
+        diff.reset(withRoutes(routes(false)));
+        assertEquals(List.of(), types(diff.step(withRoutes(routes(false)), true)), "an equal table made again");
+        List<StateDiff.Change> changes = diff.step(withRoutes(routes(true)), false);
+        assertEquals(List.of("routes"), types(changes), "at once, not only when counts are due");
+        Map<?, ?> data = (Map<?, ?>) changes.get(0).data();
+        assertEquals("B", data.get("base"));
+        assertEquals(List.of(), data.get("cutOff"));
+        assertEquals(2, ((List<?>) data.get("routes")).size());
+        assertEquals(List.of("A"), ((Map<?, ?>) diff.step(withRoutes(routes(false)), false).get(0).data()).get("cutOff"));
     }
 }

@@ -9,11 +9,14 @@ import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.ros.JsonException;
 import org.usarsim.wss.ros.JsonNode;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * The server as the monitor's snapshot and events tell it (docs/monitor.md): each entry by its key,
  * an event with a known key replacing it whole, {@code removed} taking it away, {@code snapshot}
- * replacing everything. One thread (the client's) changes and reads it; {@link #view} copies it out.
+ * replacing everything; {@code routes} replacing the route table, every ordered pair's route listed
+ * once per table. One thread (the client's) changes and reads it; {@link #view} copies it out.
  */
 final class ServerState {
 
@@ -30,6 +33,10 @@ final class ServerState {
     private boolean operator;
     /** The replay object of the last snapshot or event, null while none runs. */
     private JsonNode replay;
+    /** The last routes object told (null: none), its table and every ordered pair's route (made once per routes object). */
+    private JsonNode routesJson;
+    private RouteTable routes = RouteTable.EMPTY;
+    private List<Route> allRoutes = List.of();
 
     /** The whole state of GET /api/state or a {@code snapshot} event. */
     void replace(JsonNode state) throws JsonException {
@@ -51,6 +58,14 @@ final class ServerState {
                 put(kind, entry);
             }
         }
+        routes(state.optional("routes"));
+    }
+
+    /** A routes object: the table and its rows, over the robots known now. */
+    private void routes(JsonNode json) throws JsonException {
+        routesJson = json;
+        routes = StateReader.routes(json, robots.keySet());
+        allRoutes = routes.all();
     }
 
     /** One event other than {@code snapshot} and {@code log}; false when its type is not the state's. */
@@ -64,6 +79,7 @@ final class ServerState {
             }
             case "model" -> model(data);
             case "replay" -> replay = data.isNull() ? null : data;
+            case "routes" -> routes(data);
             case "removed" -> removed(data);
             default -> {
                 return false;
@@ -74,6 +90,7 @@ final class ServerState {
 
     /** {@code removed}: an object of lists, each present only when not empty; robots by name. */
     private void removed(JsonNode data) throws JsonException {
+        boolean routesGone = false;
         for (String kind : List.of("robot", "port", "link", "pair", "line")) {
             JsonNode gone = data.optional(kind + "s");
             if (gone == null) {
@@ -85,6 +102,7 @@ final class ServerState {
                     case "robot" -> {
                         robots.remove(key);
                         mapRobots.remove(key);
+                        routesGone = true;
                     }
                     case "port" -> ports.remove(key);
                     case "link" -> links.remove(key);
@@ -92,6 +110,9 @@ final class ServerState {
                     default -> lines.remove(key);
                 }
             }
+        }
+        if (routesGone) {
+            routes(routesJson); // the Routes tab's rows are the robots known now
         }
     }
 
@@ -132,7 +153,7 @@ final class ServerState {
                 sorted(pairs, Comparator.comparing(HubSnapshot.PairEntry::first).thenComparing(HubSnapshot.PairEntry::second)));
         return new ServerView(hub, sorted(mapRobots, Comparator.comparing(ServerView.MapRobot::name)),
                 sorted(lines, Comparator.comparing(ServerView.MapLine::first).thenComparing(ServerView.MapLine::second)),
-                walls, cutoff, model, controlPort, operator);
+                walls, cutoff, model, controlPort, operator, routes, allRoutes);
     }
 
     private static <T> List<T> sorted(Map<String, T> entries, Comparator<T> order) {

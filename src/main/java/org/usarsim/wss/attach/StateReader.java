@@ -9,6 +9,10 @@ import org.usarsim.wss.model.Position;
 import org.usarsim.wss.model.Wall;
 import org.usarsim.wss.ros.JsonException;
 import org.usarsim.wss.ros.JsonNode;
+import org.usarsim.wss.routes.Hop;
+import org.usarsim.wss.routes.Route;
+import org.usarsim.wss.routes.RouteRule;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * The monitor's JSON objects (docs/monitor.md, "GET /api/state") read into the hub's and the map's
@@ -73,6 +77,44 @@ final class StateReader {
             }
         }
         return read;
+    }
+
+    /**
+     * The {@code routes} object (absent or null: no routes) as a table of the routes found on the
+     * server, over the robots named in {@code robots} (the state's, by name) and in the routes.
+     */
+    static RouteTable routes(JsonNode routes, java.util.Collection<String> robots) throws JsonException {
+        if (routes == null || routes.isNull()) {
+            return RouteTable.EMPTY;
+        }
+        RouteRule rule;
+        try {
+            rule = RouteRule.valueOf(routes.get("rule").string());
+        } catch (IllegalArgumentException e) {
+            throw routes.get("rule").problem("not a route rule: " + routes.get("rule").string());
+        }
+        JsonNode base = routes.optional("base");
+        List<Route> read = new ArrayList<>();
+        for (JsonNode route : routes.get("routes").items()) {
+            List<String> path = new ArrayList<>();
+            for (JsonNode robot : route.get("path").items()) {
+                path.add(robot.string());
+            }
+            List<Hop> legs = new ArrayList<>();
+            for (JsonNode leg : route.get("legs").items()) {
+                legs.add(hop(leg));
+            }
+            JsonNode weakest = route.optional("weakest");
+            read.add(new Route(route.get("from").string(), route.get("to").string(), path, legs,
+                    weakest == null || weakest.isNull() ? null : hop(weakest), count(route, "rateBound")));
+        }
+        List<String> named = new ArrayList<>(robots); // and those the routes name: the two may come in either order
+        read.forEach(route -> named.addAll(route.path()));
+        return RouteTable.known(rule, base == null || base.isNull() ? null : base.string(), named, read);
+    }
+
+    private static Hop hop(JsonNode hop) throws JsonException {
+        return new Hop(hop.get("from").string(), hop.get("to").string(), number(hop.optional("strength")), count(hop, "rate"));
     }
 
     /** The key of a robot, port, link, pair or line in the events: its identifying fields, joined. */

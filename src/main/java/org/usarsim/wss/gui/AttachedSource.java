@@ -55,7 +55,7 @@ final class AttachedSource implements WindowSource, PairControls {
         map = new MapData(view.robots().stream().map(robot -> new MapData.Robot(robot.name(), robot.position(), robot.range())).toList(),
                 view.lines().stream().map(line -> new MapData.Line(line.first(), line.second(), line.state(), line.strength(), line.rate()))
                         .toList(),
-                view.walls(), view.cutoff());
+                view.walls(), view.cutoff(), view.routes(), view.allRoutes());
         return view.hub();
     }
 

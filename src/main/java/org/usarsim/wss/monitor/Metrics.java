@@ -26,7 +26,7 @@ final class Metrics {
     private Metrics() {
     }
 
-    static String text(HubSnapshot hub, Own own) {
+    static String text(HubSnapshot hub, Own own, RoutesJson routes) {
         Metrics m = new Metrics();
         m.family("wss_robots", "gauge", "Robots registered now.");
         m.sample("wss_robots", "", hub.robots().size());
@@ -60,6 +60,12 @@ final class Metrics {
         }
         m.perDirection(hub, "wss_udp_lost_total", "counter", "Datagrams of the fixed UDP ports lost to the signal (wss.shaping.loss).",
                 p -> p.udpFirstToSecond().lost(), p -> p.udpSecondToFirst().lost());
+        m.family("wss_robots_cut_off", "gauge", "Robots with no route to the base (wss.route.base; 0 without one).");
+        m.sample("wss_robots_cut_off", "", routes.cutOff());
+        if (!routes.hopsToBase().isEmpty()) {
+            m.family("wss_route_hops", "gauge", "Hops of the robot's best route to the base (peer); -1 cut off.");
+            routes.hopsToBase().forEach((robot, hops) -> m.sample("wss_route_hops", labels(robot, routes.table().base()), hops));
+        }
         m.family("wss_monitor_streams", "gauge", "Event streams (GET /api/events) open now.");
         m.sample("wss_monitor_streams", "", own.streams());
         m.family("wss_monitor_streams_cut_total", "counter", "Event streams cut because their viewer did not read.");

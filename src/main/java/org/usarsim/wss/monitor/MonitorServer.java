@@ -82,6 +82,7 @@ public final class MonitorServer implements AutoCloseable {
     public void start() {
         publisher.server(new StateJson.Server(Version.current(), watched.bindAddress(), watched.hub().controlPort(), watched.shaping()));
         watched.hub().addListener(publisher);
+        watched.hub().addRouteListener(publisher);
         Logger.getLogger("").addHandler(logEvents);
         publisher.start();
         server.start();
@@ -98,6 +99,7 @@ public final class MonitorServer implements AutoCloseable {
     public void close() {
         Logger.getLogger("").removeHandler(logEvents);
         watched.hub().removeListener(publisher);
+        watched.hub().removeRouteListener(publisher);
         publisher.stop();
         streams.closeAll();
         server.stop(0);

@@ -14,15 +14,19 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.model.WssEventListener;
 import org.usarsim.wss.ros.Json;
+import org.usarsim.wss.routes.RouteListener;
+import org.usarsim.wss.routes.RouteTable;
 
 /**
  * The monitor's one thread of events, {@code wss-monitor-events}: it takes the hub's state when the
  * {@link Cadence} says, tells the streams what changed ({@link StateDiff}), numbers every event in
  * the {@link EventHistory}, starts each new stream with what it missed or a snapshot, and passes on
- * the log records. The hub's threads only mark the state changed and offer to a bounded queue:
+ * the log records. It makes the routes' JSON once per route table ({@link RoutesJson}: every
+ * robot's search, on this thread only), which the state, the stream and /metrics share.
+ * The hub's threads only mark the state changed and offer to a bounded queue:
  * never a lock, never a wait (a full queue drops the item and counts it).
  */
-final class Publisher implements WssEventListener, Runnable {
+final class Publisher implements WssEventListener, RouteListener, Runnable {
 
     private static final Logger LOG = Logger.getLogger(Publisher.class.getName());
     static final int MAX_WAITING = 8192;
@@ -48,6 +52,8 @@ final class Publisher implements WssEventListener, Runnable {
     private final AtomicBoolean changed = new AtomicBoolean();
     private final AtomicLong droppedItems = new AtomicLong();
     private final Set<String> outOfBattery = ConcurrentHashMap.newKeySet();
+    /** The routes as last made from the hub's table (this thread makes them; requests read them). */
+    private volatile RoutesJson routes = RoutesJson.EMPTY;
     private volatile boolean stopped;
     private boolean everStreamed;
     private boolean recording;
@@ -106,7 +112,20 @@ final class Publisher implements WssEventListener, Runnable {
     }
 
     private Reading read() {
-        return Reading.of(watched.hub().snapshot(), watched.model(), watched.modelSettings(), outOfBattery);
+        return Reading.of(watched.hub().snapshot(), watched.model(), watched.modelSettings(), outOfBattery, routes);
+    }
+
+    /** The routes as last made (for /metrics). */
+    RoutesJson routes() {
+        return routes;
+    }
+
+    /** This thread: the routes' JSON made again when the hub's table is another one. */
+    private void refreshRoutes() {
+        RouteTable now = watched.hub().routes();
+        if (now != routes.table() && !now.equals(routes.table())) {
+            routes = RoutesJson.of(now);
+        }
     }
 
     @Override
@@ -134,6 +153,7 @@ final class Publisher implements WssEventListener, Runnable {
                 }
                 recording = cadence.recording(now, open, everStreamed);
                 if (cadence.due(now, changed.get())) {
+                    refreshRoutes();
                     boolean counts = cadence.compared(now);
                     boolean hub = changed.getAndSet(false);
                     if (recording && (hub || counts)) {
@@ -181,6 +201,11 @@ final class Publisher implements WssEventListener, Runnable {
         if (!changed.getAndSet(true)) {
             offer(CHANGED); // wakes the thread; a full queue wakes it anyway
         }
+    }
+
+    @Override
+    public void routesChanged(RouteTable table) {
+        changed();
     }
 
     @Override

@@ -18,13 +18,14 @@ import org.usarsim.wss.model.Wall;
 
 /**
  * What the monitor shows at one instant (docs/monitor.md, "GET /api/state"): the hub's snapshot,
- * each robot with what the map needs of the model, the map's lines, the model and the replay.
+ * each robot with what the map needs of the model, the map's lines, the model, the replay and the
+ * routes (as the publisher last made them: {@link RoutesJson}).
  * Taken off the hub's threads; never changed after.
  */
 record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> links, List<PairEntry> pairs, List<Line> lines,
-        ModelView model, ReplayView replay) {
+        ModelView model, ReplayView replay, RoutesJson routes) {
 
-    static final Reading EMPTY = new Reading(List.of(), List.of(), List.of(), List.of(), List.of(), null, null);
+    static final Reading EMPTY = new Reading(List.of(), List.of(), List.of(), List.of(), List.of(), null, null, RoutesJson.EMPTY);
 
     /** A registered robot as the hub and the model know it; {@code position} null and {@code range} NaN when the model has none. */
     record RobotView(String name, String address, List<Integer> ports, double airtime, Position position, double range, boolean outOfBattery) {
@@ -46,7 +47,7 @@ record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> li
      * The hub's snapshot with the model's answers: positions and ranges, and the map's lines
      * ({@link MapLines}, the window's rule).
      */
-    static Reading of(HubSnapshot hub, PropagationModel model, Map<String, String> settings, Set<String> outOfBattery) {
+    static Reading of(HubSnapshot hub, PropagationModel model, Map<String, String> settings, Set<String> outOfBattery, RoutesJson routes) {
         List<RobotView> robots = new ArrayList<>();
         for (HubSnapshot.RobotEntry entry : hub.robots()) {
             String name = entry.name();
@@ -55,6 +56,6 @@ record Reading(List<RobotView> robots, List<PortEntry> ports, List<LinkEntry> li
         }
         List<Line> lines = MapLines.of(robots.stream().map(RobotView::name).toList(), hub, model);
         ModelView view = new ModelView(model.name(), settings, model.cutoff(), model.walls());
-        return new Reading(robots, hub.ports(), hub.links(), hub.pairs(), lines, view, ReplayView.of(model.replay()));
+        return new Reading(robots, hub.ports(), hub.links(), hub.pairs(), lines, view, ReplayView.of(model.replay()), routes);
     }
 }

@@ -87,7 +87,7 @@ final class Requests implements HttpHandler {
             case "/metrics" -> {
                 if (method(exchange, "GET")) {
                     Metrics.Own own = new Metrics.Own(streams.count(), streams.cut(), streams.dropped() + publisher.dropped(), unauthorized());
-                    Answers.send(exchange, 200, Metrics.CONTENT_TYPE, Metrics.text(watched.hub().snapshot(), own));
+                    Answers.send(exchange, 200, Metrics.CONTENT_TYPE, Metrics.text(watched.hub().snapshot(), own, publisher.routes()));
                 }
             }
             case "/api/force" -> command(exchange, operator, "FORCE");

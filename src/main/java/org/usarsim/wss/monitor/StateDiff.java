@@ -17,7 +17,7 @@ import org.usarsim.wss.monitor.Reading.RobotView;
  * What changed between the state the streams were last told ({@link #sent}) and a new reading, as
  * the events that tell it (docs/monitor.md, "GET /api/events"): a change of structure at once, a
  * change of counts only (bytes, rates, strengths, positions, the replay's time) only when
- * {@code countsDue}; the changes of one kind in one event. Pure: one thread (the publisher's).
+ * {@code countsDue}; the changes of one kind in one event; the routes whole, when their table changed. Pure: one thread (the publisher's).
  */
 final class StateDiff {
 
@@ -62,10 +62,15 @@ final class StateDiff {
             replay = now.replay();
             changes.add(new Change("replay", replay == null ? null : StateJson.replay(replay)));
         }
+        RoutesJson routes = sent.routes();
+        if (routes != now.routes() && !routes.table().equals(now.routes().table())) {
+            routes = now.routes();
+            changes.add(new Change("routes", routes.json()));
+        }
         if (!removed.isEmpty()) {
             changes.add(new Change("removed", removed));
         }
-        sent = new Reading(robots, ports, links, pairs, lines, model, replay);
+        sent = new Reading(robots, ports, links, pairs, lines, model, replay, routes);
         return changes;
     }
 

@@ -47,6 +47,7 @@ final class StateJson {
         state.put("links", reading.links().stream().map(StateJson::link).toList());
         state.put("pairs", reading.pairs().stream().map(StateJson::pair).toList());
         state.put("lines", reading.lines().stream().map(StateJson::line).toList());
+        state.put("routes", reading.routes().json()); // for any token: the viewers are people (docs/monitor.md)
         return state;
     }
 

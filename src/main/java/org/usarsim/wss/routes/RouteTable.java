@@ -40,6 +40,28 @@ public final class RouteTable {
         this.hops = Set.copyOf(graph.hops());
     }
 
+    /**
+     * A table whose routes were found elsewhere (a monitor's state, read by an attached window:
+     * docs/monitor.md): the routes that exist as given, every other pair none; nothing is searched.
+     */
+    public static RouteTable known(RouteRule rule, String base, List<String> robots, List<Route> routes) {
+        java.util.Set<Hop> legs = new java.util.LinkedHashSet<>();
+        routes.forEach(route -> legs.addAll(route.legs()));
+        RouteTable table = new RouteTable(new RouteGraph(robots, List.copyOf(legs), rule, base));
+        table.robots.forEach(robot -> table.found.put(robot, new HashMap<>()));
+        Map<String, Route> toBase = new HashMap<>();
+        for (Route route : routes) {
+            if (table.found.containsKey(route.from()) && route.exists()) {
+                table.found.get(route.from()).put(route.to(), route);
+                if (route.to().equals(base)) {
+                    toBase.put(route.from(), route);
+                }
+            }
+        }
+        table.toBase = Map.copyOf(toBase);
+        return table;
+    }
+
     /** The rule the routes were found by (whether they have rates). */
     public RouteRule rule() {
         return rule;

@@ -67,6 +67,26 @@ class RouteCommandTest {
     }
 
     @Test
+    void pairsNoPollDecidedAreUpAsTheModelAllowsThemAsOnTheMap() throws Exception {
+        // A model that decides no pair (the Noop model's way: every pair may talk) leaves robots reachable, not cut off.
+        server.hub.setRouteBase("R1");
+        try (TestRobot operator = server.robotAt("127.0.0.1"); TestRobot r1 = server.robot(); TestRobot r2 = server.robot();
+                TestRobot r3 = server.robot()) {
+            r1.init("R1", 5001);
+            r2.init("R2", 5002);
+            r3.init("R3", 5003);
+            Wait.until("R3's direct route to R1", () -> server.hub.routes().route("R3", "R1").hops() == 1);
+            assertEquals(List.of(), server.hub.routes().cutOff());
+            assertEquals("ROUTEREPLY {Robot R3} {Peer R1} {Hops 1} {Path R3,R1} {Weakest R3,R1}",
+                    operator.ask("ROUTE {Robot R3} {Peer R1}"));
+            model.allowBoth("R1", "R3", false);
+            model.allowBoth("R2", "R3", false);
+            server.hub.robotLinks().applyLinkStates(Map.of()); // a poll that decides nothing: the routes are found again
+            Wait.until("R3 cut off once the model allows it no pair", () -> server.hub.routes().cutOff().equals(List.of("R3")));
+        }
+    }
+
+    @Test
     void anOperatorAsksTheRouteOthersAreRefusedAsForFORCE() throws Exception {
         strength("R1", "R2", -50);
         strength("R2", "R3", -60);

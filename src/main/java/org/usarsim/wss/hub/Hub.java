@@ -35,6 +35,7 @@ import org.usarsim.wss.protocol.Replies;
 import org.usarsim.wss.routes.RouteListener;
 import org.usarsim.wss.routes.RouteRule;
 import org.usarsim.wss.routes.RouteTable;
+import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.Airtime;
 
 /**
@@ -111,7 +112,9 @@ public final class Hub implements AutoCloseable {
         Descriptors descriptors = new Descriptors(executor::giveBackRemembered);
         LinkSide linkSide = new LinkSide(executor, answers, config, warnings, keepAlive, descriptors, events, airtime, clock, LOG);
         this.opener = new PortOpener(executor, applier, portSelector, linkSide, descriptors, answers, config);
-        this.routes = new RouteKeeper(this::snapshot, RouteRule.of(config.shaping()), executor::announce);
+        RouteRule rule = RouteRule.of(config.shaping());
+        RateTable rates = config.shaping().on() ? config.shaping().rates() : null;
+        this.routes = new RouteKeeper(base -> RouteGraphs.of(snapshot(), rule, base, model, rates), executor::announce);
         this.controlSide = new ControlSide(executor, opener, applier, answers, config, clock, warnings, keepAlive, descriptors,
                 routes::current);
         this.modelSide = new ModelSide(executor, answers, routes::stale);

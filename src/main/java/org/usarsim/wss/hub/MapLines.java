@@ -35,12 +35,16 @@ public final class MapLines {
                 String a = robots.get(i);
                 String b = robots.get(j);
                 HubSnapshot.PairEntry pair = seen.get(a + '\n' + b);
-                PairState state = pair != null ? pair.state()
-                        : model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
+                PairState state = pair != null ? pair.state() : unseen(model, a, b);
                 lines.add(new Line(a, b, state, model.getSignalStrengthForPair(a, b), pair == null ? 0 : rateOf(pair)));
             }
         }
         return lines;
+    }
+
+    /** The state of a pair the hub has not seen yet (no poll decided it, no link, no force): up or broken as the model allows. */
+    static PairState unseen(PropagationModel model, String a, String b) {
+        return model.connectionIsPossibleForPair(a, b) ? PairState.UP : PairState.BROKEN;
     }
 
     /** A pair's link rate for the map: the slower way's (bit/s), or the one known; 0 with links not shaped. */

@@ -3,7 +3,7 @@ package org.usarsim.wss.hub;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
-import java.util.function.Supplier;
+import java.util.function.Function;
 import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.HubEvent;
@@ -13,7 +13,7 @@ import org.usarsim.wss.routes.BaseWatch;
 import org.usarsim.wss.routes.Route;
 import org.usarsim.wss.routes.RouteFinder;
 import org.usarsim.wss.routes.RouteListener;
-import org.usarsim.wss.routes.RouteRule;
+import org.usarsim.wss.routes.RouteGraph;
 import org.usarsim.wss.routes.RouteTable;
 
 /**
@@ -28,8 +28,8 @@ final class RouteKeeper implements WssEventListener {
 
     private static final Logger LOG = Logger.getLogger(RouteKeeper.class.getName());
 
-    private final Supplier<HubSnapshot> snapshots;
-    private final RouteRule rule;
+    /** The graph the routes are found over, now, for a base (null: none). */
+    private final Function<String, RouteGraph> graphs;
     /** Where the base's lines go: the hub's events, in order with the rest. */
     private final Consumer<HubEvent> announce;
     /** Only on the routes' thread. */
@@ -42,9 +42,8 @@ final class RouteKeeper implements WssEventListener {
     private String base;
     private Thread thread;
 
-    RouteKeeper(Supplier<HubSnapshot> snapshots, RouteRule rule, Consumer<HubEvent> announce) {
-        this.snapshots = snapshots;
-        this.rule = rule;
+    RouteKeeper(Function<String, RouteGraph> graphs, Consumer<HubEvent> announce) {
+        this.graphs = graphs;
         this.announce = announce;
     }
 
@@ -115,7 +114,7 @@ final class RouteKeeper implements WssEventListener {
     }
 
     private void recompute(String of) {
-        RouteTable table = RouteFinder.table(RouteGraphs.of(snapshots.get(), rule, of));
+        RouteTable table = RouteFinder.table(graphs.apply(of));
         if (table.equals(current)) {
             return;
         }

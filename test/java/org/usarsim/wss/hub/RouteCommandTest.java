@@ -128,6 +128,9 @@ class RouteCommandTest {
         strength("R1", "R2", -50);
         strength("R2", "R3", -60);
         strength("R1", "R3", -90);
+        model.allowBoth("R1", "R2", false); // until the first poll decides them, the model allows no pair (as the map draws them)
+        model.allowBoth("R2", "R3", false);
+        model.allowBoth("R1", "R3", false);
         try (TestRobot r1 = server.robot(); TestRobot r2 = server.robot(); TestRobot r3 = server.robot()) {
             r1.init("R1", 5001);
             r2.init("R2", 5002);

@@ -10,7 +10,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.HubSnapshot;
 import org.usarsim.wss.model.PropagationModel;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StateChangeListener;
 import org.usarsim.wss.routes.Route;
 import org.usarsim.wss.routes.RouteTable;
 
@@ -29,7 +29,7 @@ import org.usarsim.wss.routes.RouteTable;
  * routes ({@link Servers.Running#routes}: the one place the window reads them, for the map and the
  * Routes tab alike), and {@link #pollMap} hands it over the same way.
  */
-final class NetworkView implements WssEventListener {
+final class NetworkView implements StateChangeListener {
 
     private static final Logger LOG = Logger.getLogger(NetworkView.class.getName());
     /** How often a snapshot is taken even without an event: the link statistics' bytes and throughput move on. */
@@ -156,47 +156,9 @@ final class NetworkView implements WssEventListener {
         snapshots.shutdownNow();
     }
 
-    private void changed() {
+    @Override
+    public void changed() {
         stale.set(true);
     }
 
-    @Override
-    public void robotRegistered(String robot, String address, java.util.List<Integer> ports) {
-        changed();
-    }
-
-    @Override
-    public void robotDeregistered(String robot) {
-        changed();
-    }
-
-    @Override
-    public void connectionEstablished(String from, String to, int targetPort) {
-        changed();
-    }
-
-    @Override
-    public void connectionTerminated(String from, String to, int targetPort) {
-        changed();
-    }
-
-    @Override
-    public void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
-        changed();
-    }
-
-    @Override
-    public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
-        changed();
-    }
-
-    @Override
-    public void portForgotten(String from, String to, int targetPort, int wssPort) {
-        changed();
-    }
-
-    @Override
-    public void rateChanged(String from, String to, long bitsPerSecond) {
-        changed();
-    }
 }

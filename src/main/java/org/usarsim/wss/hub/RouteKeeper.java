@@ -8,7 +8,7 @@ import java.util.logging.Level;
 import java.util.logging.Logger;
 import org.usarsim.wss.hub.core.HubEvent;
 import org.usarsim.wss.model.ModelPoll;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StateChangeListener;
 import org.usarsim.wss.routes.BaseWatch;
 import org.usarsim.wss.routes.Route;
 import org.usarsim.wss.routes.RouteFinder;
@@ -24,7 +24,7 @@ import org.usarsim.wss.routes.RouteTable;
  * last, is handed to the {@link RouteListener}s, and what it changed of the robots' routes to the
  * base ({@link BaseWatch}) to the hub's events.
  */
-final class RouteKeeper implements WssEventListener {
+final class RouteKeeper implements StateChangeListener {
 
     private static final Logger LOG = Logger.getLogger(RouteKeeper.class.getName());
 
@@ -133,51 +133,21 @@ final class RouteKeeper implements WssEventListener {
         }
     }
 
-    // ---- what makes the routes stale: every change of robots, pairs, rates or a poll; not data ----
+    // ---- what makes the routes stale: every change of robots, pairs, rates (StateChangeListener), and a poll; not data ----
 
     @Override
-    public void robotRegistered(String robot, String address, List<Integer> ports) {
+    public void changed() {
         stale();
     }
 
     @Override
-    public void robotDeregistered(String robot) {
-        stale();
+    public void cutOff(String robot) {
+        // the routes' own news: nothing changed that they are found over
     }
 
     @Override
-    public void connectionOutOfRange(String from, String to, double strength, double distance) {
-        stale();
-    }
-
-    @Override
-    public void connectionInRange(String from, String to) {
-        stale();
-    }
-
-    @Override
-    public void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
-        stale(); // a pair first seen
-    }
-
-    @Override
-    public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
-        stale();
-    }
-
-    @Override
-    public void rateChanged(String from, String to, long bitsPerSecond) {
-        stale();
-    }
-
-    @Override
-    public void pairForced(String first, String second, boolean up) {
-        stale();
-    }
-
-    @Override
-    public void pairReleased(String first, String second) {
-        stale();
+    public void routedToBase(String robot, int hops, String path, long bitsPerSecond) {
+        // the routes' own news
     }
 
     @Override

@@ -12,7 +12,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.logging.Level;
 import java.util.logging.Logger;
-import org.usarsim.wss.model.WssEventListener;
+import org.usarsim.wss.model.StateChangeListener;
 import org.usarsim.wss.ros.Json;
 import org.usarsim.wss.routes.RouteListener;
 import org.usarsim.wss.routes.RouteTable;
@@ -26,7 +26,7 @@ import org.usarsim.wss.routes.RouteTable;
  * The hub's threads only mark the state changed and offer to a bounded queue:
  * never a lock, never a wait (a full queue drops the item and counts it).
  */
-final class Publisher implements WssEventListener, RouteListener, Runnable {
+final class Publisher implements StateChangeListener, RouteListener, Runnable {
 
     private static final Logger LOG = Logger.getLogger(Publisher.class.getName());
     static final int MAX_WAITING = 8192;
@@ -197,7 +197,8 @@ final class Publisher implements WssEventListener, RouteListener, Runnable {
         streams.add(join.stream());
     }
 
-    private void changed() {
+    @Override
+    public void changed() {
         if (!changed.getAndSet(true)) {
             offer(CHANGED); // wakes the thread; a full queue wakes it anyway
         }
@@ -215,68 +216,9 @@ final class Publisher implements WssEventListener, RouteListener, Runnable {
     }
 
     @Override
-    public void robotDeregistered(String robot) {
-        changed();
-    }
-
-    @Override
     public void robotOutOfBattery(String robot) {
         outOfBattery.add(robot);
         changed();
     }
 
-    @Override
-    public void connectionOutOfRange(String from, String to, double strength, double distance) {
-        changed();
-    }
-
-    @Override
-    public void connectionInRange(String from, String to) {
-        changed();
-    }
-
-    @Override
-    public void connectionEstablished(String from, String to, int targetPort) {
-        changed();
-    }
-
-    @Override
-    public void connectionTerminated(String from, String to, int targetPort) {
-        changed();
-    }
-
-    @Override
-    public void portAllocated(String from, String to, int targetPort, int wssPort, boolean listening) {
-        changed();
-    }
-
-    @Override
-    public void portListening(String from, String to, int targetPort, int wssPort, boolean listening) {
-        changed();
-    }
-
-    @Override
-    public void portForgotten(String from, String to, int targetPort, int wssPort) {
-        changed();
-    }
-
-    @Override
-    public void rateChanged(String from, String to, long bitsPerSecond) {
-        changed();
-    }
-
-    @Override
-    public void pairForced(String first, String second, boolean up) {
-        changed();
-    }
-
-    @Override
-    public void pairReleased(String first, String second) {
-        changed();
-    }
-
-    @Override
-    public void replayMoved(double timeSeconds, double speed, boolean playing) {
-        changed();
-    }
 }

@@ -14,11 +14,12 @@ import org.usarsim.wss.shaping.SimulatedLinks.Lane;
  * Issue 34's relay chains on a moved clock (docs/routes.md, "The bound against reality"): the
  * real shaping ({@link Airtime#shared()}, {@link ShapedFlow}) of the hops R0 to R1 to .. Rk, each
  * driven as its link's thread drives it (it writes what is due, reads what fits, waits until its
- * flow's next time or until its input has bytes or its output room), each relay forwarding what
- * it receives through a buffer of {@code relayBuffer} bytes (its sockets' buffers, as socat's),
- * R0 sending without end. A busy machine is a lateness: every wake-up of a link's thread comes
- * that much after it was due, drawn from an exponential distribution of the given mean (0: a
- * thread that wakes on time). Deterministic: the same arguments give the same bytes.
+ * flow's next time or until its input has bytes or its output room), each relay a program that
+ * wakes when bytes reach it and passes them all on (socat), through a buffer of
+ * {@code relayBuffer} bytes between the two hops (its sockets' buffers and the WSS's), R0
+ * sending without end. A busy machine is a lateness: every wake-up of a link's thread or a relay
+ * program comes that much after it was due, drawn from an exponential distribution of the given
+ * mean (0: threads that wake on time). Deterministic: the same arguments give the same bytes.
  */
 final class RelayChainSimulation {
 
@@ -35,15 +36,22 @@ final class RelayChainSimulation {
     private final Random late;
     /** Whether of threads due at the same instant the last hop's goes first (else the first hop's). */
     private final boolean lastFirst;
-    /** When each lane's thread wakes next (Long.MAX_VALUE: when its sockets say). */
+    /**
+     * When each thread wakes next (Long.MAX_VALUE: when its sockets say): the hops' link threads
+     * first, then the relays' programs.
+     */
     private final long[] wake;
+    /** What each relay program has passed on so far: what the next hop can read. */
+    private final long[] relayed;
 
     RelayChainSimulation(long[] rates, long relayBuffer, long meanLateNs, long seed, boolean lastFirst) {
         this.meanLateNs = meanLateNs;
         this.late = new Random(seed);
         this.lastFirst = lastFirst;
+        relayed = new long[rates.length - 1];
         for (int i = 0; i < rates.length; i++) {
-            SimulatedLinks.Source source = i == 0 ? SimulatedLinks.endless() : links.relayOf(lanes.get(i - 1));
+            int relay = i - 1;
+            SimulatedLinks.Source source = i == 0 ? SimulatedLinks.endless() : () -> relayed[relay];
             lanes.add(links.add("R" + i, "R" + (i + 1), rates[i], ShapingConfig.DEFAULT_DELAY_MS, CHUNK, source));
         }
         for (int i = 0; i + 1 < lanes.size(); i++) {
@@ -51,7 +59,8 @@ final class RelayChainSimulation {
             Lane onward = lanes.get(i + 1);
             into.takes = () -> Math.max(0, relayBuffer - (into.delivered - onward.read));
         }
-        wake = new long[rates.length];
+        wake = new long[2 * rates.length - 1];
+        Arrays.fill(wake, rates.length, wake.length, Long.MAX_VALUE);
     }
 
     /** What the last hop delivered so far, in bytes. */
@@ -73,7 +82,11 @@ final class RelayChainSimulation {
                 return;
             }
             links.now = Math.max(links.now, wake[next]);
-            turn(next);
+            if (next < lanes.size()) {
+                turn(next);
+            } else {
+                relay(next - lanes.size());
+            }
         }
     }
 
@@ -93,10 +106,20 @@ final class RelayChainSimulation {
         long until = lane.flow.nanosUntilNext(now);
         wake[i] = until == Long.MAX_VALUE ? Long.MAX_VALUE : now + until + lateness();
         if (lane.delivered > deliveredBefore && i + 1 < lanes.size()) {
-            wakeOn(i + 1, now); // its input has bytes
+            wakeOn(lanes.size() + i, now); // the relay's input has bytes
         }
         if (lane.read > readBefore && i > 0 && lanes.get(i - 1).flow.due(now) > 0) {
             wakeOn(i - 1, now); // its output has room
+        }
+    }
+
+    /** Relay {@code j}'s program awake: passes on all it received (its buffer is the one shared with the hops), wakes the next hop. */
+    private void relay(int j) {
+        wake[lanes.size() + j] = Long.MAX_VALUE;
+        long received = lanes.get(j).delivered;
+        if (received > relayed[j]) {
+            relayed[j] = received;
+            wakeOn(j + 1, links.now);
         }
     }
 

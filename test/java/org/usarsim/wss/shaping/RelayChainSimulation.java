@@ -1,6 +1,5 @@
 package org.usarsim.wss.shaping;
 
-import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -96,13 +95,7 @@ final class RelayChainSimulation {
         long now = links.now;
         long deliveredBefore = lane.delivered;
         long readBefore = lane.read;
-        lane.acceptable = lane.takes == null ? Long.MAX_VALUE : lane.takes.getAsLong();
-        try {
-            lane.flow.writeTo(lane, now);
-        } catch (IOException e) {
-            throw new AssertionError(e);
-        }
-        lane.readWhatFits();
+        lane.turn();
         long until = lane.flow.nanosUntilNext(now);
         wake[i] = until == Long.MAX_VALUE ? Long.MAX_VALUE : now + until + lateness();
         if (lane.delivered > deliveredBefore && i + 1 < lanes.size()) {

@@ -44,6 +44,15 @@ final class RelayChainSimulation {
     private final long[] relayed;
 
     RelayChainSimulation(long[] rates, long relayBuffer, long meanLateNs, long seed, boolean lastFirst) {
+        this(rates, relayBuffer, 0, meanLateNs, seed, lastFirst);
+    }
+
+    /**
+     * As the other, the relays handing room back to the hop into them only in steps of at least
+     * {@code roomStep} bytes (0: byte by byte), as a relay's TCP sockets and program do (a window
+     * opened by a segment, a program's read of a block).
+     */
+    RelayChainSimulation(long[] rates, long relayBuffer, long roomStep, long meanLateNs, long seed, boolean lastFirst) {
         this.meanLateNs = meanLateNs;
         this.late = new Random(seed);
         this.lastFirst = lastFirst;
@@ -56,7 +65,10 @@ final class RelayChainSimulation {
         for (int i = 0; i + 1 < lanes.size(); i++) {
             Lane into = lanes.get(i);
             Lane onward = lanes.get(i + 1);
-            into.takes = () -> Math.max(0, relayBuffer - (into.delivered - onward.read));
+            into.takes = () -> {
+                long free = Math.max(0, relayBuffer - (into.delivered - onward.read));
+                return free >= roomStep ? free : 0;
+            };
         }
         wake = new long[2 * rates.length - 1];
         Arrays.fill(wake, rates.length, wake.length, Long.MAX_VALUE);
@@ -146,16 +158,18 @@ final class RelayChainSimulation {
         return RouteRule.FASTEST_SHARED_AIRTIME.bound(hops);
     }
 
-    /** {@code [relayBuffer [meanLateMs...]]}: the five chains of docs/performance.md at each lateness. */
+    /** {@code [relayBuffer [roomStep [meanLateMs...]]]}: the five chains of docs/performance.md at each lateness. */
     public static void main(String[] args) {
         long buffer = args.length > 0 ? Long.parseLong(args[0]) : 160 * 1024;
-        double[] lates = args.length > 1 ? Arrays.stream(args, 1, args.length).mapToDouble(Double::parseDouble).toArray()
+        long step = args.length > 1 ? Long.parseLong(args[1]) : 0;
+        double[] lates = args.length > 2 ? Arrays.stream(args, 2, args.length).mapToDouble(Double::parseDouble).toArray()
                 : new double[] {0};
         for (double lateMs : lates) {
             for (long[] rates : CHAINS) {
                 long bound = bound(rates);
-                double t = throughput(rates, buffer, (long) (lateMs * 1e6), 5_000_000_000L, 20_000_000_000L);
-                System.out.printf(Locale.ROOT, "late %.2f ms buffer %d %s: %.3f Mbit/s of %.3f: %.3f%n", lateMs, buffer,
+                double t = throughput(new RelayChainSimulation(rates, buffer, step, (long) (lateMs * 1e6), 34, false),
+                        5_000_000_000L, 20_000_000_000L);
+                System.out.printf(Locale.ROOT, "step %d late %.2f ms buffer %d %s: %.3f Mbit/s of %.3f: %.3f%n", step, lateMs, buffer,
                         Arrays.toString(rates), t / 1e6, bound / 1e6, t / bound);
             }
         }

@@ -49,4 +49,19 @@ class RelayChainSimulationTest {
         }
         assertTrue(previous < 0.95 * 4_000_000, "3 ms late on average: " + previous + " bit/s");
     }
+
+    @Test
+    void relaysHandingRoomBackInSteps8KiBCostTheSlowMiddleHopAlone() {
+        for (long[] rates : RelayChainSimulation.CHAINS) {
+            long bound = RelayChainSimulation.bound(rates);
+            double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, 8192, 0, 34, false),
+                    SECOND, 3 * SECOND);
+            boolean slowMiddle = rates.length == 3 && rates[1] < rates[0];
+            if (slowMiddle) {
+                assertTrue(got < 0.9 * bound, Arrays.toString(rates) + ": " + got);
+            } else {
+                assertEquals(bound, got, bound * 0.005, Arrays.toString(rates));
+            }
+        }
+    }
 }

@@ -31,9 +31,10 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * route's rate as the hub computes it ({@code Hub.routes()}). Needs socat on the PATH.
  *
  * <pre>
- * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RouteRelayBenchmark [--seconds 10] 6M 12M,6M 12M,6M,12M
+ * java -cp target/classes:target/test-classes org.usarsim.wss.bench.RouteRelayBenchmark [--seconds 10] [--relay-buffer BYTES] [--relay-block BYTES] 6M 12M,6M 12M,6M,12M
  * </pre>
- * Each argument is one chain: its hops' rates in order.
+ * Each argument is one chain: its hops' rates in order. {@code --relay-buffer} sets the relays'
+ * socket buffers, {@code --relay-block} the most socat passes on at once ({@code -b}, 8,192 by default).
  */
 public final class RouteRelayBenchmark {
 
@@ -43,10 +44,13 @@ public final class RouteRelayBenchmark {
     public static void main(String[] args) throws Exception {
         int seconds = 10;
         String buffers = "";
+        String block = "8192";
         List<String> chains = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--seconds")) {
                 seconds = Integer.parseInt(args[++i]);
+            } else if (args[i].equals("--relay-block")) {
+                block = args[++i];
             } else if (args[i].equals("--relay-buffer")) {
                 buffers = ",rcvbuf=" + args[++i] + ",sndbuf=" + args[i];
             } else {
@@ -63,12 +67,12 @@ public final class RouteRelayBenchmark {
             for (String rate : chain.split(",")) {
                 rates.add(Bitrate.parse(rate));
             }
-            run(rates, seconds, buffers);
+            run(rates, seconds, buffers, block);
         }
         System.exit(0);
     }
 
-    private static void run(List<Long> rates, int seconds, String buffers) throws Exception {
+    private static void run(List<Long> rates, int seconds, String buffers, String block) throws Exception {
         int hops = rates.size();
         HubConfig config = TestHub.config(false, 65536, 600, 1000, 30)
                 .withShaping(new ShapingConfig(true, RateTable.DEFAULT, ShapingConfig.DEFAULT_DELAY_MS, true), Map.of());
@@ -99,7 +103,7 @@ public final class RouteRelayBenchmark {
             int first = robots.get(0).dns("R1", ports[1]);
             for (int i = 1; i < hops; i++) {
                 int next = robots.get(i).dns("R" + (i + 1), ports[i + 1]);
-                Process socat = new ProcessBuilder("socat", "TCP-LISTEN:" + ports[i] + ",bind=127.0.0.1,reuseaddr,fork" + buffers,
+                Process socat = new ProcessBuilder("socat", "-b", block, "TCP-LISTEN:" + ports[i] + ",bind=127.0.0.1,reuseaddr,fork" + buffers,
                         "TCP:127.0.0.1:" + next + buffers).redirectErrorStream(true).start();
                 relays.add(socat);
             }

@@ -51,6 +51,17 @@ final class SimulatedLinks {
             this.blank = ByteBuffer.allocate(chunkSize);
         }
 
+        /** A turn of its link's thread: writes what is due (what the target takes), then reads what fits. */
+        void turn() {
+            acceptable = takes == null ? Long.MAX_VALUE : takes.getAsLong();
+            try {
+                flow.writeTo(this, now);
+            } catch (IOException e) {
+                throw new AssertionError(e);
+            }
+            readWhatFits();
+        }
+
         void readWhatFits() {
             while (flow.room() > 0 && source.available() - read > 0) {
                 int most = sizes == null ? chunkSize : 1 + sizes.nextInt(chunkSize);
@@ -182,13 +193,7 @@ final class SimulatedLinks {
 
     private void step() {
         for (Lane lane : lanes) {
-            lane.acceptable = lane.takes == null ? Long.MAX_VALUE : lane.takes.getAsLong();
-            try {
-                lane.flow.writeTo(lane, now);
-            } catch (IOException e) {
-                throw new AssertionError(e);
-            }
-            lane.readWhatFits();
+            lane.turn();
         }
     }
 

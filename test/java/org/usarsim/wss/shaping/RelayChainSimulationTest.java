@@ -1,0 +1,67 @@
+package org.usarsim.wss.shaping;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.Arrays;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Issue 34's bound against the shaping itself, on a moved clock: a stream relayed over 1 to 3
+ * hops of shared airtime gets the route's computed rate when the link threads wake on time, and
+ * falls short of it only as far as they wake late (docs/routes.md, "The bound against reality").
+ */
+class RelayChainSimulationTest {
+
+    private static final long SECOND = 1_000_000_000;
+    private static final long RELAY_BUFFER = 160 * 1024;
+
+    @Test
+    void threadsWakingOnTimeGetEveryChainsComputedRate() {
+        for (boolean lastFirst : new boolean[] {false, true}) {
+            for (long[] rates : RelayChainSimulation.CHAINS) {
+                long bound = RelayChainSimulation.bound(rates);
+                double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, 0, 34, lastFirst),
+                        SECOND, 3 * SECOND);
+                assertEquals(bound, got, bound * 0.005, Arrays.toString(rates) + (lastFirst ? ", the last hop's thread first" : ""));
+            }
+        }
+    }
+
+    @Test
+    void theSlowMiddleHopFindsBothRelaysRadiosFreeAtOnce() {
+        long[] rates = {12_000_000, 6_000_000, 12_000_000};
+        assertEquals(4_000_000, RelayChainSimulation.bound(rates), "12 x 6 / (12 + 6) Mbit/s at each relay");
+        for (long buffer : new long[] {16 * 1024, 32 * 1024, RELAY_BUFFER}) {
+            double got = RelayChainSimulation.throughput(rates, buffer, 0, 2 * SECOND, 3 * SECOND);
+            assertEquals(4_000_000, got, 20_000, "relays buffering " + buffer + " bytes");
+        }
+    }
+
+    @Test
+    void lateThreadsGetLessTheLaterTheyWake() {
+        long[] rates = {12_000_000, 6_000_000, 12_000_000};
+        double previous = RelayChainSimulation.throughput(rates, RELAY_BUFFER, 0, SECOND, 3 * SECOND);
+        for (long lateMs : new long[] {1, 3}) {
+            double got = RelayChainSimulation.throughput(rates, RELAY_BUFFER, lateMs * 1_000_000, SECOND, 3 * SECOND);
+            assertTrue(got < previous, lateMs + " ms late: " + got + ", not less than " + previous);
+            previous = got;
+        }
+        assertTrue(previous < 0.95 * 4_000_000, "3 ms late on average: " + previous + " bit/s");
+    }
+
+    @Test
+    void relaysHandingRoomBackInSteps8KiBCostTheSlowMiddleHopAlone() {
+        for (long[] rates : RelayChainSimulation.CHAINS) {
+            long bound = RelayChainSimulation.bound(rates);
+            double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, 8192, 0, 34, false),
+                    SECOND, 3 * SECOND);
+            boolean slowMiddle = rates.length == 3 && rates[1] < rates[0];
+            if (slowMiddle) {
+                assertTrue(got < 0.9 * bound, Arrays.toString(rates) + ": " + got);
+            } else {
+                assertEquals(bound, got, bound * 0.005, Arrays.toString(rates));
+            }
+        }
+    }
+}

@@ -66,7 +66,11 @@ class TokensTest {
         Path tokens = file("viewer " + SECRET + "\n", "rw-------");
         MonitorConfig open = new MonitorConfig(8443, InetAddress.getByName("0.0.0.0"), tokens, 16, null, null);
         MonitorSetupException refused = assertThrows(MonitorSetupException.class, open::check);
-        assertTrue(refused.getMessage().contains(MonitorConfig.KEYSTORE) && refused.getMessage().contains("ssh -L"), refused.getMessage());
+        assertTrue(refused.getMessage().contains(MonitorConfig.KEYSTORE) && refused.getMessage().contains("ssh -L 8443:127.0.0.1:8443 "),
+                refused.getMessage());
+        MonitorConfig anyPort = new MonitorConfig(-1, InetAddress.getByName("0.0.0.0"), tokens, 16, null, null);
+        String hint = assertThrows(MonitorSetupException.class, anyPort::check).getMessage();
+        assertTrue(hint.contains("ssh -L PORT:127.0.0.1:PORT "), "no -1 in the tunnel's hint: " + hint);
         new MonitorConfig(8443, InetAddress.getLoopbackAddress(), tokens, 16, null, null).check();
         new MonitorConfig(8443, InetAddress.getByName("0.0.0.0"), tokens, 16, dir.resolve("k.p12"), dir.resolve("pw")).check();
         assertThrows(MonitorSetupException.class, () -> new MonitorConfig(8443, InetAddress.getLoopbackAddress(), null, 16, null, null).check());

@@ -46,7 +46,12 @@ public record MonitorConfig(int port, InetAddress bindAddress, Path tokens, int 
         if (keystore == null && !bindAddress.isLoopbackAddress()) {
             throw new MonitorSetupException(BIND_ADDRESS + " = " + bindAddress.getHostAddress() + " without TLS would send the tokens in clear:"
                     + " set " + KEYSTORE + " and " + KEYSTORE_PASSWORD_FILE + " (HTTPS), or keep " + BIND_ADDRESS + " = "
-                    + DEFAULT_BIND_ADDRESS + " and watch through an SSH tunnel (ssh -L " + port + ":127.0.0.1:" + port + " server)");
+                    + DEFAULT_BIND_ADDRESS + " and watch through an SSH tunnel (ssh -L " + tunnelPort() + ":127.0.0.1:" + tunnelPort() + " server)");
         }
+    }
+
+    /** The port an SSH tunnel's hint names: the configured one, or PORT when the OS chooses it (-1). */
+    private String tunnelPort() {
+        return port > 0 ? String.valueOf(port) : "PORT";
     }
 }

@@ -79,6 +79,8 @@ class RouteCommandTest {
             assertEquals(List.of(), server.hub.routes().cutOff());
             assertEquals("ROUTEREPLY {Robot R3} {Peer R1} {Hops 1} {Path R3,R1} {Weakest R3,R1}",
                     operator.ask("ROUTE {Robot R3} {Peer R1}"));
+            server.hub.force("R3", "R1", org.usarsim.wss.hub.core.Force.DOWN); // an operator's down counts, seen or not
+            Wait.until("R3 to R1 through R2 once their pair is forced down", () -> server.hub.routes().route("R3", "R1").hops() == 2);
             model.allowBoth("R1", "R3", false);
             model.allowBoth("R2", "R3", false);
             server.hub.robotLinks().applyLinkStates(Map.of()); // a poll that decides nothing: the routes are found again

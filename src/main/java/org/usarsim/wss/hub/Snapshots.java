@@ -59,7 +59,7 @@ final class Snapshots {
             ports.add(new HubSnapshot.PortEntry(key.from(), key.to(), key.targetPort(), relay.number(), up != null && up.passes(),
                     HubSnapshot.PortKind.FIXED_UDP));
         }
-        return new Copied(robots, ports, links, core.pairStats(), conditions);
+        return new Copied(robots, ports, links, core.pairStats(nowNs), conditions);
     }
 
     /** After the lock: the pairs' rows (the model asked here), every list sorted. */

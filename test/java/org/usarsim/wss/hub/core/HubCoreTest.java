@@ -222,7 +222,7 @@ class HubCoreTest {
     void theTimeUpOfAPairFollowsTheMovedClock() {
         registeredPort();
         core.breakPair(AB, now + 30 * SECOND, new Changes());
-        PairStats stats = core.pairStats().get(0);
+        PairStats stats = core.pairStats(0).get(0);
         assertEquals(PairState.BROKEN, stats.state());
         assertEquals(0.5, stats.upShare(now + 60 * SECOND), 1e-9, "up 30 s of the 60 s since first seen");
     }

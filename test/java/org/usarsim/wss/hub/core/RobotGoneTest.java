@@ -112,6 +112,6 @@ class RobotGoneTest {
     }
 
     private static PairStats stats(HubCore core, RobotPair pair) {
-        return core.pairStats().stream().filter(stats -> stats.pair.equals(pair)).findFirst().orElseThrow();
+        return core.pairStats(0).stream().filter(stats -> stats.pair.equals(pair)).findFirst().orElseThrow();
     }
 }

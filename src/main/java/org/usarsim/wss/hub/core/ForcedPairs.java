@@ -16,6 +16,11 @@ final class ForcedPairs {
     /** The rates and delays pinned with a force up. */
     private final Map<RobotPair, RatePin> pins = new HashMap<>();
 
+    /** The pairs forced now. */
+    java.util.Set<RobotPair> pairs() {
+        return forced.keySet();
+    }
+
     /** The pair's forced state, or null when the model decides it. */
     Force of(RobotPair pair) {
         return forced.get(pair);

@@ -390,9 +390,9 @@ public final class HubCore {
 
     // ---- statistics ----
 
-    /** The statistics of every pair seen. */
-    public List<PairStats> pairStats() {
-        return pairs.stats();
+    /** The statistics of every pair seen, and fresh ones of present robots' pairs forced before they were seen. */
+    public List<PairStats> pairStats(long nowNs) {
+        return pairs.stats(nowNs);
     }
 
     // ---- the end ----

@@ -150,8 +150,19 @@ final class Pairs {
         conditions.forget(name, pair -> stats.get(pair) == null);
     }
 
-    List<PairStats> stats() {
-        return stats.all();
+    /**
+     * The statistics of every pair seen; and of every pair of present robots an operator forced
+     * before anything made it seen, fresh as of now (not kept): a forced pair is a pair the map,
+     * the routes and the link statistics must show in its forced state, not as the model has it.
+     */
+    List<PairStats> stats(long nowNs) {
+        List<PairStats> all = stats.all();
+        for (RobotPair pair : forcedPairs.pairs()) {
+            if (stats.get(pair) == null && bothPresent(pair)) {
+                all.add(new PairStats(pair, stateOf(pair), true, nowNs));
+            }
+        }
+        return all;
     }
 
     /** With links shaped: the pairs whose strength the hub asks the model for, a few times a second. */

@@ -48,8 +48,22 @@ class AirtimeTest {
         assertEquals(0, ab.grant(2 * MS, 0).startNs());
         assertEquals(2 * MS, cb.grant(2 * MS, 0).startNs(), "B is receiving from A until 2 ms");
         assertEquals(4 * MS, ca.grant(2 * MS, 0).startNs(), "C is sending to B until 4 ms");
-        assertEquals(6 * MS, cd.grant(2 * MS, 0).startNs(), "C is sending to A until 6 ms");
+        assertEquals(0, cd.grant(2 * MS, 0).startNs(), "C and D are both idle until 2 ms: the gap is filled");
+        assertEquals(6 * MS, cd.grant(2 * MS, 0).startNs(), "C is sending to A until 6 ms, and the direction's bytes keep their order");
         assertEquals(0, ef.grant(2 * MS, 0).startNs(), "E and F have nothing to do with them");
+    }
+
+    @Test
+    void aGrantFillsAnIdleGapOfBothRadiosButNeverPrecedesItsDirectionsLastGrant() {
+        Airtime airtime = Airtime.shared();
+        Airtime.Hop xw = airtime.open("X", "W", 0);
+        Airtime.Hop ax = airtime.open("A", "X", 0);
+        Airtime.Hop ab = airtime.open("A", "B", 0);
+        assertEquals(0, xw.grant(2 * MS, 0).startNs());
+        assertEquals(2 * MS, ax.grant(2 * MS, 0).startNs(), "X is sending to W until 2 ms");
+        assertEquals(0, ab.grant(MS, 0).startNs(), "A and B are both idle until 2 ms: the gap is filled");
+        assertEquals(4 * MS, ab.grant(2 * MS, 0).startNs(), "from 1 ms to 2 ms is too short for 2 ms");
+        assertEquals(6 * MS, ab.grant(MS, 0).startNs(), "1 ms to 2 ms would fit, but A to B's bytes keep their order");
     }
 
     @Test

@@ -47,21 +47,18 @@ class RelayChainSimulationTest {
             assertTrue(got < previous, lateMs + " ms late: " + got + ", not less than " + previous);
             previous = got;
         }
-        assertTrue(previous < 0.95 * 4_000_000, "3 ms late on average: " + previous + " bit/s");
+        assertTrue(previous < 0.97 * 4_000_000, "3 ms late on average: " + previous + " bit/s");
     }
 
     @Test
-    void relaysHandingRoomBackInSteps8KiBCostTheSlowMiddleHopAlone() {
+    void relaysHandingRoomBackInSteps8KiBStillGetEveryChainsComputedRate() {
         for (long[] rates : RelayChainSimulation.CHAINS) {
             long bound = RelayChainSimulation.bound(rates);
             double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, 8192, 0, 34, false),
                     SECOND, 3 * SECOND);
-            boolean slowMiddle = rates.length == 3 && rates[1] < rates[0];
-            if (slowMiddle) {
-                assertTrue(got < 0.9 * bound, Arrays.toString(rates) + ": " + got);
-            } else {
-                assertEquals(bound, got, bound * 0.005, Arrays.toString(rates));
-            }
+            // the slow middle hop needs both relays' radios idle at once: it gets a gap of both (0.86 first-come)
+            assertTrue(got >= 0.92 * bound, Arrays.toString(rates) + ": " + got);
+            assertEquals(bound, got, bound * 0.005, Arrays.toString(rates));
         }
     }
 }

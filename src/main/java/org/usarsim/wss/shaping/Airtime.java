@@ -1,7 +1,8 @@
 package org.usarsim.wss.shaping;
 
-import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 import java.util.HashMap;
 import java.util.Map;
 
@@ -110,6 +111,9 @@ public final class Airtime {
         private final Radio sender;
         private final Radio receiver;
         private boolean closed;
+        /** Where this direction's last grant ends: its next starts no earlier, so its bytes keep their order. */
+        private long lastEnd = Long.MIN_VALUE;
+        private boolean granted;
 
         private Hop(Radio sender, Radio receiver) {
             this.sender = sender;
@@ -133,13 +137,28 @@ public final class Airtime {
                 if (closed) {
                     throw new IllegalStateException("this hop is closed");
                 }
-                long start = latest(nowNs, latest(sender.busyUntil, receiver.busyUntil));
+                long from = granted ? latest(nowNs, lastEnd) : nowNs;
+                long start = sender.measured ? earliestFree(from, nanos) : latest(from, sender.busyUntil);
                 long end = start + nanos;
+                granted = true;
+                lastEnd = end;
                 sender.reserve(start, end, nowNs);
                 if (receiver != sender) {
                     receiver.reserve(start, end, nowNs);
                 }
                 return new Grant(start, end);
+            }
+        }
+
+        /** The earliest start, not before {@code from}, of {@code nanos} free on both radios: the first idle gap of both. */
+        private long earliestFree(long from, long nanos) {
+            long start = from;
+            while (true) {
+                long moved = receiver.freeFrom(sender.freeFrom(start, nanos), nanos);
+                if (moved == start) {
+                    return start;
+                }
+                start = moved;
             }
         }
 
@@ -170,7 +189,8 @@ public final class Airtime {
         long busyUntil;
         int hops;
         private final boolean measured;
-        private final ArrayDeque<long[]> ahead = new ArrayDeque<>();
+        /** The reserved intervals, in order, none overlapping. */
+        private final List<long[]> ahead = new ArrayList<>();
         private long settledNs;
         private final long[] sliceIndex = new long[SLICES];
         private final long[] sliceBusy = new long[SLICES];
@@ -183,17 +203,42 @@ public final class Airtime {
         }
 
         void reserve(long start, long end, long nowNs) {
-            busyUntil = end;
+            busyUntil = latest(busyUntil, end);
             if (!measured) {
                 return;
             }
             settle(nowNs);
-            long[] last = ahead.peekLast();
-            if (last != null && last[1] == start) {
-                last[1] = end;
-            } else {
-                ahead.addLast(new long[] {start, end});
+            int at = ahead.size();
+            while (at > 0 && ahead.get(at - 1)[0] - start > 0) {
+                at--;
             }
+            long[] before = at > 0 ? ahead.get(at - 1) : null;
+            long[] after = at < ahead.size() ? ahead.get(at) : null;
+            if (before != null && before[1] == start) {
+                before[1] = end;
+                if (after != null && after[0] == end) {
+                    before[1] = after[1];
+                    ahead.remove(at);
+                }
+            } else if (after != null && after[0] == end) {
+                after[0] = start;
+            } else {
+                ahead.add(at, new long[] {start, end});
+            }
+        }
+
+        /** The earliest time, not before {@code from}, from which this radio is free for {@code nanos}. */
+        long freeFrom(long from, long nanos) {
+            long start = latest(from, settledNs); // what is settled is past: no grant goes back into it
+            for (long[] interval : ahead) {
+                if (interval[0] - (start + nanos) >= 0) {
+                    break;
+                }
+                if (interval[1] - start > 0) {
+                    start = interval[1];
+                }
+            }
+            return start;
         }
 
         double inUse(long nowNs) {
@@ -217,7 +262,7 @@ public final class Airtime {
                 return;
             }
             while (!ahead.isEmpty()) {
-                long[] interval = ahead.peekFirst();
+                long[] interval = ahead.get(0);
                 long from = latest(interval[0], settledNs);
                 long to = interval[1] - nowNs <= 0 ? interval[1] : nowNs;
                 if (to - from > 0) {
@@ -226,7 +271,7 @@ public final class Airtime {
                 if (interval[1] - nowNs > 0) {
                     break;
                 }
-                ahead.pollFirst();
+                ahead.remove(0);
             }
             settledNs = nowNs;
         }

@@ -1,6 +1,7 @@
 package org.usarsim.wss.shaping;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -64,6 +65,52 @@ class AirtimeTest {
         assertEquals(0, ab.grant(MS, 0).startNs(), "A and B are both idle until 2 ms: the gap is filled");
         assertEquals(4 * MS, ab.grant(2 * MS, 0).startNs(), "from 1 ms to 2 ms is too short for 2 ms");
         assertEquals(6 * MS, ab.grant(MS, 0).startNs(), "1 ms to 2 ms would fit, but A to B's bytes keep their order");
+    }
+
+    @Test
+    void anIdleGrantTakesTimeFreeNowOrAGapBetweenReservationsAndDelaysNoTurn() {
+        Airtime airtime = Airtime.shared();
+        Airtime.Hop next = airtime.open("R2", "R3", 0);
+        Airtime.Hop middle = airtime.open("R1", "R2", 0);
+        Airtime.Hop in = airtime.open("R0", "R1", 0);
+        assertEquals(new Airtime.Grant(0, MS), in.idleGrant(MS, 0), "R0 and R1 free now, nothing reserved: at once");
+        assertEquals(0, next.grant(2 * MS, 0).startNs());
+        assertEquals(2 * MS, middle.grant(2 * MS, 0).startNs(), "R2 sends to R3 until 2 ms");
+        assertEquals(4 * MS, next.grant(2 * MS, 0).startNs());
+        assertEquals(6 * MS, middle.grant(2 * MS, 0).startNs(), "R1 idle from 4 to 6 ms: R2 is busy");
+        assertEquals(new Airtime.Grant(4 * MS, 6 * MS), in.idleGrant(2 * MS, 3 * MS), "the gap R1 has while R1 to R2 waits for R2");
+        assertEquals(8 * MS, middle.grant(2 * MS, 3 * MS).startNs(), "the turn it would have had without the idle grant");
+        assertNull(in.idleGrant(2 * MS, 3 * MS), "after 10 ms nothing is reserved: that time is for the turns");
+        assertEquals(10 * MS, in.idleFrom());
+        assertEquals(new Airtime.Grant(10 * MS, 12 * MS), in.idleGrant(2 * MS, 10 * MS), "free now: at once");
+        assertEquals(12 * MS, in.grant(2 * MS, 10 * MS).startNs(), "its own grants keep their order");
+    }
+
+    @Test
+    void anIdleGrantIsShortenedToItsGapAndSkipsGapsTooShort() {
+        Airtime airtime = Airtime.shared();
+        Airtime.Hop ac = airtime.open("A", "C", 0);
+        Airtime.Hop xy = airtime.open("X", "Y", 0);
+        Airtime.Hop xa = airtime.open("X", "A", 0);
+        Airtime.Hop cz = airtime.open("C", "Z", 0);
+        assertEquals(0, ac.grant(2 * MS, 0).startNs());
+        xy.grant(2 * MS, 0);
+        xy.grant(30_000, 0);
+        assertEquals(2 * MS + 30_000, xa.grant(2 * MS, 0).startNs(), "A is free at 2 ms, X at 2.03 ms");
+        assertEquals(2 * MS, cz.grant(2 * MS, 0).startNs());
+        cz.grant(MS, 0);
+        assertEquals(5 * MS, ac.grant(2 * MS, 0).startNs(), "C is free at 5 ms: A is left a gap of 30 us and one of 970 us");
+        Airtime.Hop ab = airtime.open("A", "B", 0);
+        assertEquals(new Airtime.Grant(4 * MS + 30_000, 5 * MS), ab.idleGrant(2 * MS, 0), "the gap of 970 us, not the one of 30 us");
+        Airtime.Hop ad = airtime.open("A", "D", 0);
+        assertEquals(new Airtime.Grant(2 * MS, 2 * MS + 20_000), ad.idleGrant(20_000, 0), "20 us fits the gap of 30 us");
+    }
+
+    @Test
+    void withoutSharedAirtimeAnIdleGrantIsAnyGrant() {
+        Airtime.Hop hop = Airtime.unshared().open("A", "B", 0);
+        assertEquals(new Airtime.Grant(0, 2 * MS), hop.idleGrant(2 * MS, 0));
+        assertEquals(new Airtime.Grant(2 * MS, 4 * MS), hop.idleGrant(2 * MS, 0));
     }
 
     @Test

@@ -51,14 +51,17 @@ class RelayChainSimulationTest {
     }
 
     @Test
-    void relaysHandingRoomBackInSteps8KiBStillGetEveryChainsComputedRate() {
-        for (long[] rates : RelayChainSimulation.CHAINS) {
-            long bound = RelayChainSimulation.bound(rates);
-            double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, 8192, 0, 34, false),
-                    SECOND, 3 * SECOND);
-            // the slow middle hop needs both relays' radios idle at once: it gets a gap of both (0.86 first-come)
-            assertTrue(got >= 0.92 * bound, Arrays.toString(rates) + ": " + got);
-            assertEquals(bound, got, bound * 0.005, Arrays.toString(rates));
+    void relaysHandingRoomBackInStepsStillGetWithin5PercentOfEveryChainsComputedRate() {
+        // Taking turns while its relay's socket was full, the hop into a relay took the turns of the
+        // slow middle hop: 12M, 6M, 12M got 0.857 of its bound with 8 KiB steps (first come), and
+        // filling gaps alone 1.000 with 8 KiB but 0.892 with 32 KiB, as the real relays' windows give.
+        for (long step : new long[] {8192, 32768}) {
+            for (long[] rates : RelayChainSimulation.CHAINS) {
+                long bound = RelayChainSimulation.bound(rates);
+                double got = RelayChainSimulation.throughput(new RelayChainSimulation(rates, RELAY_BUFFER, step, 0, 34, false),
+                        SECOND, 3 * SECOND);
+                assertTrue(got >= 0.95 * bound && got <= 1.005 * bound, Arrays.toString(rates) + " in steps of " + step + ": " + got);
+            }
         }
     }
 }

@@ -290,6 +290,26 @@ class ShapedFlowTest {
     }
 
     @Test
+    void aDirectionWhoseTargetHasNotTakenAllTakesOnlyAirtimeNobodyAskedFor() {
+        long rate = 12_000_000;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        Lane full = links.add("A", "B", rate, 2, CHUNK, SimulatedLinks.endless());
+        full.takes = () -> 0;
+        Lane busy = links.add("A", "C", rate, 2, CHUNK, SimulatedLinks.finite(rate / 8 / 5)); // 200 ms at the whole rate
+        long finished = links.runUntilDelivered(busy, rate / 8 / 5, SECOND);
+        // Taking turns to the end, A to B had the air for all it held (33,000 bytes) and A to C was done at 224 ms.
+        assertTrue(finished > 0 && finished <= 215 * MS, "A to C had A's radio but for the grants A to B booked before: done at " + finished);
+        long dueWhileBusy = full.flow.due(finished);
+        assertTrue(dueWhileBusy < full.flow.capacity() / 2,
+                "A to B stopped taking turns once B's program had not taken its bytes: " + dueWhileBusy + " bytes had the air");
+        links.runFor(100 * MS);
+        assertEquals(full.flow.capacity(), full.flow.due(links.now), "A idle: A to B had the airtime nobody asked for");
+        full.takes = null;
+        links.runFor(100 * MS);
+        assertTrue(full.delivered >= rate / 8 / 10, "its program reads again: it takes turns again, " + full.delivered);
+    }
+
+    @Test
     void nothingIsLostReorderedOrDuplicated() throws IOException {
         Random random = new Random(1616);
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 123_456_789, true);

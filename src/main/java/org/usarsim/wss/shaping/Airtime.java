@@ -15,11 +15,20 @@ import java.util.Map;
  *
  * <p>A link direction asks for its bytes' airtime through its {@link Hop}, one {@link Grant} at
  * a time, each of at most {@link #QUANTUM_NS} of airtime, whatever the rate (a byte at 1 bit/s
- * lasts 8 s: it is carried over 4,000 grants, and the links sharing its radio keep their turns). Reservations on a radio queue up one
- * after the other, so when every busy direction books the same few grants ahead (as
- * {@link ShapedFlow} does), the directions sharing a radio take turns in equal slices of TIME,
- * not of bytes: a slow far link and a fast near one each get their share, and neither starves.
- * A radio that has been idle starts the next grant at once; idle time is not saved up.
+ * lasts 8 s: it is carried over 4,000 grants, and the links sharing its radio keep their turns).
+ * A grant takes the first time both radios are free for it, a gap between reservations included,
+ * but never before its direction's last grant (its bytes keep their order). So when every busy
+ * direction books the same few grants ahead (as {@link ShapedFlow} does), the directions sharing
+ * a radio take turns in equal slices of TIME, not of bytes: a slow far link and a fast near one
+ * each get their share, and neither starves. A radio that has been idle starts the next grant at
+ * once; idle time is not saved up.
+ *
+ * <p>A direction whose robot's program has not yet taken what its radio received (the robot's
+ * socket is full: a relay whose next hop is slower) does not take turns: it asks for an
+ * {@link Hop#idleGrant}, airtime both radios have free now or between reservations already made,
+ * which no direction taking turns has asked for (docs/shaping.md, "Airtime"). A relay's
+ * incoming hop thus fills the time its outgoing hop waits for the next relay's radio, as a
+ * radio's receive buffer would, instead of taking that hop's turns.
  *
  * <p>{@link #unshared()} is the ledger without a shared medium: each hop has its own radio, so
  * each direction is limited only by its own rate.
@@ -43,6 +52,9 @@ public final class Airtime {
     /** The ledger's resolution: the window is kept as 100 slices of 10 ms. */
     private static final long SLICE_NS = 10_000_000;
     private static final int SLICES = (int) (WINDOW_NS / SLICE_NS);
+
+    /** The shortest gap an idle grant takes (unless it asks for less): 50 us. */
+    static final long MIN_IDLE_NS = 50_000;
 
     /**
      * Airtime granted to one direction: its radio and its peer's are on the air for it from
@@ -114,6 +126,7 @@ public final class Airtime {
         /** Where this direction's last grant ends: its next starts no earlier, so its bytes keep their order. */
         private long lastEnd = Long.MIN_VALUE;
         private boolean granted;
+        private long idleFrom;
 
         private Hop(Radio sender, Radio receiver) {
             this.sender = sender;
@@ -147,6 +160,59 @@ public final class Airtime {
                     receiver.reserve(start, end, nowNs);
                 }
                 return new Grant(start, end);
+            }
+        }
+
+        /**
+         * Airtime nobody has asked for, for a direction whose robot's program has not yet taken what
+         * the radio received (a radio's receive buffer): up to {@code nanos} (1 to
+         * {@link #QUANTUM_NS}) in the first gap, not before {@code nowNs} nor this direction's last
+         * grant, that both radios have free either now or between reservations already made
+         * (shortened to fit the gap); null when the first such time is later than now with nothing
+         * reserved after it, a time the directions taking turns may yet want: {@link #idleFrom()}
+         * then says when to ask again. So it never delays a grant a direction asked for in turn.
+         */
+        public Grant idleGrant(long nanos, long nowNs) {
+            if (nanos < 1 || nanos > QUANTUM_NS) {
+                throw new IllegalArgumentException("a grant of 1 to " + QUANTUM_NS + " ns, not " + nanos);
+            }
+            synchronized (Airtime.this) {
+                if (!sender.measured) {
+                    return grant(nanos, nowNs);
+                }
+                if (closed) {
+                    throw new IllegalStateException("this hop is closed");
+                }
+                long from = granted ? latest(nowNs, lastEnd) : nowNs;
+                long least = Math.min(nanos, MIN_IDLE_NS);
+                long start = earliestFree(from, least);
+                boolean gap = sender.reservedAfter(start) || receiver.reservedAfter(start);
+                if (!gap && start - nowNs > 0) {
+                    idleFrom = start;
+                    return null;
+                }
+                long length = nanos;
+                if (sender.reservedAfter(start)) {
+                    length = Math.min(length, sender.nextStart(start) - start);
+                }
+                if (receiver.reservedAfter(start)) {
+                    length = Math.min(length, receiver.nextStart(start) - start);
+                }
+                long end = start + length;
+                granted = true;
+                lastEnd = end;
+                sender.reserve(start, end, nowNs);
+                if (receiver != sender) {
+                    receiver.reserve(start, end, nowNs);
+                }
+                return new Grant(start, end);
+            }
+        }
+
+        /** After {@link #idleGrant} gave none: when both radios are next free with nothing reserved after. */
+        public long idleFrom() {
+            synchronized (Airtime.this) {
+                return idleFrom;
             }
         }
 
@@ -239,6 +305,21 @@ public final class Airtime {
                 }
             }
             return start;
+        }
+
+        /** Whether a reservation starts at or after {@code time}. */
+        boolean reservedAfter(long time) {
+            return !ahead.isEmpty() && ahead.get(ahead.size() - 1)[0] - time >= 0;
+        }
+
+        /** The start of the first reservation at or after {@code time} (there is one: {@link #reservedAfter}). */
+        long nextStart(long time) {
+            for (long[] interval : ahead) {
+                if (interval[0] - time >= 0) {
+                    return interval[0];
+                }
+            }
+            throw new IllegalStateException("nothing reserved after " + time);
         }
 
         double inUse(long nowNs) {

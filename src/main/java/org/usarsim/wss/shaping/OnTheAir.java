@@ -52,6 +52,15 @@ final class OnTheAir {
     private boolean anyGrant;
     /** The rate or what follows the air changed since the last step: the grants not yet over are counted again. */
     private boolean changed;
+    /**
+     * The target's program has not taken every byte due (the last write left some): the radio's
+     * receive buffer holds them, and the air takes only airtime nobody asked for
+     * ({@link Airtime.Hop#idleGrant}) until it has.
+     */
+    private boolean behind;
+    /** While behind, no idle airtime was left: the next is asked for at {@link #idleRetryNs}. */
+    private boolean waitingIdle;
+    private long idleRetryNs;
     /** Bytes were read since the last step while every byte held had its grant: the time booked to spare carries them. */
     private boolean arrived;
 
@@ -155,9 +164,18 @@ final class OnTheAir {
             }
         }
         if (granted < queue.received()) {
-            next = Math.min(next, Math.max(0, lastStartNs - LOOKAHEAD_NS - nowNs));
+            long turn = behind && waitingIdle ? idleRetryNs : lastStartNs - LOOKAHEAD_NS;
+            next = Math.min(next, Math.max(0, turn - nowNs));
         }
         return next;
+    }
+
+    /** Whether the target took every byte due at the last write: if not, the air takes only idle airtime until it does. */
+    void targetTookAll(boolean all) {
+        behind = !all;
+        if (all) {
+            waitingIdle = false;
+        }
     }
 
     /** Ends the hop. */
@@ -179,8 +197,16 @@ final class OnTheAir {
             arrived = false;
             refill(nowNs);
         }
-        while (granted < queue.received() && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)) {
-            Airtime.Grant grant = hop.grant(nanosFor(queue.received() - granted), nowNs);
+        while (granted < queue.received() && (!anyGrant || lastStartNs - nowNs <= LOOKAHEAD_NS)
+                && !(behind && waitingIdle && idleRetryNs - nowNs > 0)) {
+            long nanos = nanosFor(queue.received() - granted);
+            Airtime.Grant grant = behind ? hop.idleGrant(nanos, nowNs) : hop.grant(nanos, nowNs);
+            if (grant == null) {
+                waitingIdle = true;
+                idleRetryNs = hop.idleFrom();
+                break;
+            }
+            waitingIdle = false;
             Slot slot = new Slot(grant.startNs(), grant.endNs());
             fill(slot);
             slots.addLast(slot);

@@ -188,7 +188,10 @@ public final class ShapedFlow {
      * @return the bytes written
      */
     public int writeTo(WritableByteChannel out, long nowNs) throws IOException {
-        return queue.writeTo(out, air.released(nowNs));
+        long upTo = air.released(nowNs);
+        int written = queue.writeTo(out, upTo);
+        air.targetTookAll(queue.written() == upTo);
+        return written;
     }
 
     /**

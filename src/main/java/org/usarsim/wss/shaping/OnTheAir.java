@@ -13,7 +13,9 @@ import java.util.List;
  * <p>Bytes go on the air in order, lazily: whenever the direction's last grant starts within
  * {@link #LOOKAHEAD_NS}, the bytes not yet on the air ask the hop for the next grant, at the rate
  * the link has at that moment. So a busy direction holds one grant on the air and books at most
- * two quanta ahead, and directions sharing a radio take turns. A rate change reaches the link at
+ * two quanta ahead, and directions sharing a radio take turns; while the target is behind (the
+ * last write left bytes due, {@link #targetTookAll}), it asks only for airtime nobody asked for
+ * ({@link Airtime.Hop#idleGrant}), and when none is left, asks again when the hop says. A rate change reaches the link at
  * its next step: the grant on the air carries at the new rate from the change on, the grants
  * booked ahead carry at the new rate, and every later grant is asked at it; the grants keep
  * their airtime. A grant's bytes are off the air once its last byte is on the air (its end, or

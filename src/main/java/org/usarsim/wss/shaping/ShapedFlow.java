@@ -183,7 +183,9 @@ public final class ShapedFlow {
 
     /**
      * Writes what is due at {@code nowNs} to {@code out}, in order, until all of it is written or
-     * {@code out} takes no more (a non-blocking channel that is full).
+     * {@code out} takes no more (a non-blocking channel that is full). Until a write takes all
+     * that is due again, the direction takes only airtime nobody asked for
+     * ({@link Airtime.Hop#idleGrant}; docs/shaping.md, "A target behind").
      *
      * @return the bytes written
      */

@@ -26,7 +26,7 @@ import java.util.Map;
  * <p>A direction whose robot's program has not yet taken what its radio received (the robot's
  * socket is full: a relay whose next hop is slower) does not take turns: it asks for an
  * {@link Hop#idleGrant}, airtime both radios have free now or between reservations already made,
- * which no direction taking turns has asked for (docs/shaping.md, "Airtime"). A relay's
+ * which no direction taking turns has asked for (docs/shaping.md, "A target behind"). A relay's
  * incoming hop thus fills the time its outgoing hop waits for the next relay's radio, as a
  * radio's receive buffer would, instead of taking that hop's turns.
  *
@@ -134,8 +134,9 @@ public final class Airtime {
         }
 
         /**
-         * A slot of {@code nanos} of airtime (1 to {@link #QUANTUM_NS}), starting when both radios
-         * are free and not before {@code nowNs}. Both radios are then busy until the slot's end.
+         * A slot of {@code nanos} of airtime (1 to {@link #QUANTUM_NS}), starting at the first time
+         * both radios are free for that long (a gap between their reservations too), not before
+         * {@code nowNs} nor before this direction's last grant ends. Both radios are then busy until the slot's end.
          * Slots are measured in time, not bytes, so a slow link takes no more than its turn of a
          * shared radio however long one of its bytes lasts: it carries a byte over as many slots
          * as the byte needs.
@@ -143,23 +144,12 @@ public final class Airtime {
          * @throws IllegalStateException once the hop is closed
          */
         public Grant grant(long nanos, long nowNs) {
-            if (nanos < 1 || nanos > QUANTUM_NS) {
-                throw new IllegalArgumentException("a grant of 1 to " + QUANTUM_NS + " ns, not " + nanos);
-            }
+            checkLength(nanos);
             synchronized (Airtime.this) {
-                if (closed) {
-                    throw new IllegalStateException("this hop is closed");
-                }
-                long from = granted ? latest(nowNs, lastEnd) : nowNs;
+                checkOpen();
+                long from = from(nowNs);
                 long start = sender.measured ? earliestFree(from, nanos) : latest(from, sender.busyUntil);
-                long end = start + nanos;
-                granted = true;
-                lastEnd = end;
-                sender.reserve(start, end, nowNs);
-                if (receiver != sender) {
-                    receiver.reserve(start, end, nowNs);
-                }
-                return new Grant(start, end);
+                return book(start, start + nanos, nowNs);
             }
         }
 
@@ -168,45 +158,63 @@ public final class Airtime {
          * the radio received (a radio's receive buffer): up to {@code nanos} (1 to
          * {@link #QUANTUM_NS}) in the first gap, not before {@code nowNs} nor this direction's last
          * grant, that both radios have free either now or between reservations already made
-         * (shortened to fit the gap); null when the first such time is later than now with nothing
+         * (shortened to fit the gap; a gap shorter than {@link #MIN_IDLE_NS} is skipped unless
+         * that is all it asks); null when the first such time is later than now with nothing
          * reserved after it, a time the directions taking turns may yet want: {@link #idleFrom()}
          * then says when to ask again. So it never delays a grant a direction asked for in turn.
+         * Without shared airtime it is any grant.
          */
         public Grant idleGrant(long nanos, long nowNs) {
-            if (nanos < 1 || nanos > QUANTUM_NS) {
-                throw new IllegalArgumentException("a grant of 1 to " + QUANTUM_NS + " ns, not " + nanos);
-            }
+            checkLength(nanos);
             synchronized (Airtime.this) {
                 if (!sender.measured) {
                     return grant(nanos, nowNs);
                 }
-                if (closed) {
-                    throw new IllegalStateException("this hop is closed");
+                checkOpen();
+                long start = earliestFree(from(nowNs), Math.min(nanos, MIN_IDLE_NS));
+                long end = start + nanos;
+                boolean gap = false;
+                for (Radio radio : new Radio[] {sender, receiver}) {
+                    if (radio.reservedAfter(start)) {
+                        gap = true;
+                        long next = radio.nextStart(start);
+                        end = next - end < 0 ? next : end;
+                    }
                 }
-                long from = granted ? latest(nowNs, lastEnd) : nowNs;
-                long least = Math.min(nanos, MIN_IDLE_NS);
-                long start = earliestFree(from, least);
-                boolean gap = sender.reservedAfter(start) || receiver.reservedAfter(start);
                 if (!gap && start - nowNs > 0) {
                     idleFrom = start;
                     return null;
                 }
-                long length = nanos;
-                if (sender.reservedAfter(start)) {
-                    length = Math.min(length, sender.nextStart(start) - start);
-                }
-                if (receiver.reservedAfter(start)) {
-                    length = Math.min(length, receiver.nextStart(start) - start);
-                }
-                long end = start + length;
-                granted = true;
-                lastEnd = end;
-                sender.reserve(start, end, nowNs);
-                if (receiver != sender) {
-                    receiver.reserve(start, end, nowNs);
-                }
-                return new Grant(start, end);
+                return book(start, end, nowNs);
             }
+        }
+
+        private static void checkLength(long nanos) {
+            if (nanos < 1 || nanos > QUANTUM_NS) {
+                throw new IllegalArgumentException("a grant of 1 to " + QUANTUM_NS + " ns, not " + nanos);
+            }
+        }
+
+        private void checkOpen() {
+            if (closed) {
+                throw new IllegalStateException("this hop is closed");
+            }
+        }
+
+        /** The earliest a grant of this direction starts: now, and not before its last grant ends. */
+        private long from(long nowNs) {
+            return granted ? latest(nowNs, lastEnd) : nowNs;
+        }
+
+        /** Both radios on the air for this direction from {@code start} to {@code end}. */
+        private Grant book(long start, long end, long nowNs) {
+            granted = true;
+            lastEnd = end;
+            sender.reserve(start, end, nowNs);
+            if (receiver != sender) {
+                receiver.reserve(start, end, nowNs);
+            }
+            return new Grant(start, end);
         }
 
         /** After {@link #idleGrant} gave none: when both radios are next free with nothing reserved after. */

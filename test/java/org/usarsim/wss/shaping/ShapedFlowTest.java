@@ -290,6 +290,24 @@ class ShapedFlowTest {
     }
 
     @Test
+    void inAFullMeshOfBusyDirectionsEveryRadioIsKeptBusy() {
+        int robots = 10;
+        SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);
+        for (int i = 0; i < robots; i++) {
+            for (int j = 0; j < robots; j++) {
+                if (i != j) {
+                    links.add("R" + i, "R" + j, 6_000_000 + 1_000_000L * ((i + j) % 7), 2, CHUNK, SimulatedLinks.endless());
+                }
+            }
+        }
+        links.runFor(SECOND);
+        for (int i = 0; i < robots; i++) {
+            // First come, first served (each grant after both radios' last reservation) kept them 27 % busy.
+            assertTrue(links.airtime.inUse("R" + i, links.now) >= 0.99, "R" + i + ": " + links.airtime.inUse("R" + i, links.now));
+        }
+    }
+
+    @Test
     void aDirectionWhoseTargetHasNotTakenAllTakesOnlyAirtimeNobodyAskedFor() {
         long rate = 12_000_000;
         SimulatedLinks links = new SimulatedLinks(Airtime.shared(), 0, false);

@@ -3,10 +3,12 @@ package org.usarsim.wss.attach;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.usarsim.wss.ros.JsonException;
 import org.usarsim.wss.hub.core.PairState;
 import org.usarsim.wss.model.Position;
 import org.usarsim.wss.ros.JsonLimits;
@@ -123,6 +125,31 @@ class ServerStateTest {
         assertEquals(2, view.allRoutes().size());
         state.apply("removed", json("{\"robots\":[\"r2\"]}"));
         assertEquals(List.of(), state.view().allRoutes(), "no row for a robot gone");
+    }
+
+    @Test
+    void routeChangesReplaceTheRoutesTheyNameAndTakeAwayThoseGone() throws Exception {
+        ServerState state = new ServerState();
+        assertThrows(JsonException.class, () -> state.apply("routeChanges", json("{\"cutOff\":[],\"routes\":[],\"gone\":[]}")),
+                "changes before any routes");
+        state.replace(json(STATE.replace("\"lines\":[", "\"routes\":" + ROUTES + ",\"lines\":[")));
+        assertTrue(state.apply("routeChanges", json("""
+                {"cutOff":[],"routes":[{"from":"r2","to":"r1","hops":1,"path":["r2","r1"],
+                   "legs":[{"from":"r2","to":"r1","strength":-70,"rate":1000000}],
+                   "weakest":{"from":"r2","to":"r1","strength":-70,"rate":1000000},"rateBound":1000000,"shaped":true}],
+                 "gone":[]}""")));
+        ServerView view = state.view();
+        assertEquals(1_000_000, view.routes().route("r2", "r1").rateBound(), "the route told");
+        assertEquals(2_000_000, view.routes().route("r1", "r2").rateBound(), "the route not named, as it was");
+        assertEquals("r2", view.routes().base());
+        state.apply("routeChanges", json("{\"cutOff\":[\"r1\"],\"routes\":[],\"gone\":[{\"from\":\"r1\",\"to\":\"r2\"}]}"));
+        view = state.view();
+        assertFalse(view.routes().route("r1", "r2").exists());
+        assertTrue(view.routes().isCutOff("r1"), "no route to the base: cut off");
+        assertTrue(view.routes().route("r2", "r1").exists());
+        state.replace(json(STATE.replace("\"lines\":[", "\"routes\":" + ROUTES + ",\"lines\":[")));
+        assertTrue(state.view().routes().route("r1", "r2").exists(), "a snapshot replaces what the changes left");
+        assertFalse(state.view().routes().route("r2", "r1").exists());
     }
 
     @Test

@@ -18,6 +18,7 @@ import org.usarsim.wss.model.simulator.PathLoss;
 import org.usarsim.wss.routes.RouteFinder;
 import org.usarsim.wss.routes.RouteGraph;
 import org.usarsim.wss.routes.RouteRule;
+import org.usarsim.wss.monitor.RouteEventSizes;
 import org.usarsim.wss.routes.RouteTable;
 import org.usarsim.wss.shaping.RateTable;
 import org.usarsim.wss.shaping.ShapingConfig;
@@ -30,7 +31,8 @@ import org.usarsim.wss.shaping.ShapingConfig;
  * follow the distances. At every poll the benchmark takes what the hub's {@code wss-routes} thread
  * takes (a snapshot, the graph, every route; the hub's own thread runs too) and times it against the
  * poll interval (the table found lazily: the routes to the base, {@code wss.route.base = R0}), and apart every
- * route of every robot (the window's Routes table); every 10 s the heap after a GC.
+ * route of every robot (the window's Routes table); every 10 s the heap after a GC; and the bytes of
+ * the monitor's routes events a stream is told meanwhile ({@link RouteEventSizes}).
  *
  * <pre>
  * java -cp target/classes:target/test-classes:JUNIT_API:OPENTEST4J org.usarsim.wss.bench.RouteBenchmark [--robots 100] [--seconds 180]
@@ -79,6 +81,7 @@ public final class RouteBenchmark {
         List<TestRobot> clients = new ArrayList<>();
         List<Long> whole = new ArrayList<>();
         List<Long> finding = new ArrayList<>();
+        RouteEventSizes events = new RouteEventSizes();
         try (TestHub server = new TestHub(model, config)) {
             server.hub.setRouteBase("R0");
             for (int i = 0; i < robots; i++) {
@@ -103,6 +106,7 @@ public final class RouteBenchmark {
                 long t2 = System.nanoTime();
                 table.all(); // every route, as the window's Routes table asks them
                 long t3 = System.nanoTime();
+                events.next(table, t3);
                 whole.add(t2 - t0);
                 finding.add(t3 - t2);
                 pairsUp = graph.hops().size() / 2;
@@ -124,6 +128,8 @@ public final class RouteBenchmark {
             System.out.println("a recomputation (snapshot, graph, routes to the base): " + stats(whole) + " (poll interval " + POLL_MS
                     + " ms)");
             System.out.println("every route besides (RouteTable.all, the Routes table's): " + stats(finding));
+            System.out.printf(Locale.ROOT, "the monitor's stream: %d route events told, %.1f KB/s (the whole table at each of its %d changes:"
+                    + " %.1f KB/s)%n", events.events(), events.told() / 1e3 / seconds, events.changes(), events.whole() / 1e3 / seconds);
         } finally {
             for (TestRobot robot : clients) {
                 robot.close();

@@ -1,6 +1,7 @@
 package org.usarsim.wss.monitor;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import java.util.Map;
@@ -85,5 +86,47 @@ class StateDiffTest {
         assertEquals(List.of(), data.get("cutOff"));
         assertEquals(2, ((List<?>) data.get("routes")).size());
         assertEquals(List.of("A"), ((Map<?, ?>) diff.step(withRoutes(routes(false)), false).get(0).data()).get("cutOff"));
+    }
+
+    /** A chain A - B - C - D - E, both ways at {@code strengths}[i] between robots i and i + 1 (null: no pair), base A. */
+    private static RoutesJson chain(Double... strengths) {
+        List<String> robots = List.of("A", "B", "C", "D", "E");
+        List<org.usarsim.wss.routes.Hop> hops = new java.util.ArrayList<>();
+        for (int i = 0; i < strengths.length; i++) {
+            if (strengths[i] != null) {
+                hops.add(new org.usarsim.wss.routes.Hop(robots.get(i), robots.get(i + 1), strengths[i], 0));
+                hops.add(new org.usarsim.wss.routes.Hop(robots.get(i + 1), robots.get(i), strengths[i], 0));
+            }
+        }
+        return RoutesJson.of(org.usarsim.wss.routes.RouteFinder.table(
+                new org.usarsim.wss.routes.RouteGraph(robots, hops, org.usarsim.wss.routes.RouteRule.STRONGEST, "A")));
+    }
+
+    @Test
+    void aChangeOfSomeRoutesIsToldAsThoseRoutesAndThoseGone() {
+        StateDiff diff = new StateDiff();
+        diff.reset(withRoutes(chain(-50.0, -50.0, -50.0, -50.0)));
+        assertEquals(List.of(), types(diff.step(withRoutes(chain(-50.0, -50.0, -50.0, -60.0)), false)),
+                "no robot cut off or back: the routes wait for the counts");
+        List<StateDiff.Change> weaker = diff.step(withRoutes(chain(-50.0, -50.0, -50.0, -60.0)), true);
+        assertEquals(List.of("routeChanges"), types(weaker));
+        Map<?, ?> data = (Map<?, ?>) weaker.get(0).data();
+        assertEquals(8, ((List<?>) data.get("routes")).size(), "the 8 routes over D - E, not all 20");
+        for (Object route : (List<?>) data.get("routes")) {
+            assertTrue(((List<?>) ((Map<?, ?>) route).get("path")).containsAll(List.of("D", "E")), route.toString());
+        }
+        assertEquals(List.of(), data.get("gone"));
+        assertEquals(List.of(), data.get("cutOff"));
+
+        List<StateDiff.Change> cut = diff.step(withRoutes(chain(-50.0, -50.0, -50.0, null)), false);
+        assertEquals(List.of("routeChanges"), types(cut), "E cut off: at once");
+        data = (Map<?, ?>) cut.get(0).data();
+        assertEquals(List.of(), data.get("routes"));
+        assertEquals(8, ((List<?>) data.get("gone")).size(), "every route to or from E");
+        assertEquals(List.of("E"), data.get("cutOff"));
+
+        List<StateDiff.Change> most = diff.step(withRoutes(chain(-50.0, null, -50.0, -50.0)), true);
+        assertEquals(List.of("routes"), types(most), "more than half the routes changed: the whole, shorter");
+        assertEquals(List.of(), types(diff.step(withRoutes(chain(-50.0, null, -50.0, -50.0)), true)), "an equal table");
     }
 }

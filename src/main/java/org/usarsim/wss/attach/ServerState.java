@@ -15,8 +15,8 @@ import org.usarsim.wss.routes.RouteTable;
 /**
  * The server as the monitor's snapshot and events tell it (docs/monitor.md): each entry by its key,
  * an event with a known key replacing it whole, {@code removed} taking it away, {@code snapshot}
- * replacing everything; {@code routes} replacing the route table, every ordered pair's route listed
- * once per table. One thread (the client's) changes and reads it; {@link #view} copies it out.
+ * replacing everything; {@code routes} replacing the route table, {@code routeChanges} the routes
+ * it names, every ordered pair's route listed once per change. One thread (the client's) changes and reads it; {@link #view} copies it out.
  */
 final class ServerState {
 
@@ -33,8 +33,13 @@ final class ServerState {
     private boolean operator;
     /** The replay object of the last snapshot or event, null while none runs. */
     private JsonNode replay;
-    /** The last routes object told (null: none), its table and every ordered pair's route (made once per routes object). */
+    /**
+     * The last routes object told (null: none), its routes by pair ({@code from\nto}, as
+     * {@code routeChanges} events left them), the table made of them and every ordered pair's route
+     * (made once per change).
+     */
     private JsonNode routesJson;
+    private final Map<String, JsonNode> routeRows = new LinkedHashMap<>();
     private RouteTable routes = RouteTable.EMPTY;
     private List<Route> allRoutes = List.of();
 
@@ -64,7 +69,36 @@ final class ServerState {
     /** A routes object: the table and its rows, over the robots known now. */
     private void routes(JsonNode json) throws JsonException {
         routesJson = json;
-        routes = StateReader.routes(json, robots.keySet());
+        routeRows.clear();
+        if (json != null && !json.isNull()) {
+            for (JsonNode route : json.get("routes").items()) {
+                routeRows.put(routeKey(route), route);
+            }
+        }
+        tableAgain();
+    }
+
+    /** A {@code routeChanges} event: the routes new or changed replace theirs, those gone go. */
+    private void routeChanges(JsonNode changes) throws JsonException {
+        if (routesJson == null || routesJson.isNull()) {
+            throw changes.problem("route changes before any routes");
+        }
+        for (JsonNode route : changes.get("routes").items()) {
+            routeRows.put(routeKey(route), route);
+        }
+        for (JsonNode gone : changes.get("gone").items()) {
+            routeRows.remove(routeKey(gone));
+        }
+        tableAgain();
+    }
+
+    private static String routeKey(JsonNode route) throws JsonException {
+        return route.get("from").string() + '\n' + route.get("to").string();
+    }
+
+    /** The table and its rows made again from the routes told, over the robots known now. */
+    private void tableAgain() throws JsonException {
+        routes = StateReader.routes(routesJson, routeRows.values(), robots.keySet());
         allRoutes = routes.all();
     }
 
@@ -80,6 +114,7 @@ final class ServerState {
             case "model" -> model(data);
             case "replay" -> replay = data.isNull() ? null : data;
             case "routes" -> routes(data);
+            case "routeChanges" -> routeChanges(data);
             case "removed" -> removed(data);
             default -> {
                 return false;
@@ -112,7 +147,7 @@ final class ServerState {
             }
         }
         if (routesGone) {
-            routes(routesJson); // the Routes tab's rows are the robots known now
+            tableAgain(); // the Routes tab's rows are the robots known now
         }
     }
 

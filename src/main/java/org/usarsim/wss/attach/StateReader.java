@@ -80,10 +80,11 @@ final class StateReader {
     }
 
     /**
-     * The {@code routes} object (absent or null: no routes) as a table of the routes found on the
-     * server, over the robots named in {@code robots} (the state's, by name) and in the routes.
+     * The {@code routes} object's base and rule (absent or null: no routes) with {@code rows} for
+     * its routes (its own list, as {@code routeChanges} events left it), as a table of the routes
+     * found on the server, over the robots named in {@code robots} (the state's, by name) and in the routes.
      */
-    static RouteTable routes(JsonNode routes, java.util.Collection<String> robots) throws JsonException {
+    static RouteTable routes(JsonNode routes, Iterable<JsonNode> rows, java.util.Collection<String> robots) throws JsonException {
         if (routes == null || routes.isNull()) {
             return RouteTable.EMPTY;
         }
@@ -95,7 +96,7 @@ final class StateReader {
         }
         JsonNode base = routes.optional("base");
         List<Route> read = new ArrayList<>();
-        for (JsonNode route : routes.get("routes").items()) {
+        for (JsonNode route : rows) {
             List<String> path = new ArrayList<>();
             for (JsonNode robot : route.get("path").items()) {
                 path.add(robot.string());

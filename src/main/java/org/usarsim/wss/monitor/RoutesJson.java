@@ -10,11 +10,12 @@ import org.usarsim.wss.routes.RouteTable;
 
 /**
  * One route table as the monitor tells it (docs/monitor.md, "routes"): its JSON (the base, the rule,
- * the robots cut off, every ordered pair's route that exists) and each robot's hops to the base
+ * the robots cut off, every ordered pair's route that exists), each route's JSON by its pair
+ * ({@code from\nto}: what {@link #changesFrom} compares) and each robot's hops to the base
  * for /metrics. Made once per table on the publisher's thread (every robot's search: never on the
  * hub's or a request's thread), then shared read-only.
  */
-record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Integer> hopsToBase) {
+record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Integer> hopsToBase, Map<String, Map<String, Object>> rows) {
 
     static final RoutesJson EMPTY = of(RouteTable.EMPTY);
 
@@ -24,13 +25,13 @@ record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Intege
         json.put("rule", table.rule().name());
         json.put("shaped", table.rule().shaped());
         json.put("cutOff", table.cutOff());
-        List<Map<String, Object>> routes = new ArrayList<>();
+        Map<String, Map<String, Object>> rows = new LinkedHashMap<>();
         for (Route route : table.all()) {
             if (route.exists()) {
-                routes.add(route(route, table.rule().shaped()));
+                rows.put(route.from() + '\n' + route.to(), route(route, table.rule().shaped()));
             }
         }
-        json.put("routes", routes);
+        json.put("routes", new ArrayList<>(rows.values()));
         Map<String, Integer> hops = new LinkedHashMap<>();
         if (table.base() != null) {
             for (String robot : table.robots()) {
@@ -39,7 +40,44 @@ record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Intege
                 }
             }
         }
-        return new RoutesJson(table, json, hops);
+        return new RoutesJson(table, json, hops, rows);
+    }
+
+    /**
+     * What a {@code routeChanges} event tells a stream that was told {@code before} (docs/monitor.md):
+     * the robots cut off now, the routes that are new or changed, and the pairs whose route is gone;
+     * empty lists when nothing of the JSON changed. Null when the whole is to be told instead: the
+     * base, the rule or whether routes are shaped changed, or the changes are more than half the routes.
+     */
+    Map<String, Object> changesFrom(RoutesJson before) {
+        for (String key : List.of("base", "rule", "shaped")) {
+            if (!java.util.Objects.equals(before.json.get(key), json.get(key))) {
+                return null;
+            }
+        }
+        List<Map<String, Object>> changed = new ArrayList<>();
+        rows.forEach((pair, route) -> {
+            if (!route.equals(before.rows.get(pair))) {
+                changed.add(route);
+            }
+        });
+        List<Map<String, Object>> gone = new ArrayList<>();
+        before.rows.forEach((pair, route) -> {
+            if (!rows.containsKey(pair)) {
+                Map<String, Object> ends = new LinkedHashMap<>();
+                ends.put("from", route.get("from"));
+                ends.put("to", route.get("to"));
+                gone.add(ends);
+            }
+        });
+        if (2 * (changed.size() + gone.size()) > Math.max(rows.size(), before.rows.size())) {
+            return null;
+        }
+        Map<String, Object> changes = new LinkedHashMap<>();
+        changes.put("cutOff", json.get("cutOff"));
+        changes.put("routes", changed);
+        changes.put("gone", gone);
+        return changes;
     }
 
     private static Map<String, Object> route(Route route, boolean shaped) {

@@ -17,7 +17,7 @@ import org.usarsim.wss.monitor.Reading.RobotView;
  * What changed between the state the streams were last told ({@link #sent}) and a new reading, as
  * the events that tell it (docs/monitor.md, "GET /api/events"): a change of structure at once, a
  * change of counts only (bytes, rates, strengths, positions, the replay's time) only when
- * {@code countsDue}; the changes of one kind in one event; the routes whole, when their table changed. Pure: one thread (the publisher's).
+ * {@code countsDue}; the changes of one kind in one event; the routes, when their table changed, with the counts (at once when a robot is cut off or back), as the routes that changed (or whole, when that is shorter or the base, rule or shaping changed). Pure: one thread (the publisher's).
  */
 final class StateDiff {
 
@@ -63,9 +63,16 @@ final class StateDiff {
             changes.add(new Change("replay", replay == null ? null : StateJson.replay(replay)));
         }
         RoutesJson routes = sent.routes();
-        if (routes != now.routes() && !routes.table().equals(now.routes().table())) {
+        boolean cutOffChanged = !routes.json().get("cutOff").equals(now.routes().json().get("cutOff"));
+        if (routes != now.routes() && (countsDue || cutOffChanged) && !routes.table().equals(now.routes().table())) {
+            Map<String, Object> routeChanges = now.routes().changesFrom(routes);
+            if (routeChanges == null) {
+                changes.add(new Change("routes", now.routes().json()));
+            } else if (!((List<?>) routeChanges.get("routes")).isEmpty() || !((List<?>) routeChanges.get("gone")).isEmpty()
+                    || !routeChanges.get("cutOff").equals(routes.json().get("cutOff"))) {
+                changes.add(new Change("routeChanges", routeChanges));
+            }
             routes = now.routes();
-            changes.add(new Change("routes", routes.json()));
         }
         if (!removed.isEmpty()) {
             changes.add(new Change("removed", removed));

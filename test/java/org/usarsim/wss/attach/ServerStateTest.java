@@ -100,8 +100,7 @@ class ServerStateTest {
     private static final String ROUTES = """
             {"base":"r2","rule":"FASTEST_SHARED_AIRTIME","shaped":true,"cutOff":[],
              "routes":[{"from":"r1","to":"r2","hops":1,"path":["r1","r2"],
-                        "legs":[{"from":"r1","to":"r2","strength":-61.5,"rate":2000000}],
-                        "weakest":{"from":"r1","to":"r2","strength":-61.5,"rate":2000000},"rateBound":2000000,"shaped":true}]}
+                        "legs":[[-61.5,2000000]],"weakest":0,"rateBound":2000000}]}
             """;
 
     @Test
@@ -135,8 +134,7 @@ class ServerStateTest {
         state.replace(json(STATE.replace("\"lines\":[", "\"routes\":" + ROUTES + ",\"lines\":[")));
         assertTrue(state.apply("routeChanges", json("""
                 {"cutOff":[],"routes":[{"from":"r2","to":"r1","hops":1,"path":["r2","r1"],
-                   "legs":[{"from":"r2","to":"r1","strength":-70,"rate":1000000}],
-                   "weakest":{"from":"r2","to":"r1","strength":-70,"rate":1000000},"rateBound":1000000,"shaped":true}],
+                   "legs":[[-70,1000000]],"weakest":0,"rateBound":1000000}],
                  "gone":[]}""")));
         ServerView view = state.view();
         assertEquals(1_000_000, view.routes().route("r2", "r1").rateBound(), "the route told");

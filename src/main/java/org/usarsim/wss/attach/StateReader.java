@@ -101,21 +101,25 @@ final class StateReader {
             for (JsonNode robot : route.get("path").items()) {
                 path.add(robot.string());
             }
-            List<Hop> legs = new ArrayList<>();
-            for (JsonNode leg : route.get("legs").items()) {
-                legs.add(hop(leg));
+            List<JsonNode> told = route.get("legs").items();
+            if (told.size() != path.size() - 1) {
+                throw route.get("legs").problem("a leg for each hop of the path, not " + told.size() + " for " + (path.size() - 1));
             }
-            JsonNode weakest = route.optional("weakest");
-            read.add(new Route(route.get("from").string(), route.get("to").string(), path, legs,
-                    weakest == null || weakest.isNull() ? null : hop(weakest), count(route, "rateBound")));
+            List<Hop> legs = new ArrayList<>();
+            for (int i = 0; i < told.size(); i++) {
+                List<JsonNode> leg = told.get(i).items();
+                if (leg.size() != 2) {
+                    throw told.get(i).problem("a leg is [strength, rate]");
+                }
+                legs.add(new Hop(path.get(i), path.get(i + 1), number(leg.get(0)), leg.get(1).integer(0, Long.MAX_VALUE)));
+            }
+            int weakest = (int) route.get("weakest").integer(0, legs.size() - 1);
+            read.add(new Route(route.get("from").string(), route.get("to").string(), path, legs, legs.get(weakest),
+                    count(route, "rateBound")));
         }
         List<String> named = new ArrayList<>(robots); // and those the routes name: the two may come in either order
         read.forEach(route -> named.addAll(route.path()));
         return RouteTable.known(rule, base == null || base.isNull() ? null : base.string(), named, read);
-    }
-
-    private static Hop hop(JsonNode hop) throws JsonException {
-        return new Hop(hop.get("from").string(), hop.get("to").string(), number(hop.optional("strength")), count(hop, "rate"));
     }
 
     /** The key of a robot, port, link, pair or line in the events: its identifying fields, joined. */

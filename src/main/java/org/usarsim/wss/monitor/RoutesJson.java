@@ -28,7 +28,7 @@ record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Intege
         Map<String, Map<String, Object>> rows = new LinkedHashMap<>();
         for (Route route : table.all()) {
             if (route.exists()) {
-                rows.put(route.from() + '\n' + route.to(), route(route, table.rule().shaped()));
+                rows.put(route.from() + '\n' + route.to(), route(route));
             }
         }
         json.put("routes", new ArrayList<>(rows.values()));
@@ -80,25 +80,28 @@ record RoutesJson(RouteTable table, Map<String, Object> json, Map<String, Intege
         return changes;
     }
 
-    private static Map<String, Object> route(Route route, boolean shaped) {
+    /**
+     * A route as the state and the events tell it: its hops as the path says them (hop i from
+     * {@code path[i]} to {@code path[i + 1]}), each leg only its strength and rate, the weakest as
+     * the index of its leg; the table says whether it is shaped (100 robots' table in 2.3 MB, not 4.7).
+     */
+    private static Map<String, Object> route(Route route) {
         Map<String, Object> json = new LinkedHashMap<>();
         json.put("from", route.from());
         json.put("to", route.to());
         json.put("hops", route.hops());
         json.put("path", route.path());
-        json.put("legs", route.legs().stream().map(RoutesJson::hop).toList());
-        json.put("weakest", hop(route.weakest()));
+        json.put("legs", route.legs().stream().map(RoutesJson::leg).toList());
+        json.put("weakest", route.legs().indexOf(route.weakest()));
         json.put("rateBound", route.rateBound());
-        json.put("shaped", shaped);
         return json;
     }
 
-    private static Map<String, Object> hop(Hop hop) {
-        Map<String, Object> json = new LinkedHashMap<>();
-        json.put("from", hop.from());
-        json.put("to", hop.to());
-        json.put("strength", StateJson.number(hop.strength()));
-        json.put("rate", hop.bitsPerSecond());
+    /** A leg: {@code [strength, rate]}, the strength in dBm or null, the rate in bit/s (0 unshaped). */
+    private static List<Object> leg(Hop hop) {
+        List<Object> json = new ArrayList<>(2);
+        json.add(StateJson.number(hop.strength()));
+        json.add(hop.bitsPerSecond());
         return json;
     }
 

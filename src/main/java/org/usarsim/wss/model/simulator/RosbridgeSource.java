@@ -234,8 +234,16 @@ final class RosbridgeSource implements PositionSource {
                 said(frame);
                 return;
             }
+            TopicRequests.Topic faster;
             synchronized (this) {
-                topics.came(frame.topic());
+                faster = topics.came(frame.topic(), now);
+                if (faster != null) {
+                    send(faster.request());
+                }
+            }
+            if (faster != null) {
+                LOG.info("rosbridge at " + config.url() + " sends more than " + TopicRequests.MOST_AS_THEY_COME + " messages a second on "
+                        + faster.name() + ": asked for again with at most one each " + faster.throttleMs() + " ms, the newest");
             }
             if (frame.topic() != null && frame.topic().equals(config.mapTopic())) {
                 tookGrid(OccupancyGrid.of(frame.msg()));

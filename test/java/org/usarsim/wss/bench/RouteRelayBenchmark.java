@@ -72,6 +72,21 @@ public final class RouteRelayBenchmark {
         System.exit(0);
     }
 
+    /** Waits until something listens on 127.0.0.1:{@code port} (socat started), no later than {@code deadline}. */
+    private static void awaitListening(int port, long deadline) throws InterruptedException {
+        while (true) {
+            try (ServerSocket probe = new ServerSocket()) {
+                probe.bind(new java.net.InetSocketAddress("127.0.0.1", port));
+            } catch (java.io.IOException e) {
+                return; // taken: socat listens (binding leaves no connection behind, unlike a probe connect)
+            }
+            if (System.nanoTime() - deadline > 0) {
+                throw new IllegalStateException("socat is not listening on " + port + " after 10 s");
+            }
+            Thread.sleep(10);
+        }
+    }
+
     private static void run(List<Long> rates, int seconds, String buffers, String block) throws Exception {
         int hops = rates.size();
         HubConfig config = TestHub.config(false, 65536, 600, 1000, 30)
@@ -107,7 +122,9 @@ public final class RouteRelayBenchmark {
                         "TCP:127.0.0.1:" + next + buffers).redirectErrorStream(true).start();
                 relays.add(socat);
             }
-            Thread.sleep(500); // socat listening
+            for (int i = 1; i < hops; i++) {
+                awaitListening(ports[i], System.nanoTime() + TimeUnit.SECONDS.toNanos(10));
+            }
             long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
             Route route = server.hub.routes().route("R0", "R" + hops);
             while (route.hops() != hops && System.nanoTime() < deadline) {

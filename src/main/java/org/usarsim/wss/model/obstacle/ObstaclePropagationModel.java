@@ -159,16 +159,6 @@ public final class ObstaclePropagationModel extends SimulatorModel {
         return pathLoss().range(obstacles * attenuation);
     }
 
-    @Override
-    protected boolean allowsUnknownRobots() {
-        return false;
-    }
-
-    @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
-        return !listed.isEmpty();
-    }
-
     /**
      * Counts the walls of obstacle.walls, or asks the source, in one batch, for the counts of the
      * pairs whose count is unknown or no longer holds; an unanswered pair's count is unknown. A

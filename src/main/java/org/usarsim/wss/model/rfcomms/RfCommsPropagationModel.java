@@ -157,16 +157,6 @@ public class RfCommsPropagationModel extends SimulatorModel {
         return run.maxRange() > 0 ? Math.min(range, run.maxRange()) : range;
     }
 
-    @Override
-    protected boolean allowsUnknownRobots() {
-        return false;
-    }
-
-    @Override
-    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
-        return !listed.isEmpty();
-    }
-
     /** With links shaped: the capacity as the rate, no delay, and RFComms' datagram losses. */
     @Override
     public Optional<LinkQuality> linkQualityForPair(String from, String to) {

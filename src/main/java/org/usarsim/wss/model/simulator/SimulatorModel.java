@@ -203,11 +203,21 @@ public abstract class SimulatorModel extends PollingModel {
      */
     protected abstract double strength(ReportedRobot a, ReportedRobot b, double obstacles);
 
-    /** Whether a robot with no known position may connect. */
-    protected abstract boolean allowsUnknownRobots();
+    /**
+     * Whether a robot with no known position may connect: not by default (a model whose verdict
+     * needs both positions: the walls between, the power at the distance).
+     */
+    protected boolean allowsUnknownRobots() {
+        return false;
+    }
 
-    /** Whether registered robots absent from this position list are kicked. */
-    protected abstract boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed);
+    /**
+     * Whether registered robots absent from this position list are kicked: by default when the list
+     * names anyone (an empty list is a simulator that lists nobody yet).
+     */
+    protected boolean kicksRobotsAbsentFrom(Map<String, ReportedRobot> listed) {
+        return !listed.isEmpty();
+    }
 
     /**
      * Called at every poll before the pairs are decided, with the pairs to decide: the obstacle
